@@ -1,0 +1,364 @@
+/* chaplygin.h -- the discrete Chaplygin sleigh, an executable edition of
+ *
+ *   M. J. Coleman and P. Holmes, "Motions and stability of a piecewise
+ *   holonomic system: the discrete Chaplygin sleigh", Regular and Chaotic
+ *   Dynamics 4(2), 1999.
+ *
+ * Every numbered equation of the paper is a function below, tagged with its
+ * number.  The full comment of each function (method, domain, accuracy,
+ * special cases) stands above its definition in lib/ and in the manual.
+ *
+ * Conventions (manual, chapter "Conventions"):
+ *  - all quantities are nondimensional: lengths in units of the radius of
+ *    gyration rho (2.3), speeds in units of v0, time in units of rho/v0;
+ *  - state vectors are arrays indexed by CHAPLYGIN_S/D, _V, _THETA, _OMEGA
+ *    (phase form) or CHAPLYGIN_D, _E, _THETA, _H (energy-momentum form);
+ *  - every function returns CHAPLYGIN_SUCCESS (0) or a status below and
+ *    writes its outputs only on success; nothing aborts or prints, GSL's
+ *    error handler is never invoked, and all functions are reentrant.
+ */
+#ifndef CHAPLYGIN_CHAPLYGIN_H_INCLUDED
+#define CHAPLYGIN_CHAPLYGIN_H_INCLUDED
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------ */
+/* Status codes                                                        */
+/* ------------------------------------------------------------------ */
+
+enum chaplygin_status
+{
+  CHAPLYGIN_SUCCESS = 0,
+  CHAPLYGIN_EINVAL = 1,   /* null pointer, unknown method, flag or tolerance */
+  CHAPLYGIN_EDOM = 2,     /* NaN or infinite argument, or a parameter outside
+                             its domain (Delta <= 0, m <= 0, rho <= 0, ...) */
+  CHAPLYGIN_ESTATE = 3,   /* a state inconsistent with the model: V^2 < 0,
+                             a peg not at the slot end its velocity implies,
+                             a position beyond a turning point, V = 0 just
+                             after a collision */
+  CHAPLYGIN_ESPIN = 4,    /* the motion ends in the spinning equilibrium
+                             (3.8): there is no next collision */
+  CHAPLYGIN_ERANGE = 5,   /* the result is not representable in double */
+  CHAPLYGIN_ENOCONV = 6,  /* quadrature or ODE integration did not reach the
+                             requested tolerance */
+  CHAPLYGIN_ENOMEM = 7    /* memory allocation failed */
+};
+
+/* A static English sentence describing STATUS; never NULL. */
+const char *chaplygin_strerror (int status);
+
+/* Indices into state arrays.  Phase form q = {S or D, V, theta, Omega};
+   energy-momentum form p = {S or D, E, theta, H}. */
+enum chaplygin_index
+{
+  CHAPLYGIN_S = 0,
+  CHAPLYGIN_D = 0,
+  CHAPLYGIN_V = 1,
+  CHAPLYGIN_E = 1,
+  CHAPLYGIN_THETA = 2,
+  CHAPLYGIN_OMEGA = 3,
+  CHAPLYGIN_H = 3
+};
+
+/* How heading and elapsed time between collisions are computed: the
+   speed/accuracy trade is the caller's (manual, "Methods"). */
+typedef enum
+{
+  CHAPLYGIN_CLOSED_FORM = 0,  /* Legendre/Carlson elliptic integrals (default) */
+  CHAPLYGIN_QUADRATURE = 1,   /* adaptive Gauss-Kronrod on the paper's integrand */
+  CHAPLYGIN_ODE = 2           /* Runge-Kutta-Prince-Dormand 8(9) on (3.1) */
+} chaplygin_method;
+
+typedef enum
+{
+  CHAPLYGIN_PREC_DOUBLE = 0,  /* Carlson integrals to ~1e-16 */
+  CHAPLYGIN_PREC_SINGLE = 1   /* Carlson integrals to ~1e-11, faster */
+} chaplygin_precision;
+
+typedef struct
+{
+  chaplygin_method method;
+  double tol;                 /* relative tolerance, quadrature and ODE only:
+                                 1e-15 <= tol < 1 (quadrature is limited to
+                                 50 eps ~ 1.1e-14; smaller is raised to that) */
+  chaplygin_precision precision;  /* closed form only */
+} chaplygin_options;
+
+/* The default: closed form, double precision. */
+#define CHAPLYGIN_OPTIONS_DEFAULT { CHAPLYGIN_CLOSED_FORM, 1e-13, CHAPLYGIN_PREC_DOUBLE }
+
+/* ------------------------------------------------------------------ */
+/* Units: (2.2), (2.3), (3.2)                                          */
+/* ------------------------------------------------------------------ */
+
+/* (2.3) rho = sqrt(I/m), the radius of gyration about the mass centre. */
+int chaplygin_radius_of_gyration (double m, double I, double *rho);
+
+typedef struct
+{
+  double ell;     /* distance from the skate contact C to the mass centre G */
+  double s;       /* arc length of the path of C */
+  double v;       /* speed of C along the skate */
+  double theta;   /* heading (radians: already dimensionless) */
+  double omega;   /* angular rate d theta / dt */
+  double t;       /* time */
+} chaplygin_smooth_dim;
+
+typedef struct
+{
+  double L, S, V, theta, Omega, tau;
+} chaplygin_smooth_nondim;
+
+/* (2.2) L = ell/rho, S = s/rho, V = v/v0, Omega = omega rho/v0,
+   tau = t v0/rho; and its inverse. */
+int chaplygin_smooth_nondimensionalize (double rho, double v0,
+                                        const chaplygin_smooth_dim *dim,
+                                        chaplygin_smooth_nondim *nd);
+int chaplygin_smooth_dimensionalize (double rho, double v0,
+                                     const chaplygin_smooth_nondim *nd,
+                                     chaplygin_smooth_dim *dim);
+
+typedef struct
+{
+  double ell0;    /* distance from the front of the slot to G (may be < 0) */
+  double delta;   /* slot length */
+  double d;       /* distance from the peg to the front of the slot */
+  double v;       /* velocity along the slot */
+  double theta;   /* heading */
+  double omega;   /* angular rate */
+  double t;       /* time */
+} chaplygin_discrete_dim;
+
+typedef struct
+{
+  double L0, Delta, D, V, theta, Omega, tau;
+} chaplygin_discrete_nondim;
+
+/* (3.2) L0 = ell0/rho, Delta = delta/rho, D = d/rho, V = v/v0,
+   Omega = omega rho/v0, tau = t v0/rho; and its inverse. */
+int chaplygin_discrete_nondimensionalize (double rho, double v0,
+                                          const chaplygin_discrete_dim *dim,
+                                          chaplygin_discrete_nondim *nd);
+int chaplygin_discrete_dimensionalize (double rho, double v0,
+                                       const chaplygin_discrete_nondim *nd,
+                                       chaplygin_discrete_dim *dim);
+
+/* Energy and angular momentum scales implied by (3.3), (3.4) with (3.2):
+   E = T/(m v0^2), H = h/(m rho v0). */
+int chaplygin_energy_nondimensionalize (double m, double v0, double T,
+                                        double *E);
+int chaplygin_momentum_nondimensionalize (double m, double rho, double v0,
+                                          double h, double *H);
+
+/* ------------------------------------------------------------------ */
+/* Section 2 and Appendix A: the smooth Chaplygin sleigh               */
+/* q = {S, V, theta, Omega}, S the arc length of the path of C.        */
+/* ------------------------------------------------------------------ */
+
+/* (2.1) dS/dtau = |V|, dV/dtau = L Omega^2, dtheta/dtau = Omega,
+   dOmega/dtau = -L V Omega/(1 + L^2).  (The paper prints dS/dtau = V;
+   see the errata: S is arc length.) */
+int chaplygin_smooth_field (double L, const double q[4], double dq[4]);
+
+/* (2.4) the steady solutions q* = {|V*| tau, V*, theta*, 0} with
+   H*_C = (1 + L^2) Omega* = 0 and E* = V*^2/2. */
+int chaplygin_smooth_steady (double Vstar, double theta_star, double tau,
+                             double q[4], double *E, double *H);
+
+/* Section 2.1: the nonzero eigenvalue xi4 = -L V* / (1 + L^2) of (2.1)
+   linearised about a steady solution. */
+int chaplygin_smooth_eigenvalue (double L, double Vstar, double *xi4);
+
+/* (A.4) E = [V^2 + (1 + L^2) Omega^2]/2 and H_C = (1 + L^2) Omega. */
+int chaplygin_smooth_energy (double L, double V, double Omega, double *E);
+int chaplygin_smooth_momentum (double L, double Omega, double *H);
+
+/* (A.1) the arc length S_c at which V changes sign, when it does:
+   S_c = S0 + (1 + L^2)/(2|L|) log(1 + V0^2/(Omega0^2 (1 + L^2)))
+   for L V0 < 0 (or V0 = 0 ... never) and Omega0 != 0.  *reverses is set
+   to 1 and *Sc written, or *reverses = 0 and *Sc untouched. */
+int chaplygin_smooth_reversal (double L, const double q0[4], int *reverses,
+                               double *Sc);
+
+/* (A.6) the same in energy-momentum form, dir0 = sign of V0:
+   S_c = S0 + (1 + L^2)/(2|L|) log(2 E0 (1 + L^2)/H0^2). */
+int chaplygin_smooth_reversal_eh (double L, double S0, double E0, double H0,
+                                  int dir0, int *reverses, double *Sc);
+
+/* (A.2) the closed-form state at arc length S >= q0[S] (through the velocity
+   reversal), and the elapsed time tau(S) - tau(S0) if dtau != NULL. */
+int chaplygin_smooth_closed_form (double L, const double q0[4], double S,
+                                  double q[4], double *dtau);
+
+/* (A.3) the branch sign K(S) of (A.2): +1 before the reversal, -1 after
+   (K = sign(V(S)/V0)). */
+int chaplygin_smooth_branch (double L, const double q0[4], double S, int *K);
+
+/* (A.4) the closed form in energy-momentum form p = {S, E, theta, H_C};
+   dir0 = sign of V0 (+1 or -1; 0 only if E0 = H0^2/(2(1+L^2))). */
+int chaplygin_smooth_closed_form_eh (double L, const double p0[4], int dir0,
+                                     double S, double p[4]);
+
+/* (A.5) the straight-line equilibria in energy-momentum form:
+   H*_C = 0, E* = V*^2/2. */
+int chaplygin_smooth_steady_eh (double Vstar, double *E, double *H);
+
+/* ------------------------------------------------------------------ */
+/* Section 3: the discrete skate                                       */
+/* q = {D, V, theta, Omega}; p = {D, E, theta, H_P}.                   */
+/* ------------------------------------------------------------------ */
+
+/* (3.1) dD/dtau = V, dV/dtau = (L0 + D) Omega^2, dtheta/dtau = Omega,
+   dOmega/dtau = -2 (L0 + D) V Omega/(1 + (L0 + D)^2). */
+int chaplygin_discrete_field (double L0, const double q[4], double dq[4]);
+
+/* (3.3) E = [V^2 + (1 + (L0 + D)^2) Omega^2]/2. */
+int chaplygin_discrete_energy (double L0, double D, double V, double Omega,
+                               double *E);
+
+/* (3.4) H_P = [1 + (L0 + D)^2] Omega, angular momentum about the peg. */
+int chaplygin_discrete_momentum (double L0, double D, double Omega,
+                                 double *H);
+
+/* (3.6) the collision rule in phase form: qminus[D] = Delta if V- > 0,
+   0 if V- < 0;  D+ = Delta - D-, V+ = V-, theta+ = theta-,
+   Omega+ = [1 + L0 (L0 + Delta)]/[1 + (L0 + Delta - D-)^2] Omega-. */
+int chaplygin_discrete_collide (double L0, double Delta,
+                                const double qminus[4], double qplus[4]);
+
+/* (3.7) the collision rule in energy-momentum form; pminus[D] = D- is the
+   end the peg leaves (0 or Delta exactly):  D+ = Delta - D-,
+   E+ = E- - Delta^2 H-^2/(2 [1 + (L0 + D-)^2]^2 [1 + (L0 + Delta - D-)^2]),
+   theta+ = theta-,  H+ = [1 + L0 (L0 + Delta)]/[1 + (L0 + D-)^2] H-. */
+int chaplygin_discrete_collide_eh (double L0, double Delta,
+                                   const double pminus[4], double pplus[4]);
+
+/* (3.8) the energy-momentum ratio 2E/H^2 whose value 1 leads to the
+   spinning equilibrium (CHAPLYGIN_ERANGE if H = 0: the ratio is infinite). */
+int chaplygin_discrete_spin_ratio (double E, double H, double *ratio);
+
+/* Whether the motion that starts just after a collision with direction dir
+   (+1: V > 0, peg at D = 0; -1: V < 0, peg at D = Delta) ends in the
+   spinning equilibrium: 2E = H^2 exactly and the path reaches D = -L0. */
+int chaplygin_discrete_spins (double L0, double Delta, int dir, double E,
+                              double H, int *spins);
+
+/* ------------------------------------------------------------------ */
+/* Appendix B.1: motion between collisions                             */
+/* ------------------------------------------------------------------ */
+
+/* (B.1) V(D)^2 = V0^2 + (D - D0)(2 L0 + D + D0)(1 + (L0+D0)^2) Omega0^2
+                  / (1 + (L0 + D)^2),
+   Omega(D) = Omega0 (1 + (L0 + D0)^2)/(1 + (L0 + D)^2).
+   CHAPLYGIN_ESTATE if V(D)^2 < 0 (D is not reached). */
+int chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
+                             double D, double *V2, double *Omega);
+
+/* (B.2) the heading increment theta(D) - theta0 and (if dtau != NULL) the
+   elapsed time, along one leg of the motion from (D0, V0, Omega0) to D,
+   D on the side of D0 that V0 points to and not beyond a turning point.
+   Either output may be NULL (not computed).  opt may be NULL (default). */
+int chaplygin_discrete_heading (double L0, double D0, double V0,
+                                double Omega0, double D,
+                                const chaplygin_options *opt,
+                                double *dtheta, double *dtau);
+
+/* ------------------------------------------------------------------ */
+/* Section 3.1 and Appendix B.2: the return map                        */
+/* ------------------------------------------------------------------ */
+
+/* A discrete skate: parameters and the constants derived from them once. */
+typedef struct
+{
+  double L0;      /* mass centre ahead of the slot front, units of rho */
+  double Delta;   /* slot length, units of rho */
+  /* Derived by chaplygin_discrete_init; indexed by the slot end the peg
+     leaves at the collision: [0] D- = 0 (front), [1] D- = Delta (rear). */
+  double C1[2];   /* energy coefficient, (B.3)/(B.4) */
+  double C2[2];   /* momentum coefficient, (B.3)/(B.4) */
+  double l_end[2];  /* L0 + D at the ends: L0, L0 + Delta */
+} chaplygin_discrete;
+
+int chaplygin_discrete_init (chaplygin_discrete *sys, double L0,
+                             double Delta);
+
+/* (B.3) for reversal = 0 and (B.4) for reversal = 1: the coefficients
+   C1 and C2 for a post-collision state with peg at Dplus (0 or Delta):
+   E' = E + C1 H^2, H' = C2 H. */
+int chaplygin_discrete_coefficients (double L0, double Delta, double Dplus,
+                                     int reversal, double *C1, double *C2);
+
+/* (B.5) the turning points D_c = -L0 -+ sqrt(H^2/(2E) - 1), where real.
+   *n_real = 0, 1 (double root) or 2; Dc[0] <= Dc[1] are written as far as
+   they exist; *n_in_slot counts those in [0, Delta]. */
+int chaplygin_discrete_turning_points (double L0, double Delta, double E,
+                                       double H, int *n_real, double Dc[2],
+                                       int *n_in_slot);
+
+/* A post-collision state of the return map. */
+typedef struct
+{
+  int dir;        /* +1: V > 0, peg at the slot front (D = 0);
+                     -1: V < 0, peg at the rear (D = Delta) */
+  double E;       /* energy (3.3) */
+  double H;       /* angular momentum about the peg (3.4) */
+  double theta;   /* heading: the slot axis points along (cos, sin)(theta) */
+  double tau;     /* time */
+  double peg[2];  /* position of the current peg in the plane */
+} chaplygin_discrete_state;
+
+/* What chaplygin_discrete_step computes beyond E, H, dir (always done). */
+enum chaplygin_request
+{
+  CHAPLYGIN_WANT_THETA = 1,
+  CHAPLYGIN_WANT_TAU = 2,
+  CHAPLYGIN_WANT_PEG = 4,     /* implies CHAPLYGIN_WANT_THETA */
+  CHAPLYGIN_WANT_ALL = 7
+};
+
+/* What happened between the two collisions. */
+typedef struct
+{
+  int reversal;   /* 1 if V changed sign */
+  double Dc;      /* the turning point, when reversal = 1 */
+  double Dminus;  /* the end the peg left: D just before the collision */
+  double Dplus;   /* the end the new peg is inserted at */
+  double Vminus;  /* V just before (= just after) the collision */
+  double dtheta;  /* heading increment (if computed) */
+  double dtau;    /* elapsed time (if computed) */
+} chaplygin_discrete_event;
+
+/* (B.3)/(B.4): advance a post-collision state to the next one.  Fields not
+   requested (theta, tau, peg) are copied unchanged.  out may equal in; ev
+   and opt may be NULL. */
+int chaplygin_discrete_step (const chaplygin_discrete *sys,
+                             const chaplygin_discrete_state *in,
+                             unsigned request, const chaplygin_options *opt,
+                             chaplygin_discrete_state *out,
+                             chaplygin_discrete_event *ev);
+
+/* (3.5) the Poincare map f = h o p in phase form: qplus = {D+, V+, theta+,
+   Omega+} just after a collision (D+ = 0 if V+ > 0, Delta if V+ < 0) to the
+   state just after the next; *dtau (may be NULL) the time between them. */
+int chaplygin_discrete_poincare (const chaplygin_discrete *sys,
+                                 const double qplus[4],
+                                 const chaplygin_options *opt,
+                                 double qnext[4], double *dtau);
+
+/* Convert a post-collision phase state {D+, V+, theta+, Omega+} to a map
+   state (and back): dir = sign(V+), E by (3.3), H by (3.4). */
+int chaplygin_discrete_state_from_phase (const chaplygin_discrete *sys,
+                                         const double q[4], double tau,
+                                         const double peg[2],
+                                         chaplygin_discrete_state *st);
+int chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
+                                       const chaplygin_discrete_state *st,
+                                       double q[4]);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CHAPLYGIN_CHAPLYGIN_H_INCLUDED */

@@ -1,0 +1,233 @@
+/* discrete.c -- Section 3 up to the collision rule: the vector field (3.1),
+   the invariants (3.3), (3.4), the collision rule (3.6), (3.7) and the
+   spinning condition (3.8).
+
+   l = L0 + D is the signed distance from the peg to the mass centre G:
+   G = P + l e_lambda, with P the peg and e_lambda = (cos theta, sin theta)
+   the slot axis (manual, "Conventions").  */
+#include <config.h>
+
+#include <math.h>
+
+#include "internal.h"
+
+/* chaplygin_discrete_field: (3.1)
+       dD/dtau = V,  dV/dtau = (L0 + D) Omega^2,  dtheta/dtau = Omega,
+       dOmega/dtau = -2 (L0 + D) V Omega / (1 + (L0 + D)^2).
+   Derivation (verified by the test eq_3_1 against Newton-Euler equations of
+   a rigid body with the pin-in-slot constraint): no force along the slot
+   gives dv/dt = l omega^2; the angular momentum about the fixed peg,
+   (I + m l^2) omega, is conserved, whence d omega/dt = -2 l v omega/
+   (rho^2 + l^2).
+   Method: 2l/(1 + l^2) as 2/(l + 1/l) for |l| > 1 (no overflow).
+   Domain: finite L0 and q.  Errors: CHAPLYGIN_EINVAL (NULL),
+   CHAPLYGIN_EDOM (non-finite input), CHAPLYGIN_ERANGE (overflow). */
+int
+chaplygin_discrete_field (double L0, const double q[4], double dq[4])
+{
+  if (!q || !dq)
+    return CHAPLYGIN_EINVAL;
+  if (!isfinite (L0) || !chp_finite4 (q[0], q[1], q[2], q[3]))
+    return CHAPLYGIN_EDOM;
+  double l = L0 + q[CHAPLYGIN_D];
+  double V = q[CHAPLYGIN_V], Om = q[CHAPLYGIN_OMEGA];
+  double r[4];
+  r[CHAPLYGIN_D] = V;
+  r[CHAPLYGIN_V] = l * Om * Om;
+  r[CHAPLYGIN_THETA] = Om;
+  r[CHAPLYGIN_OMEGA] = -2.0 * chp_L_over_one_plus_sq (l) * V * Om;
+  if (!chp_finite4 (r[0], r[1], r[2], r[3]))
+    return CHAPLYGIN_ERANGE;
+  for (int i = 0; i < 4; i++)
+    dq[i] = r[i];
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_energy: (3.3)
+       E = [V^2 + (1 + (L0 + D)^2) Omega^2]/2,
+   the kinetic energy T/(m v0^2): (1/2) m |v_G|^2 + (1/2) I omega^2 with
+   v_G = v e_lambda + l omega e_n.
+   Accuracy: within 3 ulps (sum of two nonnegative terms).
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE (overflow). */
+int
+chaplygin_discrete_energy (double L0, double D, double V, double Omega,
+                           double *E)
+{
+  if (!E)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (L0, D, V, Omega))
+    return CHAPLYGIN_EDOM;
+  double r = 0.5 * (V * V + chp_one_plus_sq (L0 + D) * Omega * Omega);
+  if (!isfinite (r))
+    return CHAPLYGIN_ERANGE;
+  *E = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_momentum: (3.4)
+       H_P = [1 + (L0 + D)^2] Omega,
+   the angular momentum about the peg (I + m l^2) omega over m rho v0.
+   Accuracy: within 2 ulps.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE. */
+int
+chaplygin_discrete_momentum (double L0, double D, double Omega, double *H)
+{
+  if (!H)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (L0, D) || !isfinite (Omega))
+    return CHAPLYGIN_EDOM;
+  double r = chp_one_plus_sq (L0 + D) * Omega;
+  if (!isfinite (r))
+    return CHAPLYGIN_ERANGE;
+  *H = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Check that a pre-collision peg position Dminus is the slot end that the
+   sign of the velocity implies (sgn = +1: Delta, -1: 0). */
+static int
+check_end (double Delta, double Dminus, double sgn)
+{
+  if (sgn > 0.0 && Dminus == Delta)
+    return CHAPLYGIN_SUCCESS;
+  if (sgn < 0.0 && Dminus == 0.0)
+    return CHAPLYGIN_SUCCESS;
+  return CHAPLYGIN_ESTATE;
+}
+
+/* chaplygin_discrete_collide: (3.6)
+       D+ = Delta - D-,  V+ = V-,  theta+ = theta-,
+       Omega+ = [1 + L0 (L0 + Delta)] / [1 + (L0 + (Delta - D-))^2] Omega-,
+   with D- = Delta for V- > 0 and D- = 0 for V- < 0.
+   Derivation: the impulse at the new peg P' acts along e_n, so v (along the
+   slot) is unchanged and the angular momentum about P' is conserved:
+   (rho^2 + l+ l-) omega- = (rho^2 + l+^2) omega+, l-+ = L0 + D-+, and
+   l+ l- = L0 (L0 + Delta) because {D-, D+} = {0, Delta}.
+   Method: the ratio through chp_collision_ratio (accurate numerator).
+   Domain: finite; Delta > 0; qminus[D] exactly Delta (V- > 0) or 0 (V- < 0).
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (non-finite, Delta <= 0),
+   CHAPLYGIN_ESTATE (peg not at the end V- implies, or V- = 0). */
+int
+chaplygin_discrete_collide (double L0, double Delta, const double qminus[4],
+                            double qplus[4])
+{
+  if (!qminus || !qplus)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0)
+      || !chp_finite4 (qminus[0], qminus[1], qminus[2], qminus[3]))
+    return CHAPLYGIN_EDOM;
+  double V = qminus[CHAPLYGIN_V];
+  if (V == 0.0)
+    return CHAPLYGIN_ESTATE;
+  CHP_TRY (check_end (Delta, qminus[CHAPLYGIN_D], V));
+  double Dplus = Delta - qminus[CHAPLYGIN_D];   /* exactly 0 or Delta */
+  double r = chp_collision_ratio (L0, Delta, L0 + Dplus);
+  double th = qminus[CHAPLYGIN_THETA];
+  double om = r * qminus[CHAPLYGIN_OMEGA];
+  if (!isfinite (om))
+    return CHAPLYGIN_ERANGE;
+  qplus[CHAPLYGIN_D] = Dplus;
+  qplus[CHAPLYGIN_V] = V;
+  qplus[CHAPLYGIN_THETA] = th;
+  qplus[CHAPLYGIN_OMEGA] = om;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The (3.7) coefficients for the collision at which the peg leaves Dminus:
+   E+ = E- + C1 H-^2, H+ = C2 H-, with b = L0 + D-, b' = L0 + Delta - D-:
+   C1 = -Delta^2 / (2 (1 + b^2)^2 (1 + b'^2)),  C2 = (1 + b b')/(1 + b^2).
+   C1 is formed as -(Delta/(1 + b^2))^2/(2 (1 + b'^2)) to avoid overflow. */
+void
+chp_collision_coefficients (double L0, double Delta, double Dminus,
+                            double *C1, double *C2)
+{
+  double b = L0 + Dminus, bp = L0 + (Delta - Dminus);
+  double r = Delta / chp_one_plus_sq (b);
+  *C1 = -0.5 * r * r / chp_one_plus_sq (bp);
+  *C2 = chp_collision_ratio (L0, Delta, b);
+}
+
+/* chaplygin_discrete_collide_eh: (3.7)
+       D+ = Delta - D-,
+       E+ = E- - Delta^2 H-^2 / (2 [1 + (L0 + D-)^2]^2 [1 + (L0 + Delta - D-)^2]),
+       theta+ = theta-,
+       H+ = [1 + L0 (L0 + Delta)] / [1 + (L0 + D-)^2] H-.
+   Derivation: (3.6) with Omega = H/(1 + l^2) and E from (3.3):
+   E+ - E- = Omega-^2 [(1 + l+ l-)^2/(1 + l+^2) - (1 + l-^2)]/2
+           = -Omega-^2 (l+ - l-)^2 / (2 (1 + l+^2)), (l+ - l-)^2 = Delta^2.
+   (The transcription misplaces a parenthesis in the last factor of the
+   denominator; see the errata.)
+   Domain: finite; Delta > 0; pminus[D] exactly 0 or Delta; E- >= 0 with
+   V-^2 = 2E- - H-^2/(1 + (L0 + D-)^2) > 0.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (D- not an
+   end, or V-^2 <= 0), CHAPLYGIN_ERANGE. */
+int
+chaplygin_discrete_collide_eh (double L0, double Delta,
+                               const double pminus[4], double pplus[4])
+{
+  if (!pminus || !pplus)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0)
+      || !chp_finite4 (pminus[0], pminus[1], pminus[2], pminus[3]))
+    return CHAPLYGIN_EDOM;
+  double Dm = pminus[CHAPLYGIN_D], E = pminus[CHAPLYGIN_E];
+  double H = pminus[CHAPLYGIN_H];
+  if (Dm != 0.0 && Dm != Delta)
+    return CHAPLYGIN_ESTATE;
+  double n = chp_one_plus_sq (L0 + Dm);
+  if (!(2.0 * E - H * (H / n) > 0.0))
+    return CHAPLYGIN_ESTATE;
+  double C1, C2;
+  chp_collision_coefficients (L0, Delta, Dm, &C1, &C2);
+  double Ep = E + C1 * H * H, Hp = C2 * H;
+  if (!isfinite (Ep) || !isfinite (Hp))
+    return CHAPLYGIN_ERANGE;
+  pplus[CHAPLYGIN_D] = Delta - Dm;
+  pplus[CHAPLYGIN_E] = Ep;
+  pplus[CHAPLYGIN_THETA] = pminus[CHAPLYGIN_THETA];
+  pplus[CHAPLYGIN_H] = Hp;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_spin_ratio: (3.8) the energy/momentum ratio 2E/H^2.
+   Spinning about the peg with the peg at the mass centre (D = -L0, V = 0)
+   has E = Omega^2/2 and H = Omega, so 2E/H^2 = 1.
+   Domain: E >= 0, H finite.  Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM,
+   CHAPLYGIN_ERANGE (H = 0 or overflow: the ratio is infinite). */
+int
+chaplygin_discrete_spin_ratio (double E, double H, double *ratio)
+{
+  if (!ratio)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (E, H) || !(E >= 0.0))
+    return CHAPLYGIN_EDOM;
+  double r = (2.0 * E / H) / H;
+  if (!isfinite (r))
+    return CHAPLYGIN_ERANGE;
+  *ratio = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_spins: whether the motion that starts just after a
+   collision in direction dir ends in the spinning equilibrium of (3.8):
+   2E = H^2 exactly (tested with one fma, so exactly) and the path from the
+   starting end reaches l = 0, i.e. D = -L0 lies in [0, Delta] on the far
+   side of the start: dir = +1 needs L0 < 0 <= L0 + Delta (the peg at the
+   front, D = 0, moving back towards -L0), dir = -1 needs L0 <= 0 < L0 + Delta.
+   (The comparison -L0 <= Delta is made without rounding L0 + Delta.)
+   Domain: finite; Delta > 0; dir = +-1; E > 0.
+   Errors: CHAPLYGIN_EINVAL (NULL, dir), CHAPLYGIN_EDOM. */
+int
+chaplygin_discrete_spins (double L0, double Delta, int dir, double E,
+                          double H, int *spins)
+{
+  if (!spins || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (L0, Delta, E, H) || !(Delta > 0.0) || !(E > 0.0))
+    return CHAPLYGIN_EDOM;
+  int ratio_one = fabs (H) <= 0x1p500 && fma (H, H, -2.0 * E) == 0.0;
+  int reaches = dir > 0 ? (L0 < 0.0 && -L0 <= Delta)
+    : (L0 <= 0.0 && -L0 < Delta);
+  *spins = ratio_one && reaches;
+  return CHAPLYGIN_SUCCESS;
+}

@@ -1,0 +1,249 @@
+/* ellint.c -- Carlson's symmetric integrals, guarded, and the reduction of
+   the heading and time integrals of Appendix B.1 to them.
+
+   Every closed form of Appendix B (the heading (B.2), the f3 of (B.3) and
+   (B.4), the time between collisions) comes down, after the substitutions
+   documented in flow.c, to the two integrals
+
+       I(y, x) = Int_y^x dt / sqrt((t^2 + p)(t^2 + q)),
+       T(y, x) = Int_y^x sqrt((t^2 + p)/(t^2 + q)) dt,       p > q >= 0,
+
+   over 0 <= y <= x.  This file computes them without cancellation, which
+   the textbook route F(phi_x) - F(phi_y) does not do (it loses
+   log10(x/(x - y)) digits when the interval is short, Delta -> 0).  */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_ellint.h>
+
+#include "internal.h"
+
+static gsl_mode_t
+gsl_mode (chaplygin_precision prec)
+{
+  return prec == CHAPLYGIN_PREC_SINGLE ? GSL_PREC_SINGLE : GSL_PREC_DOUBLE;
+}
+
+/* Sort three numbers ascending. */
+static void
+sort3 (double *a, double *b, double *c)
+{
+  double t;
+  if (*a > *b)
+    t = *a, *a = *b, *b = t;
+  if (*b > *c)
+    t = *b, *b = *c, *c = t;
+  if (*a > *b)
+    t = *a, *a = *b, *b = t;
+}
+
+/* Bring the largest of x <= y <= z into [1, 4) by an even power of two,
+   returning the exponent k: the arguments are multiplied by 2^k. */
+static int
+scale_even (double *x, double *y, double *z)
+{
+  int e;
+  frexp (*z, &e);               /* z = f 2^e, 1/2 <= f < 1 */
+  int k = -(e - 1);             /* z 2^k in [1/2, 1) * 2 = [1, 2) */
+  if (k % 2 != 0)
+    k += 1;                     /* z 2^k in [1, 4) */
+  *x = ldexp (*x, k);
+  *y = ldexp (*y, k);
+  *z = ldexp (*z, k);
+  return k;
+}
+
+/* chp_rf: Carlson's R_F(x, y, z) = 1/2 Int_0^inf dt/sqrt((t+x)(t+y)(t+z)).
+   Domain: x, y, z >= 0 finite, at most one of them zero.
+   Method: GSL's gsl_sf_ellint_RF_e (Carlson's duplication, errtol 1e-3 for
+   double precision) when the arguments lie well inside its domain
+   [GSL requires pairwise sums >= 5 DBL_MIN and max < 0.2 DBL_MAX];
+   otherwise exact scaling by an even power of two (R_F is homogeneous of
+   degree -1/2), or, when the two smaller arguments sum to less than 2^-100
+   times the largest, the asymptotic form
+       R_F(x, y, z) = log(4 sqrt(z)/(sqrt(x) + sqrt(y)))/sqrt(z)
+   whose relative error is O((x + y)/z) < 1e-28 there (checked against
+   mpmath at 50 digits).
+   Errors: CHAPLYGIN_EDOM for a negative or non-finite argument,
+   CHAPLYGIN_ERANGE when two arguments are zero (the integral diverges). */
+int
+chp_rf (double x, double y, double z, chaplygin_precision prec, double *r)
+{
+  if (!(x >= 0.0 && y >= 0.0 && z >= 0.0) || !isfinite (x) || !isfinite (y)
+      || !isfinite (z))
+    return CHAPLYGIN_EDOM;
+  sort3 (&x, &y, &z);
+  if (y == 0.0)
+    return CHAPLYGIN_ERANGE;
+  if (x + y < z * 0x1p-100)
+    {
+      double sz = sqrt (z);
+      *r = log (4.0 * sz / (sqrt (x) + sqrt (y))) / sz;
+      return CHAPLYGIN_SUCCESS;
+    }
+  int k = 0;
+  if (!(z <= 0x1p500 && x + y >= 0x1p-500))
+    k = scale_even (&x, &y, &z);
+  gsl_sf_result res;
+  if (gsl_sf_ellint_RF_e (x, y, z, gsl_mode (prec), &res) != GSL_SUCCESS)
+    return CHAPLYGIN_EDOM;      /* unreachable: the domain was checked */
+  *r = ldexp (res.val, k / 2);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chp_rd: Carlson's R_D(x, y, z) = 3/2 Int_0^inf dt/[sqrt((t+x)(t+y))(t+z)^(3/2)].
+   Domain: x, y >= 0, x + y > 0, z > 0, all finite.  (R_D is symmetric in x
+   and y only.)
+   Method: as chp_rf; R_D is homogeneous of degree -3/2; GSL's R_D needs
+   min(x + y, z) >= 2/DBL_MAX^(2/3) ~ 6e-206 and max below ~1e202.  When
+   x + y < 2^-100 z the asymptotic form
+       R_D(x, y, z) = 3 [log(4 sqrt(z)/(sqrt(x) + sqrt(y))) - 1]/z^(3/2)
+   is used (relative error O((x + y)/z), checked against mpmath).
+   Errors: CHAPLYGIN_EDOM for negative or non-finite arguments or z = 0;
+   CHAPLYGIN_ERANGE for x = y = 0 (divergent). */
+int
+chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
+{
+  if (!(x >= 0.0 && y >= 0.0 && z > 0.0) || !isfinite (x) || !isfinite (y)
+      || !isfinite (z))
+    return CHAPLYGIN_EDOM;
+  if (x + y == 0.0)
+    return CHAPLYGIN_ERANGE;
+  double m = fmax (fmax (x, y), z);
+  if (x + y < z * 0x1p-100)
+    {
+      double sz = sqrt (z);
+      *r = 3.0 * (log (4.0 * sz / (sqrt (x) + sqrt (y))) - 1.0) / (z * sz);
+      return CHAPLYGIN_SUCCESS;
+    }
+  int k = 0;
+  if (!(m <= 0x1p500 && x + y >= 0x1p-500 && z >= 0x1p-500))
+    {
+      int e;
+      frexp (m, &e);
+      k = -(e - 1);
+      if (k % 2 != 0)
+        k += 1;
+      x = ldexp (x, k);
+      y = ldexp (y, k);
+      z = ldexp (z, k);
+      /* Now max in [1, 4); a z below 2^-600 after scaling would have needed
+         the asymptotic branch of the other kind (z << x + y), where R_D
+         ~ 3/(sqrt(x y z) ...) is still finite: GSL handles z down to 6e-206. */
+      if (z < 0x1p-600)
+        return CHAPLYGIN_ERANGE;
+    }
+  gsl_sf_result res;
+  if (gsl_sf_ellint_RD_e (x, y, z, gsl_mode (prec), &res) != GSL_SUCCESS)
+    return CHAPLYGIN_EDOM;      /* unreachable: the domain was checked */
+  *r = ldexp (res.val, 3 * k / 2);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chp_quartic_interval: with P(t) = (t^2 + p)(t^2 + q), p = sp^2, q = sq^2,
+   pmq = p - q > 0 (passed separately so that it keeps its relative accuracy)
+   and 0 <= y <= x,
+       *F = sqrt(p) Int_y^x dt/sqrt(P(t)),
+       *T = Int_y^x sqrt((t^2 + p)/(t^2 + q)) dt.
+
+   Method.  The substitution t = sqrt(q) tan(phi) turns Int_0^x dt/sqrt(P)
+   into F(phi_x, k)/sqrt(p) with k^2 = (p - q)/p (Byrd & Friedman
+   221.00).  Euler's addition theorem for F gives F(phi_x) - F(phi_y) =
+   F(mu), and in the variable t it reads, for the even quartic P,
+       tan(mu) = s = (x - y)(x + y) sqrt(p) / (x sqrt(P(y)) + y sqrt(P(x))),
+   an expression with no difference but x - y, which is passed in exactly.
+   Then, with sin(mu) = s/sqrt(1 + s^2), cos^2(mu) = 1/(1 + s^2) and
+   1 - k^2 sin^2(mu) = cos^2(mu) + (q/p) sin^2(mu) (a sum, not a difference),
+       F = sin(mu) R_F(cos^2 mu, 1 - k^2 sin^2 mu, 1)          (DLMF 19.25.5).
+   For T, Int_0^x t^2/sqrt(P) dt = A(x) - sqrt(p) E(phi_x, k) with
+   A(t) = t sqrt((t^2 + p)/(t^2 + q)); the addition theorem for E,
+   E(phi_x) - E(phi_y) = E(mu) - k^2 sin(phi_x) sin(phi_y) sin(mu), and
+   F - E = (k^2/3) sin^3 R_D(cos^2, 1 - k^2 sin^2, 1) (DLMF 19.25.7) give
+       T = [A(x) - A(y)] + (p - q)/sqrt(p) sin(phi_x) sin(phi_y) sin(mu)
+           + (p - q)/(3 sqrt(p)) sin^3(mu) R_D(cos^2 mu, 1 - k^2 sin^2 mu, 1),
+   with sin(phi_t) = t/sqrt(t^2 + q) and
+       A(x) - A(y) = (x - y)(x + y)/(A(x) + A(y))
+                     * [1 + q (p - q)/((x^2 + q)(y^2 + q))],
+   every term nonnegative.  All of this was checked against direct
+   quadrature at 40 digits (mpmath) before it was written in C.
+   Scaling: I and T are homogeneous (t, sqrt p, sqrt q) -> lambda (...),
+   F of degree 0 and T of degree 1; arguments above 2^250 are scaled by a
+   power of two to keep the products below 2^750.
+   Special cases: x = y gives 0; y = 0 gives s = x/sqrt(q); y = q = 0 is the
+   divergent integral of the spinning state: CHAPLYGIN_ESPIN.
+   Accuracy: see the manual's accuracy tables (measured against 256-bit
+   Arb/mpmath).  Errors from chp_rf/chp_rd are passed on. */
+int
+chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
+                      double dxy, chaplygin_precision prec, double *F,
+                      double *T)
+{
+  if (!(dxy > 0.0))
+    {
+      if (F)
+        *F = 0.0;
+      if (T)
+        *T = 0.0;
+      return CHAPLYGIN_SUCCESS;
+    }
+  if (y == 0.0 && sq == 0.0)
+    return CHAPLYGIN_ESPIN;
+
+  int e = 0;
+  double big = fmax (x, sp);
+  if (big > 0x1p250)
+    {
+      frexp (big, &e);
+      x = ldexp (x, -e);
+      y = ldexp (y, -e);
+      dxy = ldexp (dxy, -e);
+      sp = ldexp (sp, -e);
+      sq = ldexp (sq, -e);
+      pmq = ldexp (pmq, -2 * e);
+    }
+
+  double ax = hypot (x, sp), bx = hypot (x, sq);
+  double ay = hypot (y, sp), by = hypot (y, sq);
+  double s;
+  if (y == 0.0)
+    s = x / sq;                 /* may be +Inf: mu = pi/2, the complete integral */
+  else
+    s = dxy * (x + y) * sp / (x * (ay * by) + y * (ax * bx));
+
+  double c, sn;                 /* cos(mu), sin(mu) */
+  if (isinf (s))
+    c = 0.0, sn = 1.0;
+  else
+    {
+      c = 1.0 / hypot (1.0, s);
+      sn = s * c;
+    }
+  double c2 = c * c;
+  double kp2 = (sq / sp) * (sq / sp);   /* k'^2 = q/p */
+  double Y = c2 + kp2 * sn * sn;        /* 1 - k^2 sin^2(mu) */
+
+  if (F)
+    {
+      double rf;
+      CHP_TRY (chp_rf (c2, Y, 1.0, prec, &rf));
+      *F = sn * rf;
+    }
+  if (T)
+    {
+      double rd;
+      CHP_TRY (chp_rd (c2, Y, 1.0, prec, &rd));
+      double Ax = x * (ax / bx);
+      double Ay = (y == 0.0) ? 0.0 : y * (ay / by);
+      double bx2 = bx * bx, by2 = by * by;
+      double corr = (sq == 0.0) ? 0.0 : (sq * sq * pmq / bx2) / by2;
+      double term1 = dxy * ((x + y) / (Ax + Ay)) * (1.0 + corr);
+      double term2 = (y == 0.0) ? 0.0
+        : (pmq / sp) * (x / bx) * (y / by) * sn;
+      double term3 = (pmq / (3.0 * sp)) * (sn * sn * sn) * rd;
+      *T = ldexp (term1 + term2 + term3, e);
+    }
+  return CHAPLYGIN_SUCCESS;
+}

@@ -1,0 +1,363 @@
+/* flow.c -- Appendix B.1: motion of the discrete skate between collisions.
+
+   Notation.  l = L0 + D is the signed distance from the peg to the mass
+   centre.  Between collisions the energy E (3.3) and the angular momentum
+   about the peg H (3.4) are constant, so with h = H/sqrt(2E)
+
+       V^2 = 2E - H^2/(1 + l^2) = 2E g(l)/(1 + l^2),   g(l) = l^2 + 1 - h^2,
+       Omega = H/(1 + l^2),
+       dtheta/dl = Omega/V,   dtau/dl = 1/V.
+
+   Two regimes (manual, "Closed forms"):
+   A.  h^2 <= 1: g > 0 for all l != 0, no turning point.  With t = |l|,
+         |dtheta| = |h| dt/sqrt((t^2 + 1)(t^2 + 1 - h^2)),
+          dtau    = (1/sqrt(2E)) sqrt((t^2 + 1)/(t^2 + 1 - h^2)) dt,
+       i.e. p = 1, q = 1 - h^2, p - q = h^2.
+   B.  h^2 > 1: turning points at |l| = c = sqrt(h^2 - 1), motion only where
+       |l| >= c.  With w = sqrt(l^2 - c^2) (w = 0 at the turning point),
+         |dtheta| = |h| dw/sqrt((w^2 + c^2)(w^2 + h^2)),
+          dtau    = (1/sqrt(2E)) sqrt((w^2 + h^2)/(w^2 + c^2)) dw,
+       i.e. p = h^2, q = h^2 - 1, p - q = 1.
+   The integrals are those of chp_quartic_interval;
+   sqrt(p) cancels |h| in B, and dtheta = sign(H) min(|h|, 1) F.  */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+
+#include "internal.h"
+
+/* chp_motion_init: the invariants of the motion with energy E > 0 and
+   momentum H.  1 - h^2 = -(H^2 - 2E)/(2E) is formed with one fma, so its
+   sign is exact and its value correct to 2 ulps (for |H| <= 2^500). */
+int
+chp_motion_init (double E, double H, chp_motion *m)
+{
+  if (!isfinite (E) || !isfinite (H))
+    return CHAPLYGIN_EDOM;
+  if (!(E > 0.0))
+    return CHAPLYGIN_ESTATE;
+  double twoE = 2.0 * E;
+  if (!isfinite (twoE))
+    return CHAPLYGIN_ERANGE;
+  m->E = E;
+  m->H = H;
+  m->sqrt2E = sqrt (twoE);
+  m->h = H / m->sqrt2E;
+  if (fabs (H) <= 0x1p500)
+    m->omh2 = -fma (H, H, -twoE) / twoE;
+  else
+    m->omh2 = (1.0 - m->h) * (1.0 + m->h);
+  if (m->omh2 >= 0.0)
+    {
+      m->sp = 1.0;
+      m->sq = sqrt (m->omh2);
+      m->pmq = m->h * m->h;
+      m->theta_factor = m->h;
+    }
+  else
+    {
+      m->sp = fabs (m->h);
+      m->sq = sqrt (-m->omh2);
+      m->pmq = 1.0;
+      m->theta_factor = chp_sign (H);
+    }
+  return CHAPLYGIN_SUCCESS;
+}
+
+double
+chp_motion_g (const chp_motion *m, double l)
+{
+  return fma (l, l, m->omh2);
+}
+
+/* ---- quadrature integrands (the paper's, in l; in u near turning points) */
+
+struct quad_par
+{
+  const chp_motion *m;
+};
+
+/* Regime A, variable l: |dtheta/dl| / |h| = 1/sqrt((1 + l^2) g(l)). */
+static double
+qa_theta (double l, void *p)
+{
+  const struct quad_par *qp = p;
+  return 1.0 / sqrt (chp_one_plus_sq (l) * chp_motion_g (qp->m, l));
+}
+
+/* Regime A: sqrt(2E) dtau/dl = sqrt((1 + l^2)/g(l)). */
+static double
+qa_tau (double l, void *p)
+{
+  const struct quad_par *qp = p;
+  return sqrt (chp_one_plus_sq (l) / chp_motion_g (qp->m, l));
+}
+
+/* Regime B, variable u with |l| = c + u^2, g = u^2 (|l| + c):
+   |dtheta/du| / |h| = 2/sqrt((1 + l^2)(|l| + c)). */
+static double
+qb_theta (double u, void *p)
+{
+  const struct quad_par *qp = p;
+  double c = qp->m->sq, al = c + u * u;
+  return 2.0 / sqrt (chp_one_plus_sq (al) * (al + c));
+}
+
+/* Regime B: sqrt(2E) dtau/du = 2 sqrt((1 + l^2)/(|l| + c)). */
+static double
+qb_tau (double u, void *p)
+{
+  const struct quad_par *qp = p;
+  double c = qp->m->sq, al = c + u * u;
+  return 2.0 * sqrt (chp_one_plus_sq (al) / (al + c));
+}
+
+/* chp_leg: heading and time along one leg from la to lb.
+   Closed form: the reductions of the file comment, with the interval in t
+   (regime A; split at t = 0 when la, lb straddle 0) or in w (regime B; the
+   width w_b - w_a = (|lb| - |la|)(|la| + |lb|)/(w_a + w_b) is formed from dl,
+   not by subtraction).
+   Quadrature: the paper's integrands of (B.2)/(B.3) in l (regime A, split
+   at 0 where the integrand peaks), or in u = sqrt(|l| - c) (regime B), which
+   removes the inverse-square-root singularity at a turning point; adaptive
+   Gauss-Kronrod to opt->tol. */
+int
+chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
+         double dl, const chaplygin_options *opt, double *dtheta,
+         double *dtau)
+{
+  double F = 0.0, T = 0.0;
+  double *pF = dtheta ? &F : NULL, *pT = dtau ? &T : NULL;
+  double aa = fabs (la), ab = fabs (lb);
+
+  if (dl == 0.0)
+    {
+      if (dtheta)
+        *dtheta = 0.0;
+      if (dtau)
+        *dtau = 0.0;
+      return CHAPLYGIN_SUCCESS;
+    }
+
+  if (opt->method == CHAPLYGIN_CLOSED_FORM)
+    {
+      if (m->H == 0.0)
+        {
+          /* Straight line: Omega = 0, V^2 = 2E. */
+          T = dl;
+          F = 0.0;
+        }
+      else if (m->omh2 >= 0.0)
+        {
+          if (la * lb < 0.0)
+            {
+              double F1 = 0.0, T1 = 0.0, F2 = 0.0, T2 = 0.0;
+              CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, 0.0, aa, aa,
+                                             opt->precision, pF ? &F1 : NULL,
+                                             pT ? &T1 : NULL));
+              CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, 0.0, ab, ab,
+                                             opt->precision, pF ? &F2 : NULL,
+                                             pT ? &T2 : NULL));
+              F = F1 + F2;
+              T = T1 + T2;
+            }
+          else
+            CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, fmin (aa, ab),
+                                           fmax (aa, ab), dl, opt->precision,
+                                           pF, pT));
+        }
+      else
+        {
+          double wa = sqrt (ga), wb = sqrt (gb);
+          double dw = dl * ((aa + ab) / (wa + wb));
+          CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, fmin (wa, wb),
+                                         fmax (wa, wb), dw, opt->precision,
+                                         pF, pT));
+        }
+      if (dtheta)
+        *dtheta = m->theta_factor * F;
+      if (dtau)
+        *dtau = T / m->sqrt2E;
+      return CHAPLYGIN_SUCCESS;
+    }
+
+  /* Quadrature. */
+  struct quad_par qp = { m };
+  double mag_h = fabs (m->h);
+  if (m->omh2 >= 0.0)
+    {
+      double lo = fmin (la, lb), hi = fmax (la, lb);
+      double cuts[3] = { lo, hi, hi };
+      int n = 1;
+      if (lo < 0.0 && hi > 0.0)
+        {
+          cuts[1] = 0.0;
+          n = 2;
+        }
+      for (int i = 0; i < n; i++)
+        {
+          double r;
+          if (dtheta)
+            {
+              CHP_TRY (chp_integrate (qa_theta, &qp, cuts[i], cuts[i + 1],
+                                      opt->tol, &r));
+              F += r;
+            }
+          if (dtau)
+            {
+              CHP_TRY (chp_integrate (qa_tau, &qp, cuts[i], cuts[i + 1],
+                                      opt->tol, &r));
+              T += r;
+            }
+        }
+      F *= mag_h;
+    }
+  else
+    {
+      double c = m->sq;
+      /* u = sqrt(|l| - c), |l| - c = g/(|l| + c) without cancellation. */
+      double ua = sqrt (ga / (aa + c)), ub = sqrt (gb / (ab + c));
+      double lo = fmin (ua, ub), hi = fmax (ua, ub);
+      if (dtheta)
+        {
+          CHP_TRY (chp_integrate (qb_theta, &qp, lo, hi, opt->tol, &F));
+          F *= mag_h;
+        }
+      if (dtau)
+        CHP_TRY (chp_integrate (qb_tau, &qp, lo, hi, opt->tol, &T));
+    }
+  if (dtheta)
+    *dtheta = chp_sign (m->H) * F;
+  if (dtau)
+    *dtau = T / m->sqrt2E;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_flow: (B.1)
+       V(D)^2 = V0^2 + (D - D0)(2 L0 + D + D0)(1 + (L0 + D0)^2) Omega0^2
+                       / (1 + (L0 + D)^2),
+       Omega(D) = Omega0 (1 + (L0 + D0)^2)/(1 + (L0 + D)^2).
+   Domain: all arguments finite.  D need not lie in the slot: (B.1) is the
+   conservation of E and H, valid wherever the motion goes.
+   Method: as printed; (D - D0)(2 L0 + D + D0) = l^2 - l0^2 is already the
+   factored difference of squares, so only V0^2 + (...) can cancel, which is
+   the conditioning of V near a turning point, not of the formula.
+   Accuracy: a few ulps of the terms (no division by small quantities).
+   Errors: CHAPLYGIN_EINVAL for NULL outputs; CHAPLYGIN_EDOM for non-finite
+   input; CHAPLYGIN_ESTATE if V(D)^2 < 0 (D lies beyond a turning point and
+   is never reached); CHAPLYGIN_ERANGE on overflow. */
+int
+chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
+                         double D, double *V2, double *Omega)
+{
+  if (!V2 || !Omega)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (L0, D0, V0, Omega0) || !isfinite (D))
+    return CHAPLYGIN_EDOM;
+  double l0 = L0 + D0, l = L0 + D;
+  double n0 = chp_one_plus_sq (l0), n = chp_one_plus_sq (l);
+  double ratio = n0 / n;
+  double om = Omega0 * ratio;
+  double v2 = V0 * V0 + (D - D0) * (2.0 * L0 + D + D0) * ratio
+    * Omega0 * Omega0;
+  if (!isfinite (v2) || !isfinite (om))
+    return CHAPLYGIN_ERANGE;
+  if (v2 < 0.0)
+    return CHAPLYGIN_ESTATE;
+  *V2 = v2;
+  *Omega = om;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_heading: (B.2)
+       theta(D) = theta0 + Int_D0^D dD' / sqrt( [1 + (L0+D')^2]/[1 + (L0+D0)^2]
+                  * [ (V0/Omega0)^2 [1 + (L0+D')^2]/[1 + (L0+D0)^2]
+                      + (D' - D0)(2 L0 + D' + D0) ] )
+   times sign(V0 Omega0) (the printed integral has the sign of D - D0, the
+   heading has the sign of Omega: see the errata), and the elapsed time
+   tau(D) - tau0 = Int_D0^D dD'/|V(D')|.
+   Domain: finite arguments; D on the side of D0 that V0 points to (if
+   V0 = 0, the side (L0 + D0) Omega0^2 accelerates towards), and not beyond
+   the first turning point (D may be the turning point itself).
+   Method: opt->method.  Closed form: the reduction to chp_quartic_interval
+   described at the top of this file (Legendre F and E through Carlson R_F,
+   R_D); quadrature: adaptive Gauss-Kronrod on the integrand above (in
+   u = sqrt(|l| - c) in regime B); ODE: (3.1) integrated to D exactly
+   (chp_ode_until).  g(l0) is formed from V0 directly, so the start of the
+   leg carries no cancellation.
+   Special cases: D = D0 gives 0, 0; Omega0 = 0 gives dtheta = 0 and
+   dtau = |D - D0|/|V0|.
+   Errors: CHAPLYGIN_EINVAL (both outputs NULL, bad options), CHAPLYGIN_EDOM
+   (non-finite input), CHAPLYGIN_ESTATE (D on the wrong side, beyond a
+   turning point, or the skate at rest), CHAPLYGIN_ESPIN (D is, or lies
+   beyond, the spinning point l = 0 with 2E = H^2, reached only as
+   tau -> inf), CHAPLYGIN_ENOCONV (quadrature/ODE). */
+int
+chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
+                            double D, const chaplygin_options *opt,
+                            double *dtheta, double *dtau)
+{
+  chaplygin_options o;
+  if (!dtheta && !dtau)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_options_resolve (opt, &o));
+  if (!chp_finite4 (L0, D0, V0, Omega0) || !isfinite (D))
+    return CHAPLYGIN_EDOM;
+
+  double l0 = L0 + D0, l = L0 + D;
+  double n0 = chp_one_plus_sq (l0);
+  double E = 0.5 * (V0 * V0 + n0 * Omega0 * Omega0);
+  double H = n0 * Omega0;
+  if (!isfinite (E) || !isfinite (H))
+    return CHAPLYGIN_ERANGE;
+  if (D == D0)
+    {
+      if (dtheta)
+        *dtheta = 0.0;
+      if (dtau)
+        *dtau = 0.0;
+      return CHAPLYGIN_SUCCESS;
+    }
+  if (E == 0.0)
+    return CHAPLYGIN_ESTATE;
+  double dirD = chp_sign (D - D0);
+  if (V0 != 0.0 && chp_sign (V0) != dirD)
+    return CHAPLYGIN_ESTATE;
+  if (V0 == 0.0)
+    {
+      if (l0 == 0.0)
+        return CHAPLYGIN_ESPIN;         /* the spinning equilibrium itself */
+      if (chp_sign (l0) != dirD)
+        return CHAPLYGIN_ESTATE;
+    }
+
+  chp_motion m;
+  CHP_TRY (chp_motion_init (E, H, &m));
+  double g0 = n0 * V0 * V0 / (2.0 * E);
+  double gl = chp_motion_g (&m, l);
+  if (m.omh2 >= 0.0)
+    {
+      if (m.omh2 == 0.0 && l0 * l <= 0.0)
+        return l == 0.0 ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
+    }
+  else if (gl < 0.0 || (l0 * l < 0.0) || (l == 0.0))
+    return CHAPLYGIN_ESTATE;
+
+  if (o.method != CHAPLYGIN_ODE)
+    return chp_leg (&m, l0, g0, l, gl, fabs (D - D0), &o, dtheta, dtau);
+
+  double q0[4] = { D0, V0, 0.0, Omega0 }, q1[4], t;
+  int turned;
+  double Dlo = D > D0 ? -HUGE_VAL : D, Dhi = D > D0 ? D : HUGE_VAL;
+  CHP_TRY (chp_ode_until (L0, q0, Dlo, Dhi, 1, o.tol, q1, &t, &turned));
+  if (turned && gl != 0.0)
+    return CHAPLYGIN_ENOCONV;   /* turned back short of D: D is within the
+                                   integration error of the turning point */
+  if (dtheta)
+    *dtheta = q1[CHAPLYGIN_THETA];
+  if (dtau)
+    *dtau = t;
+  return CHAPLYGIN_SUCCESS;
+}

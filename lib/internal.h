@@ -1,0 +1,139 @@
+/* internal.h -- helpers shared by the sources of libchaplygin; not
+   installed, not exported (the shared library exports only chaplygin_*).  */
+#ifndef CHAPLYGIN_INTERNAL_H
+#define CHAPLYGIN_INTERNAL_H
+
+#include <math.h>
+#include "chaplygin.h"
+
+/* Return STATUS from the enclosing function unless it is success. */
+#define CHP_TRY(expr)                           \
+  do                                            \
+    {                                           \
+      int chp_try_status_ = (expr);             \
+      if (chp_try_status_ != CHAPLYGIN_SUCCESS) \
+        return chp_try_status_;                 \
+    }                                           \
+  while (0)
+
+static inline int
+chp_finite2 (double a, double b)
+{
+  return isfinite (a) && isfinite (b);
+}
+
+static inline int
+chp_finite4 (double a, double b, double c, double d)
+{
+  return isfinite (a) && isfinite (b) && isfinite (c) && isfinite (d);
+}
+
+/* 1 + x^2, rounded once.  Overflows (to +Inf) for |x| > ~1.3e154. */
+static inline double
+chp_one_plus_sq (double x)
+{
+  return fma (x, x, 1.0);
+}
+
+/* sign(x) as +1 or -1 (+1 for +0, -1 for -0 is not wanted: zero -> +1). */
+static inline double
+chp_sign (double x)
+{
+  return x < 0.0 ? -1.0 : 1.0;
+}
+
+/* Options: NULL means CHAPLYGIN_OPTIONS_DEFAULT; validates the rest. */
+int chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out);
+
+/* L/(1 + L^2) without overflow. */
+double chp_L_over_one_plus_sq (double L);
+
+/* [1 + b b']/[1 + b^2], the collision ratio of (3.6), (3.7) with
+   b = L0 + D-, b' = L0 + D+ (so b b' = L0 (L0 + Delta)); the numerator is
+   formed with an error-free sum so that it is accurate to a few ulps even
+   when 1 + L0 (L0 + Delta) cancels.  L0, Delta give the numerator, b the
+   denominator. */
+double chp_collision_ratio (double L0, double Delta, double b);
+
+/* 1 + L0 (L0 + Delta), accurate to ~1 ulp of the result. */
+double chp_one_plus_L0_L0D (double L0, double Delta);
+
+/* ---- discrete.c ----------------------------------------------------- */
+
+/* The (3.7) coefficients for the collision at which the peg leaves the end
+   Dminus (0 or Delta): E+ = E- + C1 H-^2, H+ = C2 H-. */
+void chp_collision_coefficients (double L0, double Delta, double Dminus,
+                                 double *C1, double *C2);
+
+/* ---- ellint.c: Carlson integrals and the quartic reduction ---------- */
+
+/* Carlson's R_F(x, y, z) and R_D(x, y, z) for x, y, z >= 0 (at most one
+   zero for R_F; x + y > 0 for R_D), through GSL within its domain, by exact
+   power-of-two scaling outside it, and by the leading asymptotic term when
+   two arguments are below 2^-100 times the third.  Never invokes GSL's
+   error handler.  CHAPLYGIN_ERANGE if the integral is infinite. */
+int chp_rf (double x, double y, double z, chaplygin_precision prec,
+            double *r);
+int chp_rd (double x, double y, double z, chaplygin_precision prec,
+            double *r);
+
+/* The two integrals every closed form of Appendix B reduces to, with
+   P(t) = (t^2 + p)(t^2 + q), p = sp^2, q = sq^2, pmq = p - q > 0,
+   0 <= y <= x, dxy = x - y given separately (exactly):
+     *F = sqrt(p) * Int_y^x dt/sqrt(P(t))   = F(mu, k), k^2 = (p - q)/p,
+     *T = Int_y^x sqrt((t^2 + p)/(t^2 + q)) dt.
+   Either output may be NULL.  See ellint.c for the method. */
+int chp_quartic_interval (double sp, double sq, double pmq, double y,
+                          double x, double dxy, chaplygin_precision prec,
+                          double *F, double *T);
+
+/* ---- quad.c: adaptive Gauss-Kronrod quadrature ---------------------- */
+
+/* Int_a^b f(t) dt to relative tolerance epsrel (raised to 64 eps at least),
+   globally adaptive bisection with GSL's 21-point Kronrod rule, at most
+   CHP_QUAD_LIMIT subintervals, no allocation, no GSL error handler.
+   CHAPLYGIN_ENOCONV if the tolerance is not met; CHAPLYGIN_EDOM if f
+   returns a non-finite value. */
+#define CHP_QUAD_LIMIT 256
+int chp_integrate (double (*f) (double, void *), void *params, double a,
+                   double b, double epsrel, double *result);
+
+/* ---- ode.c: event-located integration of (3.1) ----------------------- */
+
+/* Integrate (3.1) from q0 (tau = 0) until D leaves the open interval
+   (Dlo, Dhi), landing exactly on the bound it crosses, or, if stop_at_turn,
+   until V reaches 0, landing exactly there.  q1 and *tau receive the state
+   and time of the event; *turned = 1 if it was V = 0.  Runge-Kutta-Prince-
+   Dormand 8(9) with relative tolerance tol; see ode.c. */
+int chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
+                   int stop_at_turn, double tol, double q1[4], double *tau,
+                   int *turned);
+
+/* ---- flow.c: a motion between collisions ---------------------------- */
+
+/* The invariants of a motion between collisions, reduced to the constants
+   of chp_quartic_interval.  l = L0 + D is the distance from peg to mass
+   centre; V^2 = 2E g(l)/(1 + l^2) with g(l) = l^2 + 1 - h^2. */
+typedef struct
+{
+  double E, H;
+  double sqrt2E;      /* sqrt(2E) */
+  double h;           /* H/sqrt(2E) */
+  double omh2;        /* 1 - h^2 = (2E - H^2)/(2E); its sign is exact */
+  double sp, sq;      /* sqrt(p), sqrt(q): p = max(1, h^2), q = |1 - h^2| */
+  double pmq;         /* p - q: h^2 (regime A) or 1 (regime B) */
+  double theta_factor;  /* sign(H) min(|h|, 1): dtheta = theta_factor F */
+} chp_motion;
+
+int chp_motion_init (double E, double H, chp_motion *m);
+
+/* g(l) = l^2 + 1 - h^2 = (1 + l^2) V^2/(2E). */
+double chp_motion_g (const chp_motion *m, double l);
+
+/* Heading and time along one leg from la to lb (no turning point strictly
+   between them; lb may be one), ga = g(la), gb = g(lb), dl = |lb - la|. */
+int chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
+             double dl, const chaplygin_options *opt, double *dtheta,
+             double *dtau);
+
+#endif /* CHAPLYGIN_INTERNAL_H */

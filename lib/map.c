@@ -1,0 +1,379 @@
+/* map.c -- Section 3.1 and Appendix B.2: the Poincare map (3.5) and the
+   return map (B.3), (B.4), with the turning points (B.5).
+
+   A post-collision state has its peg at the slot front (D = 0) if V > 0 and
+   at the rear (D = Delta) if V < 0.  Between collisions E and H are
+   constant; the motion either reaches the far end (no reversal, (B.3)) or
+   turns at D_c and returns to the end it started from (reversal, (B.4)).
+   Either way the next peg goes in at the other end, and the collision is
+   that of (3.7) at the end the peg leaves, D-.  */
+#include <config.h>
+
+#include <math.h>
+#include <stddef.h>
+
+#include "internal.h"
+
+/* chaplygin_discrete_init: a discrete skate with mass centre L0 ahead of the
+   slot front and slot length Delta (units of rho), with the (3.7)
+   coefficients C1, C2 for a collision at either end, computed once.
+   Domain: L0 finite, 0 < Delta finite.
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM. */
+int
+chaplygin_discrete_init (chaplygin_discrete *sys, double L0, double Delta)
+{
+  if (!sys)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
+    return CHAPLYGIN_EDOM;
+  sys->L0 = L0;
+  sys->Delta = Delta;
+  chp_collision_coefficients (L0, Delta, 0.0, &sys->C1[0], &sys->C2[0]);
+  chp_collision_coefficients (L0, Delta, Delta, &sys->C1[1], &sys->C2[1]);
+  sys->l_end[0] = L0;
+  sys->l_end[1] = L0 + Delta;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_coefficients: (B.3), (B.4)
+     (B.3) no reversal:  C1 = -Delta^2 / (2 [1 + (L0 + Delta - D+)^2]^2
+                                           [1 + (L0 + D+)^2]),
+                         C2 = [1 + L0 (L0 + Delta)] / [1 + (L0 + Delta - D+)^2];
+     (B.4) reversal:     C1 = -Delta^2 / (2 [1 + (L0 + D+)^2]^2
+                                           [1 + (L0 + Delta - D+)^2]),
+                         C2 = [1 + L0 (L0 + Delta)] / [1 + (L0 + D+)^2],
+   D+ = 0 for V+ > 0 and Delta for V+ < 0.  Both are (3.7) at the end the
+   peg leaves: D- = Delta - D+ without reversal, D- = D+ with one.
+   Domain: finite; Delta > 0; Dplus exactly 0 or Delta; reversal 0 or 1.
+   Errors: CHAPLYGIN_EINVAL (NULL, reversal), CHAPLYGIN_EDOM,
+   CHAPLYGIN_ESTATE (Dplus not an end). */
+int
+chaplygin_discrete_coefficients (double L0, double Delta, double Dplus,
+                                 int reversal, double *C1, double *C2)
+{
+  if (!C1 || !C2 || (reversal != 0 && reversal != 1))
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0) || !isfinite (Dplus))
+    return CHAPLYGIN_EDOM;
+  if (Dplus != 0.0 && Dplus != Delta)
+    return CHAPLYGIN_ESTATE;
+  double Dminus = reversal ? Dplus : Delta - Dplus;
+  chp_collision_coefficients (L0, Delta, Dminus, C1, C2);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_turning_points: (B.5)
+       D_c = -L0 -+ sqrt(H^2/(2E) - 1),
+   the points where V = 0 for the energy E and momentum H.
+   Method: H^2/(2E) - 1 = fma(H, H, -2E)/(2E), so the radicand is exact to
+   two roundings and its sign exact; n_real = 2 (> 0), 1 (= 0: the double
+   root D = -L0, the spinning point) or 0 (< 0: V never vanishes).
+   Domain: finite; Delta > 0; E > 0; |H| <= 2^500.
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE
+   (|H| > 2^500). */
+int
+chaplygin_discrete_turning_points (double L0, double Delta, double E,
+                                   double H, int *n_real, double Dc[2],
+                                   int *n_in_slot)
+{
+  if (!n_real || !Dc || !n_in_slot)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (L0, Delta, E, H) || !(Delta > 0.0) || !(E > 0.0))
+    return CHAPLYGIN_EDOM;
+  if (fabs (H) > 0x1p500 || !isfinite (2.0 * E))
+    return CHAPLYGIN_ERANGE;
+  double d = fma (H, H, -2.0 * E);
+  int n = 0;
+  double r[2] = { 0.0, 0.0 };
+  if (d == 0.0)
+    {
+      n = 1;
+      r[0] = -L0;
+    }
+  else if (d > 0.0)
+    {
+      double c = sqrt (d / (2.0 * E));
+      n = 2;
+      r[0] = -L0 - c;
+      r[1] = -L0 + c;
+    }
+  int in = 0;
+  for (int i = 0; i < n; i++)
+    if (r[i] >= 0.0 && r[i] <= Delta)
+      in++;
+  for (int i = 0; i < n; i++)
+    Dc[i] = r[i];
+  *n_real = n;
+  *n_in_slot = in;
+  return CHAPLYGIN_SUCCESS;
+}
+
+static int
+check_state (const chaplygin_discrete *sys, const chaplygin_discrete_state *s)
+{
+  if (!chp_finite2 (sys->L0, sys->Delta) || !(sys->Delta > 0.0))
+    return CHAPLYGIN_EDOM;
+  if (s->dir != 1 && s->dir != -1)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (s->E, s->H, s->theta, s->tau)
+      || !chp_finite2 (s->peg[0], s->peg[1]))
+    return CHAPLYGIN_EDOM;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The ODE route for one step: integrate (3.1) from the post-collision phase
+   state to the slot end it leaves, then apply (3.6) and (3.3), (3.4). */
+static int
+step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
+          const chp_motion *m, double l0, double g0, double tol, int *iminus,
+          double *Vminus, double *E1, double *H1, double *dtheta,
+          double *dtau)
+{
+  double L0 = sys->L0, Delta = sys->Delta;
+  double n0 = chp_one_plus_sq (l0);
+  double q0[4] = { in->dir > 0 ? 0.0 : Delta,
+                   in->dir * sqrt (2.0 * m->E * g0 / n0), 0.0, m->H / n0 };
+  double q1[4], qp[4], t;
+  int turned;
+  CHP_TRY (chp_ode_until (L0, q0, 0.0, Delta, 0, tol, q1, &t, &turned));
+  CHP_TRY (chaplygin_discrete_collide (L0, Delta, q1, qp));
+  CHP_TRY (chaplygin_discrete_energy (L0, qp[CHAPLYGIN_D], qp[CHAPLYGIN_V],
+                                      qp[CHAPLYGIN_OMEGA], E1));
+  CHP_TRY (chaplygin_discrete_momentum (L0, qp[CHAPLYGIN_D],
+                                        qp[CHAPLYGIN_OMEGA], H1));
+  *iminus = q1[CHAPLYGIN_D] == Delta ? 1 : 0;
+  *Vminus = q1[CHAPLYGIN_V];
+  *dtheta = q1[CHAPLYGIN_THETA];
+  *dtau = t;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_step: (B.3) and (B.4), the return map on post-collision
+   states p = {D+, E, theta, H} (D+ carried as dir):
+     (B.3) no reversal:  D+' = D+, E' = E + C1 H^2, H' = C2 H,
+           theta' = theta + sgn(Omega) |Int_{D+}^{Delta - D+} dD/sqrt(Q(D))|,
+     (B.4) reversal:     D+' = Delta - D+, E', H' likewise (other C1, C2),
+           theta' = theta + 2 sgn(Omega) |Int_{D+}^{D_c} dD/sqrt(Q(D))|,
+   Q(D) = (1 + (L0 + D)^2) [2E (1 + (L0 + D)^2)/H^2 - 1]; also the elapsed
+   time (twice the time to D_c on reversal) and the new peg position
+   P' = P + (D- - D+')(cos theta', sin theta').
+   Method: the motion is classified exactly (the sign of 2E - H^2 is exact,
+   V^2 at the far end is 2E g(l)/(1 + l^2) with g from one fma):
+     2E > H^2, or moving away from l = 0: no turning point is met;
+     2E < H^2 and moving towards l = 0: a reversal iff the path reaches
+       |l| = c = sqrt(h^2 - 1) (g(far end) <= 0 or the far end beyond 0).
+   A turning point exactly at the far end counts as a reversal (the peg
+   touches the end with zero speed and does not leave it).  E and H are
+   updated by the (3.7) coefficients of the end the peg leaves; heading and
+   time by opt->method (closed form, quadrature: chp_leg; ODE: (3.1)
+   integrated to the collision, then (3.6), (3.3), (3.4): every output of
+   that route comes from the integration).  Only what REQUEST asks for is
+   computed (E, H, dir always).
+   Domain: a valid system; in->dir = +-1; finite fields; E > 0 and
+   V+^2 = 2E - H^2/(1 + l0^2) > 0.
+   Errors: CHAPLYGIN_EINVAL (NULL, dir, request bits, options),
+   CHAPLYGIN_EDOM (non-finite), CHAPLYGIN_ESTATE (E <= 0, V+^2 <= 0),
+   CHAPLYGIN_ESPIN (2E = H^2 and the path reaches l = 0: no next
+   collision), CHAPLYGIN_ERANGE, CHAPLYGIN_ENOCONV. */
+int
+chaplygin_discrete_step (const chaplygin_discrete *sys,
+                         const chaplygin_discrete_state *in,
+                         unsigned request, const chaplygin_options *opt,
+                         chaplygin_discrete_state *out,
+                         chaplygin_discrete_event *ev)
+{
+  chaplygin_options o;
+  if (!sys || !in || !out || (request & ~(unsigned) CHAPLYGIN_WANT_ALL))
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_options_resolve (opt, &o));
+  CHP_TRY (check_state (sys, in));
+  if (request & CHAPLYGIN_WANT_PEG)
+    request |= CHAPLYGIN_WANT_THETA;
+
+  const double L0 = sys->L0, Delta = sys->Delta;
+  const int start = in->dir > 0 ? 0 : 1, far = 1 - start;
+  const double l0 = sys->l_end[start], l1 = sys->l_end[far];
+
+  chp_motion m;
+  CHP_TRY (chp_motion_init (in->E, in->H, &m));
+  const double g0 = chp_motion_g (&m, l0);
+  if (!(g0 > 0.0))
+    return CHAPLYGIN_ESTATE;
+  const double g1 = chp_motion_g (&m, l1);
+
+  int reversal = 0;
+  if (m.omh2 >= 0.0)
+    {
+      if (m.omh2 == 0.0 && l0 * l1 <= 0.0)
+        return CHAPLYGIN_ESPIN;
+    }
+  else if (in->dir * l0 < 0.0)
+    reversal = (l0 * l1 <= 0.0 || g1 <= 0.0);
+
+  int iminus = reversal ? start : far;
+  double E1, H1, Vminus, dtheta = 0.0, dtau = 0.0;
+  const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
+  const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
+
+  if (o.method == CHAPLYGIN_ODE)
+    {
+      CHP_TRY (step_ode (sys, in, &m, l0, g0, o.tol, &iminus, &Vminus, &E1,
+                         &H1, &dtheta, &dtau));
+      reversal = (iminus == start);
+    }
+  else
+    {
+      double gm = reversal ? g0 : g1, lm = reversal ? l0 : l1;
+      E1 = in->E + sys->C1[iminus] * in->H * in->H;
+      H1 = sys->C2[iminus] * in->H;
+      Vminus = (reversal ? -in->dir : in->dir)
+        * sqrt (2.0 * in->E * gm / chp_one_plus_sq (lm));
+      if (want_theta || want_tau)
+        {
+          double *pth = want_theta ? &dtheta : NULL;
+          double *pta = want_tau ? &dtau : NULL;
+          if (reversal)
+            {
+              /* Out to the turning point and back: twice one leg.
+                 |l0| - c = g0/(|l0| + c) without cancellation. */
+              double c = m.sq, lc = copysign (c, l0);
+              double dl = g0 / (fabs (l0) + c);
+              CHP_TRY (chp_leg (&m, l0, g0, lc, 0.0, dl, &o, pth, pta));
+              dtheta *= 2.0;
+              dtau *= 2.0;
+            }
+          else
+            CHP_TRY (chp_leg (&m, l0, g0, l1, g1, Delta, &o, pth, pta));
+        }
+    }
+  if (!isfinite (E1) || !isfinite (H1))
+    return CHAPLYGIN_ERANGE;
+
+  double Dminus = iminus ? Delta : 0.0;
+  double theta1 = in->theta + dtheta;
+  chaplygin_discrete_state r = *in;
+  r.dir = Vminus > 0.0 ? 1 : -1;
+  r.E = E1;
+  r.H = H1;
+  if (want_theta)
+    r.theta = theta1;
+  if (want_tau)
+    r.tau = in->tau + dtau;
+  if (request & CHAPLYGIN_WANT_PEG)
+    {
+      double s, c, shift = iminus ? Delta : -Delta;   /* D- - D+' */
+      sincos (theta1, &s, &c);
+      r.peg[0] = in->peg[0] + shift * c;
+      r.peg[1] = in->peg[1] + shift * s;
+    }
+  if (!chp_finite4 (r.theta, r.tau, r.peg[0], r.peg[1]))
+    return CHAPLYGIN_ERANGE;
+  if (ev)
+    {
+      ev->reversal = reversal;
+      ev->Dc = reversal ? copysign (m.sq, l0) - L0 : 0.0;
+      ev->Dminus = Dminus;
+      ev->Dplus = Delta - Dminus;
+      ev->Vminus = Vminus;
+      ev->dtheta = dtheta;
+      ev->dtau = dtau;
+    }
+  *out = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_state_from_phase: {D+, V+, theta+, Omega+} -> map
+   state: dir = sgn V+, E by (3.3), H by (3.4).  D+ must be 0 for V+ > 0
+   and Delta for V+ < 0 exactly.  Errors: CHAPLYGIN_EINVAL (NULL),
+   CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (V+ = 0 or D+ not the matching end). */
+int
+chaplygin_discrete_state_from_phase (const chaplygin_discrete *sys,
+                                     const double q[4], double tau,
+                                     const double peg[2],
+                                     chaplygin_discrete_state *st)
+{
+  if (!sys || !q || !st)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (q[0], q[1], q[2], q[3]) || !isfinite (tau)
+      || (peg && !chp_finite2 (peg[0], peg[1])))
+    return CHAPLYGIN_EDOM;
+  double V = q[CHAPLYGIN_V], D = q[CHAPLYGIN_D];
+  if (V == 0.0 || (V > 0.0 && D != 0.0) || (V < 0.0 && D != sys->Delta))
+    return CHAPLYGIN_ESTATE;
+  chaplygin_discrete_state s;
+  s.dir = V > 0.0 ? 1 : -1;
+  CHP_TRY (chaplygin_discrete_energy (sys->L0, D, V, q[CHAPLYGIN_OMEGA],
+                                      &s.E));
+  CHP_TRY (chaplygin_discrete_momentum (sys->L0, D, q[CHAPLYGIN_OMEGA],
+                                        &s.H));
+  s.theta = q[CHAPLYGIN_THETA];
+  s.tau = tau;
+  s.peg[0] = peg ? peg[0] : 0.0;
+  s.peg[1] = peg ? peg[1] : 0.0;
+  *st = s;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_state_to_phase: the inverse: D+ from dir,
+   Omega = H/(1 + l^2), V = dir sqrt(2E - H Omega).  Errors: as
+   chaplygin_discrete_step's validation; CHAPLYGIN_ESTATE if V^2 <= 0. */
+int
+chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
+                                   const chaplygin_discrete_state *st,
+                                   double q[4])
+{
+  if (!sys || !st || !q)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (check_state (sys, st));
+  double D = st->dir > 0 ? 0.0 : sys->Delta;
+  double n = chp_one_plus_sq (sys->L0 + D);
+  double Om = st->H / n;
+  double v2 = 2.0 * st->E - st->H * Om;
+  if (!(v2 > 0.0))
+    return CHAPLYGIN_ESTATE;
+  q[CHAPLYGIN_D] = D;
+  q[CHAPLYGIN_V] = st->dir * sqrt (v2);
+  q[CHAPLYGIN_THETA] = st->theta;
+  q[CHAPLYGIN_OMEGA] = Om;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_poincare: (3.5) f = h o p on phase states.
+   p: the motion from just after collision i to just before collision i+1,
+      by (B.1) for V and Omega at the end the peg leaves and by the heading
+      of (B.3)/(B.4) (opt->method);
+   h: the collision rule (3.6).
+   qplus: {D+, V+, theta+, Omega+} with D+ = 0 if V+ > 0, Delta if V+ < 0.
+   Errors: those of chaplygin_discrete_state_from_phase and
+   chaplygin_discrete_step; CHAPLYGIN_EINVAL for NULL. */
+int
+chaplygin_discrete_poincare (const chaplygin_discrete *sys,
+                             const double qplus[4],
+                             const chaplygin_options *opt, double qnext[4],
+                             double *dtau)
+{
+  if (!sys || !qplus || !qnext)
+    return CHAPLYGIN_EINVAL;
+  chaplygin_discrete_state st;
+  chaplygin_discrete_event ev;
+  CHP_TRY (chaplygin_discrete_state_from_phase (sys, qplus, 0.0, NULL, &st));
+  unsigned req = CHAPLYGIN_WANT_THETA | (dtau ? CHAPLYGIN_WANT_TAU : 0u);
+  CHP_TRY (chaplygin_discrete_step (sys, &st, req, opt, &st, &ev));
+
+  /* p: (B.1) from the post-collision state to the end the peg leaves. */
+  double V2, Om;
+  CHP_TRY (chaplygin_discrete_flow (sys->L0, qplus[CHAPLYGIN_D],
+                                    qplus[CHAPLYGIN_V],
+                                    qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2,
+                                    &Om));
+  double qminus[4] = { ev.Dminus, copysign (sqrt (V2), ev.Vminus),
+                       qplus[CHAPLYGIN_THETA] + ev.dtheta, Om };
+  /* h: (3.6). */
+  double q[4];
+  CHP_TRY (chaplygin_discrete_collide (sys->L0, sys->Delta, qminus, q));
+  for (int i = 0; i < 4; i++)
+    qnext[i] = q[i];
+  if (dtau)
+    *dtau = ev.dtau;
+  return CHAPLYGIN_SUCCESS;
+}

@@ -1,0 +1,52 @@
+## tests/local.mk -- Check unit tests: one suite per source file of lib/,
+## one TCase per equation.  Included from the top-level Makefile.am.
+TEST_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS) $(GSL_CFLAGS)
+TEST_LDADD = tests/libtestutil.a lib/libchaplygin-core.la $(CHECK_LIBS) \
+	$(GSL_LIBS) $(CODE_COVERAGE_LIBS) -lm
+
+check_LIBRARIES = tests/libtestutil.a
+tests_libtestutil_a_SOURCES = tests/testutil.c tests/testutil.h
+tests_libtestutil_a_CFLAGS = $(TEST_CFLAGS)
+
+UNIT_CHECKS = \
+	tests/test_status \
+	tests/test_units \
+	tests/test_smooth \
+	tests/test_discrete \
+	tests/test_flow \
+	tests/test_map \
+	tests/test_ellint \
+	tests/test_quad \
+	tests/test_ode
+check_PROGRAMS += $(UNIT_CHECKS)
+TESTS += $(UNIT_CHECKS) tests/concordance.sh
+
+tests_test_status_SOURCES = tests/test_status.c
+tests_test_status_CFLAGS = $(TEST_CFLAGS)
+tests_test_status_LDADD = $(TEST_LDADD)
+tests_test_units_SOURCES = tests/test_units.c
+tests_test_units_CFLAGS = $(TEST_CFLAGS)
+tests_test_units_LDADD = $(TEST_LDADD)
+tests_test_smooth_SOURCES = tests/test_smooth.c tests/ref_smooth.h
+tests_test_smooth_CFLAGS = $(TEST_CFLAGS)
+tests_test_smooth_LDADD = $(TEST_LDADD)
+tests_test_discrete_SOURCES = tests/test_discrete.c
+tests_test_discrete_CFLAGS = $(TEST_CFLAGS)
+tests_test_discrete_LDADD = $(TEST_LDADD)
+tests_test_flow_SOURCES = tests/test_flow.c tests/ref_flow.h
+tests_test_flow_CFLAGS = $(TEST_CFLAGS)
+tests_test_flow_LDADD = $(TEST_LDADD)
+tests_test_map_SOURCES = tests/test_map.c tests/ref_map.h
+tests_test_map_CFLAGS = $(TEST_CFLAGS)
+tests_test_map_LDADD = $(TEST_LDADD)
+tests_test_ellint_SOURCES = tests/test_ellint.c tests/ref_ellint.h
+tests_test_ellint_CFLAGS = $(TEST_CFLAGS)
+tests_test_ellint_LDADD = $(TEST_LDADD)
+tests_test_quad_SOURCES = tests/test_quad.c
+tests_test_quad_CFLAGS = $(TEST_CFLAGS)
+tests_test_quad_LDADD = $(TEST_LDADD)
+tests_test_ode_SOURCES = tests/test_ode.c
+tests_test_ode_CFLAGS = $(TEST_CFLAGS)
+tests_test_ode_LDADD = $(TEST_LDADD)
+
+EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README
