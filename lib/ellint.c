@@ -192,6 +192,11 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
   if (y == 0.0 && sq == 0.0)
     return CHAPLYGIN_ESPIN;
 
+  /* Scale-invariant quantities first, from the unscaled arguments (scaling
+     could underflow sq). */
+  double kp2 = (sq / sp) * (sq / sp);   /* k'^2 = q/p */
+  double s0 = (y == 0.0) ? x / sq : 0.0;        /* tan(mu) when y = 0; may be +Inf */
+
   int e = 0;
   double big = fmax (x, sp);
   if (big > 0x1p250)
@@ -209,7 +214,7 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
   double ay = hypot (y, sp), by = hypot (y, sq);
   double s;
   if (y == 0.0)
-    s = x / sq;                 /* may be +Inf: mu = pi/2, the complete integral */
+    s = s0;                     /* +Inf: mu = pi/2, the complete integral */
   else
     s = dxy * (x + y) * sp / (x * (ay * by) + y * (ax * bx));
 
@@ -222,7 +227,6 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
       sn = s * c;
     }
   double c2 = c * c;
-  double kp2 = (sq / sp) * (sq / sp);   /* k'^2 = q/p */
   double Y = c2 + kp2 * sn * sn;        /* 1 - k^2 sin^2(mu) */
 
   if (F)
