@@ -24,7 +24,9 @@
 
 #include "internal.h"
 
-#define ODE_MAX_STEPS 1000000
+/* A leg needs O(100) steps; even a motion within 1e-16 of the spinning
+   state needs O(1000) (the approach is exponential in time). */
+#define ODE_MAX_STEPS 100000
 
 struct ode_params
 {
@@ -126,8 +128,9 @@ integrate_to (struct integrator *it, gsl_odeiv2_system *sys, double *x,
    changes sign and D also leaves the interval is undone and retaken in
    eighths, so that the Henon stretch never contains a turning point.
    Errors: CHAPLYGIN_ENOCONV if a step fails or ODE_MAX_STEPS are taken
-   (e.g. a motion creeping towards the spinning state); CHAPLYGIN_ENOMEM if
-   an allocation returns NULL. */
+   (e.g. a motion creeping towards the spinning state); CHAPLYGIN_ESTATE at
+   rest; CHAPLYGIN_ERANGE if the energy overflows; CHAPLYGIN_ENOMEM if an
+   allocation returns NULL. */
 int
 chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
                int stop_at_turn, double tol, double q1[4], double *tau,
@@ -136,8 +139,10 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
   double l0 = L0 + q0[CHAPLYGIN_D];
   double twoE = q0[CHAPLYGIN_V] * q0[CHAPLYGIN_V]
     + chp_one_plus_sq (l0) * q0[CHAPLYGIN_OMEGA] * q0[CHAPLYGIN_OMEGA];
-  if (!(twoE > 0.0) || !isfinite (twoE))
+  if (!isfinite (twoE))
     return CHAPLYGIN_ERANGE;
+  if (!(twoE > 0.0))
+    return CHAPLYGIN_ESTATE;    /* at rest: no event is ever reached */
   double lambda = 1.0 / sqrt (twoE);    /* velocity scale */
 
   double D0 = q0[CHAPLYGIN_D];
