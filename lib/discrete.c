@@ -136,14 +136,15 @@ chaplygin_discrete_collide (double L0, double Delta, const double qminus[4],
 /* The (3.7) coefficients for the collision at which the peg leaves Dminus:
    E+ = E- + C1 H-^2, H+ = C2 H-, with b = L0 + D-, b' = L0 + Delta - D-:
    C1 = -Delta^2 / (2 (1 + b^2)^2 (1 + b'^2)),  C2 = (1 + b b')/(1 + b^2).
-   C1 is formed as -(Delta/(1 + b^2))^2/(2 (1 + b'^2)) to avoid overflow. */
+   C1 is formed as -t^2/2, t = (Delta/(1 + b^2))/sqrt(1 + b'^2), so that no
+   intermediate overflows while C1 is representable. */
 void
 chp_collision_coefficients (double L0, double Delta, double Dminus,
                             double *C1, double *C2)
 {
   double b = L0 + Dminus, bp = L0 + (Delta - Dminus);
-  double r = Delta / chp_one_plus_sq (b);
-  *C1 = -0.5 * r * r / chp_one_plus_sq (bp);
+  double t = (Delta / chp_one_plus_sq (b)) / hypot (1.0, bp);
+  *C1 = -0.5 * t * t;
   *C2 = chp_collision_ratio (L0, Delta, b);
 }
 
