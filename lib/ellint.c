@@ -170,8 +170,9 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
    every term nonnegative.  All of this was checked against direct
    quadrature at 40 digits (mpmath) before it was written in C.
    Scaling: I and T are homogeneous (t, sqrt p, sqrt q) -> lambda (...),
-   F of degree 0 and T of degree 1; arguments above 2^250 are scaled by a
-   power of two to keep the products below 2^750.
+   F of degree 0 and T of degree 1.  Only tan(mu) multiplies three such
+   quantities; for arguments above 2^250 it is evaluated on a copy scaled
+   by a power of two (exactly), everything else as given.
    Special cases: x = y gives 0; y = 0 gives s = x/sqrt(q); y = q = 0 is the
    divergent integral of the spinning state: CHAPLYGIN_ESPIN.
    Accuracy: see the manual's accuracy tables (measured against 256-bit
@@ -192,31 +193,26 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
   if (y == 0.0 && sq == 0.0)
     return CHAPLYGIN_ESPIN;
 
-  /* Scale-invariant quantities first, from the unscaled arguments (scaling
-     could underflow sq). */
-  double kp2 = (sq / sp) * (sq / sp);   /* k'^2 = q/p */
-  double s0 = (y == 0.0) ? x / sq : 0.0;        /* tan(mu) when y = 0; may be +Inf */
-
-  int e = 0;
-  double big = fmax (x, sp);
-  if (big > 0x1p250)
-    {
-      frexp (big, &e);
-      x = ldexp (x, -e);
-      y = ldexp (y, -e);
-      dxy = ldexp (dxy, -e);
-      sp = ldexp (sp, -e);
-      sq = ldexp (sq, -e);
-      pmq = ldexp (pmq, -2 * e);
-    }
-
-  double ax = hypot (x, sp), bx = hypot (x, sq);
-  double ay = hypot (y, sp), by = hypot (y, sq);
-  double s;
+  /* Everything below is scale invariant (degree 0 in t, sqrt p, sqrt q)
+     except dxy and pmq/sp, which carry the dimension of T; so all of it is
+     formed from the arguments as given, and only the products inside
+     tan(mu) are evaluated on a copy scaled by a power of two. */
+  const double ax = hypot (x, sp), bx = hypot (x, sq);
+  const double ay = hypot (y, sp), by = hypot (y, sq);
+  double s;                     /* tan(mu) */
   if (y == 0.0)
-    s = s0;                     /* +Inf: mu = pi/2, the complete integral */
-  else
+    s = x / sq;                 /* may be +Inf: mu = pi/2, the complete integral */
+  else if (fmax (x, sp) <= 0x1p250)
     s = dxy * (x + y) * sp / (x * (ay * by) + y * (ax * bx));
+  else
+    {
+      int e;
+      frexp (fmax (x, sp), &e);
+      double xs = ldexp (x, -e), ys = ldexp (y, -e), ds = ldexp (dxy, -e);
+      double ps = ldexp (sp, -e), qs = ldexp (sq, -e);
+      s = ds * (xs + ys) * ps / (xs * (hypot (ys, ps) * hypot (ys, qs))
+                                 + ys * (hypot (xs, ps) * hypot (xs, qs)));
+    }
 
   double c, sn;                 /* cos(mu), sin(mu) */
   if (isinf (s))
@@ -226,8 +222,9 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
       c = 1.0 / hypot (1.0, s);
       sn = s * c;
     }
-  double c2 = c * c;
-  double Y = c2 + kp2 * sn * sn;        /* 1 - k^2 sin^2(mu) */
+  const double c2 = c * c;
+  const double kp2 = (sq / sp) * (sq / sp);     /* k'^2 = q/p */
+  const double Y = c2 + kp2 * sn * sn;          /* 1 - k^2 sin^2(mu) */
 
   if (F)
     {
@@ -239,15 +236,17 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
     {
       double rd;
       CHP_TRY (chp_rd (c2, Y, 1.0, prec, &rd));
+      /* (x + y)/(A(x) + A(y)), A(t) = t sqrt((t^2 + p)/(t^2 + q)) */
       double Ax = x * (ax / bx);
       double Ay = (y == 0.0) ? 0.0 : y * (ay / by);
-      double bx2 = bx * bx, by2 = by * by;
-      double corr = (sq == 0.0) ? 0.0 : (sq * sq * pmq / bx2) / by2;
-      double term1 = dxy * ((x + y) / (Ax + Ay)) * (1.0 + corr);
-      double term2 = (y == 0.0) ? 0.0
-        : (pmq / sp) * (x / bx) * (y / by) * sn;
+      double ratio = (x + y) / (Ax + Ay);
+      /* q (p - q)/((x^2 + q)(y^2 + q)), evaluated so that it neither
+         overflows nor forms 0/0 (by > 0 here: y = q = 0 was excluded) */
+      double corr = (sq == 0.0) ? 0.0 : (sq / bx) * (sq / bx) * pmq / by / by;
+      double term1 = dxy * ratio * (1.0 + corr);
+      double term2 = (y == 0.0) ? 0.0 : (pmq / sp) * (x / bx) * (y / by) * sn;
       double term3 = (pmq / (3.0 * sp)) * (sn * sn * sn) * rd;
-      *T = ldexp (term1 + term2 + term3, e);
+      *T = term1 + term2 + term3;
     }
   return CHAPLYGIN_SUCCESS;
 }

@@ -74,44 +74,72 @@ chp_motion_g (const chp_motion *m, double l)
 
 /* ---- quadrature integrands (the paper's, in l; in u near turning points) */
 
+/* The integration variable t runs from 0 over an interval whose width is
+   known exactly; the physical variable is base + dir t, so that rounding
+   only perturbs where the integrand is evaluated, never the width. */
 struct quad_par
 {
   const chp_motion *m;
+  double base, dir;
 };
 
 /* Regime A, variable l: |dtheta/dl| / |h| = 1/sqrt((1 + l^2) g(l)). */
 static double
-qa_theta (double l, void *p)
+qa_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
+  double l = qp->base + qp->dir * t;
   return 1.0 / sqrt (chp_one_plus_sq (l) * chp_motion_g (qp->m, l));
 }
 
 /* Regime A: sqrt(2E) dtau/dl = sqrt((1 + l^2)/g(l)). */
 static double
-qa_tau (double l, void *p)
+qa_tau (double t, void *p)
 {
   const struct quad_par *qp = p;
+  double l = qp->base + qp->dir * t;
   return sqrt (chp_one_plus_sq (l) / chp_motion_g (qp->m, l));
 }
 
 /* Regime B, variable u with |l| = c + u^2, g = u^2 (|l| + c):
    |dtheta/du| / |h| = 2/sqrt((1 + l^2)(|l| + c)). */
 static double
-qb_theta (double u, void *p)
+qb_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
+  double u = qp->base + qp->dir * t;
   double c = qp->m->sq, al = c + u * u;
   return 2.0 / sqrt (chp_one_plus_sq (al) * (al + c));
 }
 
 /* Regime B: sqrt(2E) dtau/du = 2 sqrt((1 + l^2)/(|l| + c)). */
 static double
-qb_tau (double u, void *p)
+qb_tau (double t, void *p)
 {
   const struct quad_par *qp = p;
+  double u = qp->base + qp->dir * t;
   double c = qp->m->sq, al = c + u * u;
   return 2.0 * sqrt (chp_one_plus_sq (al) / (al + c));
+}
+
+/* Integrate the heading and time integrands F_th, F_ta over t in [a, b]. */
+static int
+quad_pair (double (*f_th) (double, void *), double (*f_ta) (double, void *),
+           struct quad_par *qp, double a, double b, double tol, double *th,
+           double *ta)
+{
+  double r;
+  if (th)
+    {
+      CHP_TRY (chp_integrate (f_th, qp, a, b, tol, &r));
+      *th += r;
+    }
+  if (ta)
+    {
+      CHP_TRY (chp_integrate (f_ta, qp, a, b, tol, &r));
+      *ta += r;
+    }
+  return CHAPLYGIN_SUCCESS;
 }
 
 /* chp_leg: heading and time along one leg from la to lb.
@@ -183,51 +211,35 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
       return CHAPLYGIN_SUCCESS;
     }
 
-  /* Quadrature. */
-  struct quad_par qp = { m };
-  double mag_h = fabs (m->h);
+  /* Quadrature, over an interval of exactly known width. */
+  struct quad_par qp = { m, 0.0, 1.0 };
+  double *qF = dtheta ? &F : NULL, *qT = dtau ? &T : NULL;
   if (m->omh2 >= 0.0)
     {
-      double lo = fmin (la, lb), hi = fmax (la, lb);
-      double cuts[3] = { lo, hi, hi };
-      int n = 1;
-      if (lo < 0.0 && hi > 0.0)
+      /* l = la + dir t, t in [0, dl]; split where l = 0 (t = |la|), where
+         the integrand peaks. */
+      qp.base = la;
+      qp.dir = chp_sign (lb - la);
+      if (la * lb < 0.0)
         {
-          cuts[1] = 0.0;
-          n = 2;
+          CHP_TRY (quad_pair (qa_theta, qa_tau, &qp, 0.0, aa, opt->tol, qF, qT));
+          CHP_TRY (quad_pair (qa_theta, qa_tau, &qp, aa, dl, opt->tol, qF, qT));
         }
-      for (int i = 0; i < n; i++)
-        {
-          double r;
-          if (dtheta)
-            {
-              CHP_TRY (chp_integrate (qa_theta, &qp, cuts[i], cuts[i + 1],
-                                      opt->tol, &r));
-              F += r;
-            }
-          if (dtau)
-            {
-              CHP_TRY (chp_integrate (qa_tau, &qp, cuts[i], cuts[i + 1],
-                                      opt->tol, &r));
-              T += r;
-            }
-        }
-      F *= mag_h;
+      else
+        CHP_TRY (quad_pair (qa_theta, qa_tau, &qp, 0.0, dl, opt->tol, qF, qT));
     }
   else
     {
+      /* u = sqrt(|l| - c), |l| - c = g/(|l| + c) without cancellation, and
+         u_b - u_a = (|lb| - |la|)/(u_a + u_b) = +-dl/(u_a + u_b). */
       double c = m->sq;
-      /* u = sqrt(|l| - c), |l| - c = g/(|l| + c) without cancellation. */
       double ua = sqrt (ga / (aa + c)), ub = sqrt (gb / (ab + c));
-      double lo = fmin (ua, ub), hi = fmax (ua, ub);
-      if (dtheta)
-        {
-          CHP_TRY (chp_integrate (qb_theta, &qp, lo, hi, opt->tol, &F));
-          F *= mag_h;
-        }
-      if (dtau)
-        CHP_TRY (chp_integrate (qb_tau, &qp, lo, hi, opt->tol, &T));
+      qp.base = ua;
+      qp.dir = chp_sign (ab - aa);
+      CHP_TRY (quad_pair (qb_theta, qb_tau, &qp, 0.0, dl / (ua + ub), opt->tol,
+                          qF, qT));
     }
+  F *= fabs (m->h);
   if (dtheta)
     *dtheta = chp_sign (m->H) * F;
   if (dtau)
@@ -245,9 +257,12 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
    factored difference of squares, so only V0^2 + (...) can cancel, which is
    the conditioning of V near a turning point, not of the formula.
    Accuracy: a few ulps of the terms (no division by small quantities).
+   Reachability: V^2 is smallest at l = 0, so D is reached (before or after
+   reversals) iff V(D)^2 >= 0 and, when the path from D0 to D crosses l = 0,
+   V^2 > 0 there.
    Errors: CHAPLYGIN_EINVAL for NULL outputs; CHAPLYGIN_EDOM for non-finite
-   input; CHAPLYGIN_ESTATE if V(D)^2 < 0 (D lies beyond a turning point and
-   is never reached); CHAPLYGIN_ERANGE on overflow. */
+   input; CHAPLYGIN_ESTATE if D is never reached (V(D)^2 < 0, or a turning
+   point lies between D0 and D); CHAPLYGIN_ERANGE on overflow. */
 int
 chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
                          double D, double *V2, double *Omega)
@@ -265,6 +280,11 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
   if (!isfinite (v2) || !isfinite (om))
     return CHAPLYGIN_ERANGE;
   if (v2 < 0.0)
+    return CHAPLYGIN_ESTATE;
+  /* V^2 is smallest where l = 0: a path that crosses l = 0 must have
+     V^2 > 0 there, or D lies beyond a turning point (or the spinning
+     point) although V(D)^2 >= 0. */
+  if (l0 * l < 0.0 && !(V0 * V0 - l0 * l0 * n0 * Omega0 * Omega0 > 0.0))
     return CHAPLYGIN_ESTATE;
   *V2 = v2;
   *Omega = om;

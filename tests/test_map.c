@@ -1,2 +1,505 @@
+/* test_map.c -- lib/map.c: the Poincare map (3.5), the return map (B.3),
+   (B.4) and the turning points (B.5). */
+#include <config.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "internal.h"
+#include "ref_map.h"
 #include "testutil.h"
-int main(void){return 0;}
+
+#define NREF (sizeof ref_map / sizeof ref_map[0])
+
+static const chaplygin_options CLOSED = { CHAPLYGIN_CLOSED_FORM, 1e-13, CHAPLYGIN_PREC_DOUBLE };
+static const chaplygin_options QUAD = { CHAPLYGIN_QUADRATURE, 1e-14, CHAPLYGIN_PREC_DOUBLE };
+static const chaplygin_options ODE = { CHAPLYGIN_ODE, 1e-13, CHAPLYGIN_PREC_DOUBLE };
+
+typedef __float128 q128;
+
+/* (B.3) and (B.4) as printed, in binary128. */
+static void
+printed_coefficients (double L0, double Delta, double Dp, int reversal,
+                      double *C1, double *C2)
+{
+  q128 a = (q128) L0 + (Delta - Dp), b = (q128) L0 + Dp;    /* L0 + Delta - D+, L0 + D+ */
+  q128 num = 1 + (q128) L0 * ((q128) L0 + Delta);
+  if (!reversal)
+    {
+      *C1 = (double) (-(q128) Delta * Delta / (2 * (1 + a * a) * (1 + a * a) * (1 + b * b)));
+      *C2 = (double) (num / (1 + a * a));
+    }
+  else
+    {
+      *C1 = (double) (-(q128) Delta * Delta / (2 * (1 + b * b) * (1 + b * b) * (1 + a * a)));
+      *C2 = (double) (num / (1 + b * b));
+    }
+}
+
+START_TEST (test_init_coefficients)
+{
+  /* Route: the printed (B.3)/(B.4) in binary128 against the library's
+     (3.7)-based coefficients, for both ends and both cases. */
+  tu_rng r;
+  tu_rng_seed (&r, 303);
+  for (int k = 0; k < 5000; k++)
+    {
+      double L0 = tu_uniform (&r, -4, 4), Dl = tu_uniform (&r, 0.01, 6);
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Dl));
+      for (int rev = 0; rev < 2; rev++)
+        for (int e = 0; e < 2; e++)
+          {
+            double Dp = e ? Dl : 0.0, C1, C2, P1, P2;
+            ck_assert_ok (chaplygin_discrete_coefficients (L0, Dl, Dp, rev, &C1, &C2));
+            printed_coefficients (L0, Dl, Dp, rev, &P1, &P2);
+            /* a few roundings; b = fl(L0 + Delta) perturbs 1 + b^2 by eps */
+            ck_assert_rel (C1, P1, 8 * DBL_EPSILON);
+            ck_assert_rel (C2, P2, 4 * DBL_EPSILON);
+            /* the system caches them by the end the peg leaves */
+            int iminus = rev ? e : 1 - e;
+            ck_assert (sys.C1[iminus] == C1 && sys.C2[iminus] == C2);
+          }
+    }
+  chaplygin_discrete sys;
+  double C1, C2;
+  ck_assert_status (chaplygin_discrete_init (&sys, 1.0, 0.0), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_init (&sys, NAN, 1.0), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_init (NULL, 1.0, 1.0), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_coefficients (1, 1, 0.5, 0, &C1, &C2), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_coefficients (1, 1, 0, 2, &C1, &C2), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_coefficients (1, -1, 0, 0, &C1, &C2), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_coefficients (1, 1, NAN, 0, &C1, &C2), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_coefficients (1, 1, 0, 0, NULL, &C2), CHAPLYGIN_EINVAL);
+}
+END_TEST
+
+/* Tolerances against the 40-digit reference segments (make_refs.py):
+   E', H': (3.7) from rounded E, H: 8 eps (of E, resp. H');
+   heading and time: 16 eps (test_ellint) times (1 + kappa), kappa the
+   condition number of g(l) = l^2 + 1 - h^2 at the ends and at the
+   start (a turning point near an end amplifies the rounding of E, H);
+   quadrature 1e-13 (1 + kappa), ODE 1e-10 (1 + kappa). */
+static double
+segment_kappa (int i)
+{
+  double E = ref_map[i].E, H = ref_map[i].H, om = 1 - H * H / (2 * E);
+  double k = 0;
+  for (int e = 0; e < 2; e++)
+    {
+      double l = ref_map[i].L0 + (e ? ref_map[i].Delta : 0.0);
+      k = fmax (k, (l * l + fabs (om)) / fabs (l * l + om));
+    }
+  return k;
+}
+
+static void
+check_segment (int i, const chaplygin_options *o, double tol_angle)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, ref_map[i].L0, ref_map[i].Delta));
+  chaplygin_discrete_state in = { ref_map[i].dir, ref_map[i].E, ref_map[i].H, 0.125, 2.0,
+                                  { 0.0, 0.0 } }, out;
+  chaplygin_discrete_event ev;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_ALL, o, &out, &ev));
+  double kappa = segment_kappa (i);
+  ck_assert_int_eq (ev.reversal, ref_map[i].reversal);
+  ck_assert_int_eq (out.dir, ref_map[i].dir1);
+  double tolE = o->method == CHAPLYGIN_ODE ? 1e-10 * (1 + kappa) : 8 * DBL_EPSILON;
+  ck_assert_msg (fabs (out.E - ref_map[i].E1) <= tolE * ref_map[i].E,
+                 "E' %.17g, reference %.17g", out.E, ref_map[i].E1);
+  ck_assert_rel (out.H, ref_map[i].H1, o->method == CHAPLYGIN_ODE ? 1e-10 * (1 + kappa) : 8 * DBL_EPSILON);
+  ck_assert_rel (ev.dtheta, ref_map[i].dtheta, tol_angle * (1 + kappa));
+  ck_assert_rel (ev.dtau, ref_map[i].dtau, tol_angle * (1 + kappa));
+  ck_assert (out.theta == 0.125 + ev.dtheta);
+  ck_assert (out.tau == 2.0 + ev.dtau);
+  if (ref_map[i].reversal)
+    ck_assert_rel (ev.Dc, ref_map[i].Dc, 64 * DBL_EPSILON * (1 + kappa));
+  /* the end the peg leaves, and the new peg's end */
+  double Dm = ref_map[i].reversal ? (ref_map[i].dir > 0 ? 0.0 : ref_map[i].Delta)
+    : (ref_map[i].dir > 0 ? ref_map[i].Delta : 0.0);
+  ck_assert (ev.Dminus == Dm && ev.Dplus == ref_map[i].Delta - Dm);
+  ck_assert (ev.Vminus * out.dir > 0);
+}
+
+START_TEST (test_step_reference)
+{
+  const int i = _i;
+  check_segment (i, &CLOSED, 16 * DBL_EPSILON);
+  check_segment (i, &QUAD, 1e-13);
+  check_segment (i, &ODE, 1e-10);
+}
+END_TEST
+
+START_TEST (eq_B_3)
+{
+  /* The no-reversal rows of the reference table, each method; and the
+     printed f3 of (B.3), which for a backward motion (D+ = Delta) is the
+     integral from Delta to 0, negative for H > 0 (erratum E10): the
+     library's heading has the sign of H. */
+  int seen = 0;
+  for (size_t i = 0; i < NREF; i++)
+    if (!ref_map[i].reversal)
+      {
+        check_segment ((int) i, &CLOSED, 16 * DBL_EPSILON);
+        seen++;
+        if (ref_map[i].dir < 0 && ref_map[i].H > 0)
+          ck_assert (ref_map[i].dtheta > 0);
+      }
+  ck_assert_int_ge (seen, 10);
+}
+END_TEST
+
+START_TEST (eq_B_4)
+{
+  /* The reversal rows: the motion turns at D_c (root-finding in the
+     reference, not (B.5)) and the heading is twice the leg to D_c. */
+  int seen = 0;
+  for (size_t i = 0; i < NREF; i++)
+    if (ref_map[i].reversal)
+      {
+        check_segment ((int) i, &CLOSED, 16 * DBL_EPSILON);
+        seen++;
+      }
+  ck_assert_int_ge (seen, 10);
+}
+END_TEST
+
+START_TEST (eq_B_5)
+{
+  /* Route 1: at each D_c, (B.1) gives V^2 = 0 to rounding (relative to
+     2E).  Route 2: the root-finding turning points of the reference. */
+  tu_rng r;
+  tu_rng_seed (&r, 505);
+  int n2 = 0;
+  for (int k = 0; k < 2000; k++)
+    {
+      double L0 = tu_uniform (&r, -2, 2), E = tu_uniform (&r, 0.1, 2), H = tu_uniform (&r, -3, 3);
+      int nr, ns;
+      double Dc[2];
+      ck_assert_ok (chaplygin_discrete_turning_points (L0, 1.0, E, H, &nr, Dc, &ns));
+      ck_assert_int_eq (nr, H * H > 2 * E ? 2 : 0);
+      int in = 0;
+      for (int j = 0; j < nr; j++)
+        {
+          double l = L0 + Dc[j];
+          /* V^2 = 2E - H^2/(1 + l^2): zero up to the conditioning of the
+             root, which is 2E/(l * dV^2/dl * ...) ~ (1 + l^2)/l^2 */
+          double v2 = 2 * E - H * H / (1 + l * l);
+          ck_assert_msg (fabs (v2) <= 64 * DBL_EPSILON * 2 * E * (1 + 1 / (l * l)),
+                         "V^2 = %g at D_c = %.17g", v2, Dc[j]);
+          if (Dc[j] >= 0 && Dc[j] <= 1.0)
+            in++;
+        }
+      if (nr == 2)
+        n2++, ck_assert (Dc[0] < Dc[1]);
+      ck_assert_int_eq (ns, in);
+    }
+  ck_assert_int_ge (n2, 300);
+  for (size_t i = 0; i < NREF; i++)
+    if (ref_map[i].reversal)
+      {
+        int nr, ns;
+        double Dc[2];
+        ck_assert_ok (chaplygin_discrete_turning_points (ref_map[i].L0, ref_map[i].Delta,
+                                                         ref_map[i].E, ref_map[i].H, &nr, Dc, &ns));
+        ck_assert_int_eq (nr, 2);
+        double best = fmin (fabs (Dc[0] - ref_map[i].Dc), fabs (Dc[1] - ref_map[i].Dc));
+        ck_assert_msg (best <= 1e-13 * (1 + fabs (ref_map[i].Dc)) * (1 + segment_kappa ((int) i)),
+                       "D_c %.17g %.17g vs %.17g", Dc[0], Dc[1], ref_map[i].Dc);
+      }
+  /* The double root: 2E = H^2 gives D_c = -L0 once. */
+  int nr, ns;
+  double Dc[2] = { 7, 7 };
+  ck_assert_ok (chaplygin_discrete_turning_points (-0.25, 1.0, 0.78125, 1.25, &nr, Dc, &ns));
+  ck_assert (nr == 1 && Dc[0] == 0.25 && ns == 1);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 0.0, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 0, 1, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_turning_points (NAN, 1, 1, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1e200, &nr, Dc, &ns), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1, NULL, Dc, &ns), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1, &nr, NULL, &ns), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1, &nr, Dc, NULL), CHAPLYGIN_EINVAL);
+}
+END_TEST
+
+START_TEST (eq_3_5)
+{
+  /* The Poincare map in phase form, f = h o p with p from (B.1)-(B.2) and
+     h = (3.6), against the (E, H) return map (B.3)/(B.4) converted to
+     phase form: two routes through different formulas ((3.6) vs (3.7)).
+     And against the ODE method (integration of (3.1), then (3.6)). */
+  tu_rng r;
+  tu_rng_seed (&r, 35);
+  for (int k = 0; k < 300; k++)
+    {
+      double L0 = tu_uniform (&r, -2, 2), Dl = tu_uniform (&r, 0.1, 2);
+      double V = tu_uniform (&r, -1.5, 1.5), Om = tu_uniform (&r, -2, 2);
+      if (V == 0)
+        continue;
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Dl));
+      double q[4] = { V > 0 ? 0.0 : Dl, V, 0.3, Om }, qn[4], qo[4], dt, dto;
+      int st = chaplygin_discrete_poincare (&sys, q, &CLOSED, qn, &dt);
+      if (st == CHAPLYGIN_ESPIN)
+        continue;
+      ck_assert_ok (st);
+      chaplygin_discrete_state s, s1;
+      ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &s));
+      ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, NULL, &s1, NULL));
+      double q1[4];
+      ck_assert_ok (chaplygin_discrete_state_to_phase (&sys, &s1, q1));
+      ck_assert (qn[CHAPLYGIN_D] == q1[CHAPLYGIN_D]);
+      /* V from sqrt(2E' - H' Omega') (a difference) vs V- from (B.1): the
+         former is conditioned by (2E')/V'^2. */
+      double kappa = 2 * s1.E / (q1[1] * q1[1]);
+      ck_assert_rel (qn[CHAPLYGIN_V], q1[CHAPLYGIN_V], 16 * DBL_EPSILON * kappa);
+      ck_assert_rel (qn[CHAPLYGIN_THETA], q1[CHAPLYGIN_THETA], 4 * DBL_EPSILON);
+      ck_assert_rel (qn[CHAPLYGIN_OMEGA], q1[CHAPLYGIN_OMEGA], 8 * DBL_EPSILON);
+      ck_assert_rel (dt, s1.tau, 0.0);
+      ck_assert_ok (chaplygin_discrete_poincare (&sys, q, &ODE, qo, &dto));
+      ck_assert (qo[CHAPLYGIN_D] == qn[CHAPLYGIN_D]);
+      for (int j = 1; j < 4; j++)
+        ck_assert_msg (fabs (qo[j] - qn[j]) <= 1e-10 * kappa * (1 + fabs (qn[j])),
+                       "component %d: ODE %.17g closed %.17g", j, qo[j], qn[j]);
+      ck_assert_rel (dto, dt, 1e-10 * kappa);
+    }
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, 0.5, 1.0));
+  double q[4] = { 0.0, -1.0, 0.0, 1.0 }, qn[4] = { 9, 9, 9, 9 };
+  ck_assert_status (chaplygin_discrete_poincare (&sys, q, NULL, qn, NULL), CHAPLYGIN_ESTATE);
+  q[0] = 1.0, q[1] = 0.0;
+  ck_assert_status (chaplygin_discrete_poincare (&sys, q, NULL, qn, NULL), CHAPLYGIN_ESTATE);
+  q[1] = NAN;
+  ck_assert_status (chaplygin_discrete_poincare (&sys, q, NULL, qn, NULL), CHAPLYGIN_EDOM);
+  ck_assert (qn[0] == 9 && qn[1] == 9 && qn[2] == 9 && qn[3] == 9);
+  ck_assert_status (chaplygin_discrete_poincare (NULL, q, NULL, qn, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_poincare (&sys, NULL, NULL, qn, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_poincare (&sys, q, NULL, NULL, NULL), CHAPLYGIN_EINVAL);
+}
+END_TEST
+
+/* Iterate N collisions with the closed form and with the ODE method from
+   the same phase state; return the worst discrepancy (relative where the
+   quantity exceeds 1, absolute otherwise) and count reversals. */
+static double
+compare_runs (double L0, double Dl, double V, double Om, int N, int *reversals)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, L0, Dl));
+  double q[4] = { V > 0 ? 0.0 : Dl, V, 0.0, Om };
+  chaplygin_discrete_state a, b;
+  ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &a));
+  b = a;
+  double worst = 0;
+  for (int n = 0; n < N; n++)
+    {
+      chaplygin_discrete_event ea, eb;
+      ck_assert_ok (chaplygin_discrete_step (&sys, &a, CHAPLYGIN_WANT_ALL, &CLOSED, &a, &ea));
+      ck_assert_ok (chaplygin_discrete_step (&sys, &b, CHAPLYGIN_WANT_ALL, &ODE, &b, &eb));
+      ck_assert_int_eq (ea.reversal, eb.reversal);
+      ck_assert_int_eq (a.dir, b.dir);
+      *reversals += ea.reversal;
+      const double x[6] = { a.E, a.H, a.theta, a.tau, a.peg[0], a.peg[1] };
+      const double y[6] = { b.E, b.H, b.theta, b.tau, b.peg[0], b.peg[1] };
+      for (int j = 0; j < 6; j++)
+        worst = fmax (worst, fabs (x[j] - y[j]) / fmax (1.0, fabs (x[j])));
+    }
+  return worst;
+}
+
+START_TEST (test_map_vs_integration)
+{
+  /* The issue's acceptance test: the return map agrees with direct
+     integration of (3.1) (rk8pd, exact event location, collisions by (3.6))
+     to <= 1e-10 over 20 collisions, on set-ups with velocity reversals:
+     Figure 3's (L0 = -1/2, Delta = 1), Figure 5's (L0 = -1, Delta = 1/3),
+     Figure 9's ratios (L0/Delta = -0.55, 1/Delta^2 = 0.001) and Figure 7's
+     (L0/Delta = -2/3, 1/Delta^2 = 0.08), plus random ones. */
+  struct
+  {
+    double L0, Dl, V, Om;
+  } setups[] = {
+    { -0.5, 1.0, 0.3, 0.8 },
+    { -0.5, 1.0, 1.0, 0.8 },
+    { -1.0, 1.0 / 3, 1.0, 0.5 },
+    { -0.55 * 31.622776601683793, 31.622776601683793, 1.0, 0.02 },
+    { -2.0 / 3 * 3.5355339059327378, 3.5355339059327378, 1.0, 0.2 },
+    { 1.0, 1.0 / 3, -1.0, 0.5 },
+  };
+  int reversals = 0;
+  double worst = 0;
+  for (size_t k = 0; k < sizeof setups / sizeof setups[0]; k++)
+    worst = fmax (worst, compare_runs (setups[k].L0, setups[k].Dl, setups[k].V,
+                                       setups[k].Om, 20, &reversals));
+  tu_rng r;
+  tu_rng_seed (&r, 2020);
+  for (int k = 0; k < 10; k++)
+    {
+      double L0 = tu_uniform (&r, -1.5, 0.5), Dl = tu_uniform (&r, 0.3, 2);
+      worst = fmax (worst, compare_runs (L0, Dl, tu_uniform (&r, 0.2, 1.5),
+                                         tu_uniform (&r, -1.5, 1.5), 20, &reversals));
+    }
+  fprintf (stderr, "# map vs integration of (3.1): 16 runs x 20 collisions, %d reversals, "
+           "worst discrepancy %.3g\n", reversals, worst);
+  ck_assert_int_ge (reversals, 10);
+  ck_assert_msg (worst <= 1e-10, "worst discrepancy %g", worst);
+}
+END_TEST
+
+START_TEST (test_requests_and_conventions)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 0.5));
+  chaplygin_discrete_state s = { 1, 0.75, 1.0, 0.3, 4.0, { 1.0, -2.0 } }, a, b;
+  chaplygin_discrete_event ea, eb;
+  /* Nothing requested beyond E, H: theta, tau, peg are copied unchanged;
+     E, H are bit-identical to the full request. */
+  ck_assert_ok (chaplygin_discrete_step (&sys, &s, 0, NULL, &a, &ea));
+  ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, NULL, &b, &eb));
+  ck_assert (a.E == b.E && a.H == b.H && a.dir == b.dir);
+  ck_assert (a.theta == 0.3 && a.tau == 4.0 && a.peg[0] == 1.0 && a.peg[1] == -2.0);
+  ck_assert (ea.dtheta == 0.0 && ea.dtau == 0.0);
+  /* PEG implies THETA */
+  ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_PEG, NULL, &a, NULL));
+  ck_assert (a.theta == b.theta && a.tau == 4.0 && a.peg[0] == b.peg[0]);
+  /* TAU alone */
+  ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_TAU, NULL, &a, NULL));
+  ck_assert (a.theta == 0.3 && a.tau == b.tau);
+  /* in place */
+  a = s;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &a, CHAPLYGIN_WANT_ALL, NULL, &a, NULL));
+  ck_assert (a.E == b.E && a.theta == b.theta && a.peg[1] == b.peg[1]);
+
+  /* Conventions (manual): with H = 0 the skate moves straight; forward
+     (dir = +1) the new peg is Delta ahead along (cos, sin)(theta),
+     backward Delta behind; theta is unchanged. */
+  chaplygin_discrete_state f = { 1, 0.5, 0.0, 0.6, 0.0, { 0.0, 0.0 } };
+  ck_assert_ok (chaplygin_discrete_step (&sys, &f, CHAPLYGIN_WANT_ALL, NULL, &a, &ea));
+  ck_assert_rel (a.peg[0], 0.5 * cos (0.6), DBL_EPSILON);
+  ck_assert_rel (a.peg[1], 0.5 * sin (0.6), DBL_EPSILON);
+  ck_assert (a.theta == 0.6 && a.dir == 1 && !ea.reversal);
+  ck_assert_rel (a.tau, 0.5, DBL_EPSILON);       /* V = 1 */
+  f.dir = -1;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &f, CHAPLYGIN_WANT_ALL, NULL, &a, &ea));
+  ck_assert_rel (a.peg[0], -0.5 * cos (0.6), DBL_EPSILON);
+  ck_assert_rel (a.peg[1], -0.5 * sin (0.6), DBL_EPSILON);
+  ck_assert (ea.Dminus == 0.0 && ea.Dplus == 0.5 && a.dir == -1);
+  /* theta advances with the sign of H, forward or backward */
+  chaplygin_discrete_state g = { -1, 0.8, 0.7, 0.0, 0.0, { 0, 0 } };
+  ck_assert_ok (chaplygin_discrete_step (&sys, &g, CHAPLYGIN_WANT_THETA, NULL, &a, NULL));
+  ck_assert (a.theta > 0);
+  g.H = -0.7;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &g, CHAPLYGIN_WANT_THETA, NULL, &a, NULL));
+  ck_assert (a.theta < 0);
+  /* A reversal: the peg returns to its start and the next goes in at the
+     other end, behind (forward start) -- Figure 3's set-up. */
+  chaplygin_discrete sys3;
+  ck_assert_ok (chaplygin_discrete_init (&sys3, -0.5, 1.0));
+  double q[4] = { 0.0, 0.3, 0.0, 0.8 };
+  ck_assert_ok (chaplygin_discrete_state_from_phase (&sys3, q, 0.0, NULL, &s));
+  ck_assert_ok (chaplygin_discrete_step (&sys3, &s, CHAPLYGIN_WANT_ALL, NULL, &a, &ea));
+  ck_assert (ea.reversal && ea.Dminus == 0.0 && ea.Dplus == 1.0 && a.dir == -1);
+  ck_assert (ea.Dc > 0.0 && ea.Dc < 1.0 && ea.Vminus < 0.0);
+  ck_assert_rel (ea.Vminus, -0.3, 4 * DBL_EPSILON);
+  ck_assert_rel (hypot (a.peg[0], a.peg[1]), 1.0, 2 * DBL_EPSILON);
+  ck_assert_rel (a.peg[0], -cos (a.theta), 2 * DBL_EPSILON);
+}
+END_TEST
+
+START_TEST (test_step_errors)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+  chaplygin_discrete_state s = { 1, 0.78125, 1.25, 0, 0, { 0, 0 } }, o;
+  o.E = 9;
+  /* 2E = H^2 exactly, mass centre in the slot: the spinning state */
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, NULL, &o, NULL),
+                    CHAPLYGIN_ESPIN);
+  s.dir = -1;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, &ODE, &o, NULL), CHAPLYGIN_ESPIN);
+  ck_assert (o.E == 9);
+  s.dir = 0;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_EINVAL);
+  s.dir = 1;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 8, NULL, &o, NULL), CHAPLYGIN_EINVAL);
+  chaplygin_options bad = { CHAPLYGIN_QUADRATURE, 0.0, CHAPLYGIN_PREC_DOUBLE };
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, &bad, &o, NULL), CHAPLYGIN_EINVAL);
+  /* V+ = 0: E = H^2/(2 (1 + L0^2)) */
+  s.E = 1.25 * 1.25 / (2 * 1.25), s.H = 1.25;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESTATE);
+  s.E = 0.0;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESTATE);
+  s.E = NAN;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+  s.E = 1.0, s.peg[1] = INFINITY;
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+  s.peg[1] = 0;
+  ck_assert_status (chaplygin_discrete_step (NULL, &s, 0, NULL, &o, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_step (&sys, NULL, 0, NULL, &o, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, NULL, NULL), CHAPLYGIN_EINVAL);
+  chaplygin_discrete junk = sys;
+  junk.Delta = -1;
+  ck_assert_status (chaplygin_discrete_step (&junk, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+  /* E' = E + C1 H^2 cannot overflow (C1 < 0), H' = C2 H can: L0 = 1,
+     Delta = 1e300, backward from the rear end without reversal, so the peg
+     leaves D = 0 where C2 = (2 + 1e300)/2. */
+  chaplygin_discrete big;
+  ck_assert_ok (chaplygin_discrete_init (&big, 1.0, 1e300));
+  chaplygin_discrete_state bs = { -1, 1e20, 1e10, 0, 0, { 0, 0 } };
+  ck_assert_status (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ERANGE);
+  bs.H = 1.0;                   /* representable: 5e299 */
+  ck_assert_ok (chaplygin_discrete_step (&big, &bs, CHAPLYGIN_WANT_ALL, NULL, &o, NULL));
+  ck_assert_rel (o.H, 5e299, 4 * DBL_EPSILON);
+  o.E = 9;
+  s.dir = 1, s.E = 1.0, s.H = 1.0;
+  /* phase conversions */
+  double q[4] = { 0.0, 1.0, 0.0, 1.0 };
+  ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, NAN, NULL, &s), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, 0, NULL, NULL), CHAPLYGIN_EINVAL);
+  double peg[2] = { 0, NAN };
+  ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, 0, peg, &s), CHAPLYGIN_EDOM);
+  q[0] = 1.0;
+  ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, 0, NULL, &s), CHAPLYGIN_ESTATE);
+  chaplygin_discrete_state t = { 1, 0.1, 5.0, 0, 0, { 0, 0 } };
+  ck_assert_status (chaplygin_discrete_state_to_phase (&sys, &t, q), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_state_to_phase (&sys, &t, NULL), CHAPLYGIN_EINVAL);
+  t.dir = 2;
+  ck_assert_status (chaplygin_discrete_state_to_phase (&sys, &t, q), CHAPLYGIN_EINVAL);
+}
+END_TEST
+
+int
+main (void)
+{
+  Suite *s = suite_create ("map");
+  TCase *t = tcase_create ("coefficients");
+  tcase_add_test (t, test_init_coefficients);
+  suite_add_tcase (s, t);
+  t = tcase_create ("step_reference");
+  tcase_set_timeout (t, 60);
+  tcase_add_loop_test (t, test_step_reference, 0, NREF);
+  suite_add_tcase (s, t);
+  t = tcase_create ("eq_B_3");
+  tcase_add_test (t, eq_B_3);
+  suite_add_tcase (s, t);
+  t = tcase_create ("eq_B_4");
+  tcase_add_test (t, eq_B_4);
+  suite_add_tcase (s, t);
+  t = tcase_create ("eq_B_5");
+  tcase_add_test (t, eq_B_5);
+  suite_add_tcase (s, t);
+  t = tcase_create ("eq_3_5");
+  tcase_set_timeout (t, 120);
+  tcase_add_test (t, eq_3_5);
+  suite_add_tcase (s, t);
+  t = tcase_create ("map_vs_integration");
+  tcase_set_timeout (t, 300);
+  tcase_add_test (t, test_map_vs_integration);
+  suite_add_tcase (s, t);
+  t = tcase_create ("conventions");
+  tcase_add_test (t, test_requests_and_conventions);
+  tcase_add_test (t, test_step_errors);
+  suite_add_tcase (s, t);
+  return tu_run (s);
+}
