@@ -1,3 +1,77 @@
 #!/bin/sh
-echo "1..1"
-echo "ok 1 - placeholder"
+# concordance.sh -- keep doc/concordance.tsv honest (TAP output).
+# Checks: the header; every equation label 2.1 ... B.17 (with A.4) present
+# once and in order; every function named is exported by the built library;
+# every unit test named is a TCase in tests/*.c; every verification check
+# named has a program verification/NAME.c.
+set -u
+top_srcdir=${top_srcdir:-.}
+top_builddir=${top_builddir:-.}
+tsv="$top_srcdir/doc/concordance.tsv"
+n=0
+fail=0
+ok () { n=$((n + 1)); echo "ok $n - $1"; }
+notok () { n=$((n + 1)); fail=1; echo "not ok $n - $1"; }
+
+if [ ! -r "$tsv" ]; then echo "1..0 # SKIP"; echo "Bail out! $tsv missing"; exit 1; fi
+
+lib=""
+for f in "$top_builddir/lib/.libs/libchaplygin.so" "$top_builddir/lib/.libs/libchaplygin.a"; do
+  if [ -r "$f" ]; then lib=$f; break; fi
+done
+if [ -z "$lib" ]; then echo "Bail out! built library not found under $top_builddir/lib/.libs"; exit 1; fi
+case $lib in
+  *.so) symbols=$(nm -D --defined-only "$lib" | awk '$2 == "T" { print $3 }') ;;
+  *) symbols=$(nm -g --defined-only "$lib" | awk '$2 == "T" { print $3 }') ;;
+esac
+# TCase names: literal first arguments of tcase_create() or of the add()
+# helper some suites use ("add (s, "eq_3_1", ...)").
+tcases=$(cat "$top_srcdir"/tests/*.c \
+  | sed -n -e 's/.*tcase_create *( *"\([^"]*\)".*/\1/p' \
+           -e 's/.*add *( *s *, *"\([^"]*\)".*/\1/p')
+
+expected="2.1 2.2 2.3 2.4"
+i=1; while [ $i -le 15 ]; do expected="$expected 3.$i"; i=$((i + 1)); done
+expected="$expected 4.1 A.1 A.2 A.3 A.4 A.5 A.6"
+i=1; while [ $i -le 17 ]; do expected="$expected B.$i"; i=$((i + 1)); done
+
+header=$(head -n 1 "$tsv")
+if [ "$header" = "$(printf 'equation\tfunction\tunit_test\tverification')" ]; then
+  ok "header"
+else
+  notok "header is '$header'"
+fi
+
+labels=$(tail -n +2 "$tsv" | cut -f 1 | tr '\n' ' ' | sed 's/ $//')
+if [ "$labels" = "$expected" ]; then
+  ok "all 43 labels present, once each, in order"
+else
+  notok "labels are: $labels"
+fi
+
+tab=$(printf '\t')
+tail -n +2 "$tsv" > concordance.rows.tmp
+while IFS="$tab" read -r eq fn ut ver; do
+  msg=""
+  nf=$(printf '%s\n' "$eq$tab$fn$tab$ut$tab$ver" | awk -F '\t' '{ print NF }')
+  [ "$nf" -eq 4 ] || msg="$msg [row has $nf fields]"
+  if [ "$fn" != "-" ]; then
+    for f in $(echo "$fn" | tr ',' ' '); do
+      echo "$symbols" | grep -qx "$f" || msg="$msg [function $f not exported]"
+    done
+  fi
+  if [ "$ut" != "-" ]; then
+    for t in $(echo "$ut" | tr ',' ' '); do
+      echo "$tcases" | grep -qx "$t" || msg="$msg [no TCase $t in tests/]"
+    done
+  fi
+  if [ "$ver" != "-" ]; then
+    for v in $(echo "$ver" | tr ',' ' '); do
+      [ -r "$top_srcdir/verification/$v.c" ] || msg="$msg [no verification/$v.c]"
+    done
+  fi
+  if [ -z "$msg" ]; then ok "($eq) $fn | $ut | $ver"; else notok "($eq)$msg"; fi
+done < concordance.rows.tmp
+rm -f concordance.rows.tmp
+echo "1..$n"
+exit $fail

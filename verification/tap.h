@@ -1,0 +1,36 @@
+/* tap.h -- minimal TAP output for the verification programs: each check
+   prints what it compared, the worst discrepancy and the tolerance. */
+#ifndef CHAPLYGIN_VERIFICATION_TAP_H
+#define CHAPLYGIN_VERIFICATION_TAP_H
+
+#include <stdarg.h>
+#include <stdio.h>
+
+static int tap_n = 0, tap_failed = 0;
+
+/* One check: ok/not ok, with a description and the measured figures. */
+static void tap_check (int ok, double worst, double tol, const char *fmt, ...)
+  __attribute__ ((format (printf, 4, 5)));
+
+static void
+tap_check (int ok, double worst, double tol, const char *fmt, ...)
+{
+  va_list ap;
+  tap_n++;
+  if (!ok)
+    tap_failed = 1;
+  printf ("%s %d - ", ok ? "ok" : "not ok", tap_n);
+  va_start (ap, fmt);
+  vprintf (fmt, ap);
+  va_end (ap);
+  printf (": worst %.3g, tolerance %.3g\n", worst, tol);
+}
+
+static int
+tap_done (void)
+{
+  printf ("1..%d\n", tap_n);
+  return tap_failed;
+}
+
+#endif
