@@ -81,8 +81,9 @@ typedef struct
 {
   chaplygin_method method;
   double tol;                 /* relative tolerance, quadrature and ODE only:
-                                 1e-15 <= tol < 1 (quadrature is limited to
-                                 50 eps ~ 1.1e-14; smaller is raised to that) */
+                                 1e-15 <= tol < 1 (quadrature cannot certify
+                                 less than 64 eps ~ 1.4e-14: a smaller tol
+                                 is raised to that) */
   chaplygin_precision precision;  /* closed form only */
 } chaplygin_options;
 

@@ -103,7 +103,8 @@ chp_rf (double x, double y, double z, chaplygin_precision prec, double *r)
        R_D(x, y, z) = 3 [log(4 sqrt(z)/(sqrt(x) + sqrt(y))) - 1]/z^(3/2)
    is used (relative error O((x + y)/z), checked against mpmath).
    Errors: CHAPLYGIN_EDOM for negative or non-finite arguments or z = 0;
-   CHAPLYGIN_ERANGE for x = y = 0 (divergent). */
+   CHAPLYGIN_ERANGE for x = y = 0 (divergent), and for z < 2^-600 times the
+   largest argument (not supported: no caller needs it). */
 int
 chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
 {
@@ -130,9 +131,9 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
       x = ldexp (x, k);
       y = ldexp (y, k);
       z = ldexp (z, k);
-      /* Now max in [1, 4); a z below 2^-600 after scaling would have needed
-         the asymptotic branch of the other kind (z << x + y), where R_D
-         ~ 3/(sqrt(x y z) ...) is still finite: GSL handles z down to 6e-206. */
+      /* Now max in [1, 4).  A z below 2^-600 of the largest argument is
+         outside what this wrapper supports (GSL needs z >= 6e-206; the
+         library only calls it with z = 1 >= x, y). */
       if (z < 0x1p-600)
         return CHAPLYGIN_ERANGE;
     }

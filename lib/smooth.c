@@ -384,7 +384,7 @@ check_closed_form_args (double L, const double q0[4], double S)
        theta(S) = theta0 + sgn(Omega0) (sqrt(1 + L^2)/L) (psi(S) - psi0),
    x = s0 (S - S0) before the reversal, x = s0 (2 S_c - S - S0) after it
    (s0 = sgn V0, or sgn L if V0 = 0), psi = atan2(V, sqrt(1 + L^2)|Omega|);
-   before S_c, psi(S) - psi0 = arcsin(k u) - arcsin(k) of (A.2),
+   before S_c, |psi(S) - psi0| = |arcsin(k) - arcsin(k u)| of (A.2),
    k = 1/sqrt(V0^2/(Omega0^2 (1 + L^2)) + 1).  Also tau(S) - tau(S0).
    Domain: finite; S >= S0 = q0[S].
    Method: see the file comment and leg_same_sign: expm1, log1p, atan

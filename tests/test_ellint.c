@@ -184,6 +184,21 @@ START_TEST (test_carlson_guards)
   ck_assert_rel (a, log (s), 1e-15);
   ck_assert_ok (chp_rd (0x1p-102, 0x1p-102, 1.0, 0, &a));
   ck_assert_rel (a, 3.0 * (log (s) - 1.0), 1e-15);
+  /* R_F is symmetric: the order of the arguments does not matter (the
+     wrapper sorts them before choosing a branch). */
+  double perm[6][3] = { { 0.25, 1.5, 2.385 }, { 0.25, 2.385, 1.5 }, { 1.5, 0.25, 2.385 },
+                        { 1.5, 2.385, 0.25 }, { 2.385, 0.25, 1.5 }, { 2.385, 1.5, 0.25 } };
+  ck_assert_ok (chp_rf (0.25, 1.5, 2.385, 0, &a));
+  for (int k = 0; k < 6; k++)
+    {
+      ck_assert_ok (chp_rf (perm[k][0], perm[k][1], perm[k][2], 0, &b));
+      ck_assert_rel (b, a, 2 * DBL_EPSILON);
+    }
+  /* R_D with z far below x, y: only z >= 2^-600 max is supported. */
+  ck_assert_ok (chp_rd (1.0, 2.0, 1e-170, 0, &a));
+  /* z -> 0: R_D -> 3/sqrt(x y z), relative correction O(sqrt(z)) */
+  ck_assert_rel (a, 3.0 / sqrt (2.0 * 1e-170), 16 * DBL_EPSILON);
+  ck_assert_status (chp_rd (1.0, 2.0, 1e-200, 0, &a), CHAPLYGIN_ERANGE);
   /* Errors. */
   ck_assert_status (chp_rf (-1.0, 1.0, 1.0, 0, &r), CHAPLYGIN_EDOM);
   ck_assert_status (chp_rf (NAN, 1.0, 1.0, 0, &r), CHAPLYGIN_EDOM);

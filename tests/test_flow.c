@@ -186,16 +186,24 @@ START_TEST (eq_B_2_special)
   /* the spinning equilibrium itself: V0 = 0 at l0 = 0 */
   ck_assert_status (chaplygin_discrete_heading (-0.25, 0.25, 0.0, 1.2, 0.5, NULL, &th, &ta),
                     CHAPLYGIN_ESPIN);
-  /* 2E = H^2 exactly (L0 = -1/2, D0 = 0, V0^2 = 5/16, Omega0 = 1): the
-     spinning point l = 0 at D = 1/2 is reached only as tau -> inf */
-  double V0 = sqrt (0.3125);
-  if (V0 * V0 == 0.3125)
-    {
-      ck_assert_status (chaplygin_discrete_heading (-0.5, 0.0, V0, 1.0, 0.5, NULL, &th, &ta),
-                        CHAPLYGIN_ESPIN);
-      ck_assert_status (chaplygin_discrete_heading (-0.5, 0.0, V0, 1.0, 0.7, NULL, &th, &ta),
-                        CHAPLYGIN_ESTATE);
-    }
+  /* 2E = H^2 exactly: L0 = -3/4, D0 = 0, V0 = 15/16, Omega0 = 1 give
+     E = (225/256 + 25/16)/2 and H = 25/16, all exact in binary.  The
+     spinning point l = 0 at D = 3/4 is reached only as tau -> inf. */
+  ck_assert_status (chaplygin_discrete_heading (-0.75, 0.0, 0.9375, 1.0, 0.75, NULL, &th, &ta),
+                    CHAPLYGIN_ESPIN);
+  ck_assert_status (chaplygin_discrete_heading (-0.75, 0.0, 0.9375, 1.0, 0.9, NULL, &th, &ta),
+                    CHAPLYGIN_ESTATE);
+  ck_assert_ok (chaplygin_discrete_heading (-0.75, 0.0, 0.9375, 1.0, 0.5, NULL, &th, &ta));
+  ck_assert (th > 0 && ta > 0);
+  /* A zero-length leg inside the reduction (reachable only through
+     underflow of |l0| - c from the map): both outputs 0. */
+  chp_motion m;
+  ck_assert_ok (chp_motion_init (1.0, 0.5, &m));
+  chaplygin_options o = CLOSED;
+  th = ta = 7;
+  ck_assert_ok (chp_leg (&m, 0.3, chp_motion_g (&m, 0.3), 0.3, chp_motion_g (&m, 0.3), 0.0,
+                         &o, &th, &ta));
+  ck_assert (th == 0.0 && ta == 0.0);
 }
 END_TEST
 

@@ -480,6 +480,9 @@ START_TEST (eq_A_4)
   ck_assert_status (chaplygin_smooth_closed_form_eh (NAN, p0, 1, 1.0, p), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_smooth_closed_form_eh (0.0, NULL, 1, 1.0, p), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_smooth_closed_form_eh (0.0, p0, 1, 1.0, NULL), CHAPLYGIN_EINVAL);
+  /* (1 + L^2) overflows: H_C is not representable */
+  double ph[4] = { 0, 1.0, 0, 1.0 };
+  ck_assert_status (chaplygin_smooth_closed_form_eh (1e200, ph, 1, 1.0, p), CHAPLYGIN_ERANGE);
   /* V0 = 0 exactly: dir0 is ignored */
   /* L = 3/4: sqrt(1 + L^2) = 5/4 exactly; H0 = 5/2, E0 = 2: V0^2 = 0 */
   double pz[4] = { 0, 2.0, 0, 2.5 };

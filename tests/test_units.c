@@ -207,6 +207,66 @@ START_TEST (test_energy_momentum_scales)
 }
 END_TEST
 
+START_TEST (test_every_field_validated)
+{
+  /* Each field in turn NaN or Inf: EDOM, output untouched. */
+  for (int f = 0; f < 6; f++)
+    for (int v = 0; v < 2; v++)
+      {
+        double bad = v ? (double) NAN : (double) INFINITY;
+        double a[6] = { 0.5, 1.0, 0.25, 0.1, 2.0, 3.0 };
+        a[f] = bad;
+        chaplygin_smooth_dim d = { a[0], a[1], a[2], a[3], a[4], a[5] };
+        chaplygin_smooth_nondim n = { 9, 9, 9, 9, 9, 9 };
+        ck_assert_status (chaplygin_smooth_nondimensionalize (1, 1, &d, &n), CHAPLYGIN_EDOM);
+        ck_assert (n.L == 9 && n.tau == 9);
+        chaplygin_smooth_nondim nn = { a[0], a[1], a[2], a[3], a[4], a[5] };
+        ck_assert_status (chaplygin_smooth_dimensionalize (1, 1, &nn, &d), CHAPLYGIN_EDOM);
+      }
+  for (int f = 0; f < 7; f++)
+    for (int v = 0; v < 2; v++)
+      {
+        double bad = v ? (double) NAN : (double) -INFINITY;
+        double a[7] = { 0.5, 1.0, 0.25, 0.1, 2.0, 3.0, 4.0 };
+        a[f] = bad;
+        chaplygin_discrete_dim d = { a[0], a[1], a[2], a[3], a[4], a[5], a[6] };
+        chaplygin_discrete_nondim n = { 9, 9, 9, 9, 9, 9, 9 };
+        ck_assert_status (chaplygin_discrete_nondimensionalize (1, 1, &d, &n), CHAPLYGIN_EDOM);
+        ck_assert (n.L0 == 9 && n.tau == 9);
+        chaplygin_discrete_nondim nn = { a[0], a[1], a[2], a[3], a[4], a[5], a[6] };
+        ck_assert_status (chaplygin_discrete_dimensionalize (1, 1, &nn, &d), CHAPLYGIN_EDOM);
+      }
+  /* overflow in each output: tiny rho or v0 */
+  chaplygin_smooth_dim d = { 1, 1, 1, 1, 1, 1 };
+  chaplygin_smooth_nondim n;
+  for (int f = 0; f < 6; f++)
+    {
+      double a[6] = { 1, 1, 1, 1, 1, 1 };
+      a[f] = 1e300;
+      chaplygin_smooth_dim dd = { a[0], a[1], a[2], a[3], a[4], a[5] };
+      double rho = (f == 4) ? 1e300 : 1e-300, v0 = (f == 2 || f == 4) ? 1e-300 : 1e300;
+      if (f == 3)
+        continue;               /* theta is not scaled */
+      ck_assert_status (chaplygin_smooth_nondimensionalize (rho, v0, &dd, &n), CHAPLYGIN_ERANGE);
+    }
+  (void) d;
+  for (int f = 0; f < 6; f++)
+    {
+      double a[6] = { 1, 1, 1, 1, 1, 1 };
+      a[f] = 1e300;
+      chaplygin_smooth_nondim nn = { a[0], a[1], a[2], a[3], a[4], a[5] };
+      double rho = (f == 5) ? 1e300 : 1e300, v0 = (f == 2 || f == 4) ? 1e300 : 1e-300;
+      if (f == 3)
+        continue;
+      if (f == 5)
+        v0 = 1e-300;
+      chaplygin_smooth_dim out;
+      int st = chaplygin_smooth_dimensionalize (f == 4 ? 1e-300 : rho, v0, &nn, &out);
+      ck_assert_status (st, CHAPLYGIN_ERANGE);
+    }
+}
+END_TEST
+
 int
 main (void)
 {
@@ -220,6 +280,9 @@ main (void)
   suite_add_tcase (s, t);
   t = tcase_create ("eq_3_2");
   tcase_add_test (t, eq_3_2);
+  suite_add_tcase (s, t);
+  t = tcase_create ("validation");
+  tcase_add_test (t, test_every_field_validated);
   suite_add_tcase (s, t);
   t = tcase_create ("scales");
   tcase_add_test (t, test_energy_momentum_scales);
