@@ -347,6 +347,41 @@ START_TEST (test_map_vs_integration)
 }
 END_TEST
 
+START_TEST (test_step_closed_vs_quadrature)
+{
+  /* The return map's heading and time, closed form against quadrature,
+     over random skates and states (reversals included): <= 1e-13. */
+  tu_rng r;
+  tu_rng_seed (&r, 1113);
+  int n = 0, rev = 0;
+  double worst = 0;
+  while (n < 2000)
+    {
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, tu_uniform (&r, -3, 2), tu_uniform (&r, 0.02, 4)));
+      chaplygin_discrete_state s = { tu_uniform (&r, 0, 1) < 0.5 ? 1 : -1,
+                                     tu_uniform (&r, 0.05, 2), tu_uniform (&r, -3, 3), 0, 0, { 0, 0 } };
+      chaplygin_discrete_state a, b;
+      chaplygin_discrete_event ea, eb;
+      int st = chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, &CLOSED, &a, &ea);
+      if (st == CHAPLYGIN_ESTATE)
+        continue;               /* V+^2 <= 0: not a post-collision state */
+      ck_assert_ok (st);
+      ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, &QUAD, &b, &eb));
+      ck_assert_int_eq (ea.reversal, eb.reversal);
+      double e = fmax (tu_relerr (ea.dtheta, eb.dtheta), tu_relerr (ea.dtau, eb.dtau));
+      worst = fmax (worst, e);
+      ck_assert_msg (e <= 1e-13, "L0 %.17g Delta %.17g dir %d E %.17g H %.17g: %g",
+                     sys.L0, sys.Delta, s.dir, s.E, s.H, e);
+      rev += ea.reversal;
+      n++;
+    }
+  fprintf (stderr, "# return map, closed form vs quadrature: %d segments (%d reversals), "
+           "max rel diff %.3g\n", n, rev, worst);
+  ck_assert_int_ge (rev, 200);
+}
+END_TEST
+
 START_TEST (test_requests_and_conventions)
 {
   chaplygin_discrete sys;
@@ -509,6 +544,10 @@ main (void)
   t = tcase_create ("map_vs_integration");
   tcase_set_timeout (t, 300);
   tcase_add_test (t, test_map_vs_integration);
+  suite_add_tcase (s, t);
+  t = tcase_create ("closed_vs_quadrature");
+  tcase_set_timeout (t, 120);
+  tcase_add_test (t, test_step_closed_vs_quadrature);
   suite_add_tcase (s, t);
   t = tcase_create ("conventions");
   tcase_add_test (t, test_requests_and_conventions);
