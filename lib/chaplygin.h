@@ -176,10 +176,11 @@ int chaplygin_smooth_eigenvalue (double L, double Vstar, double *xi4);
 int chaplygin_smooth_energy (double L, double V, double Omega, double *E);
 int chaplygin_smooth_momentum (double L, double Omega, double *H);
 
-/* (A.1) the arc length S_c at which V changes sign, when it does:
-   S_c = S0 + (1 + L^2)/(2|L|) log(1 + V0^2/(Omega0^2 (1 + L^2)))
-   for L V0 < 0 (or V0 = 0 ... never) and Omega0 != 0.  *reverses is set
-   to 1 and *Sc written, or *reverses = 0 and *Sc untouched. */
+/* (A.1) the arc length S_c at which V changes sign, when it does (iff
+   L V0 < 0 and Omega0 != 0; the paper's form assumes V0 > 0):
+   S_c = S0 + (1 + L^2)/(2|L|) log(1 + V0^2/(Omega0^2 (1 + L^2))).
+   *reverses is set to 1 and *Sc written, or *reverses = 0 and *Sc left
+   untouched. */
 int chaplygin_smooth_reversal (double L, const double q0[4], int *reverses,
                                double *Sc);
 

@@ -162,10 +162,9 @@ chaplygin_discrete_dimensionalize (double rho, double v0,
 
 /* chaplygin_energy_nondimensionalize: E = T/(m v0^2), the scale under which
    the kinetic energy (1/2) m |v_G|^2 + (1/2) I omega^2 becomes (3.3).
-   Domain: m > 0, v0 > 0, T finite.  Accuracy: within 1.5 ulps
-   (T/m/v0/v0 would be 2 roundings; (T/m)/(v0 v0) is 2 as well: the
-   product v0 v0 is formed first).  Errors: CHAPLYGIN_EINVAL,
-   CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE. */
+   Domain: m > 0, v0 > 0, T finite.  Accuracy: three correctly rounded
+   divisions, within 1.5 ulps (dividing in turn avoids overflow of
+   m v0^2).  Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE. */
 int
 chaplygin_energy_nondimensionalize (double m, double v0, double T, double *E)
 {

@@ -29,13 +29,6 @@ rhs (double t, const double y[], double f[], void *p)
   return GSL_SUCCESS;
 }
 
-static double
-uniform (unsigned long long *s, double a, double b)
-{
-  *s ^= *s >> 12, *s ^= *s << 25, *s ^= *s >> 27;
-  return a + (b - a) * (double) ((*s * 0x2545F4914F6CDD1DULL) >> 11) * 0x1p-53;
-}
-
 int
 main (void)
 {
@@ -44,9 +37,9 @@ main (void)
   int bad = 0;
   for (int k = 0; k < 200; k++)
     {
-      double L0 = uniform (&seed, -2, 2);
-      double y[4] = { uniform (&seed, 0, 1), uniform (&seed, -2, 2), 0.0,
-                      uniform (&seed, -2, 2) };
+      double L0 = tap_uniform (&seed, -2, 2);
+      double y[4] = { tap_uniform (&seed, 0, 1), tap_uniform (&seed, -2, 2), 0.0,
+                      tap_uniform (&seed, -2, 2) };
       double E0, H0;
       bad |= chaplygin_discrete_energy (L0, y[0], y[1], y[3], &E0);
       bad |= chaplygin_discrete_momentum (L0, y[0], y[3], &H0);

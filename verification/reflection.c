@@ -16,13 +16,6 @@
 #include "chaplygin.h"
 #include "tap.h"
 
-static double
-uniform (unsigned long long *s, double a, double b)
-{
-  *s ^= *s >> 12, *s ^= *s << 25, *s ^= *s >> 27;
-  return a + (b - a) * (double) ((*s * 0x2545F4914F6CDD1DULL) >> 11) * 0x1p-53;
-}
-
 int
 main (void)
 {
@@ -31,11 +24,11 @@ main (void)
   int bad = 0, mismatched = 0, reversals = 0, steps = 0;
   for (int k = 0; k < 100; k++)
     {
-      double L0 = uniform (&seed, -3, 2), Dl = uniform (&seed, 0.1, 3);
+      double L0 = tap_uniform (&seed, -3, 2), Dl = tap_uniform (&seed, 0.1, 3);
       chaplygin_discrete a, b;
       bad |= chaplygin_discrete_init (&a, L0, Dl);
       bad |= chaplygin_discrete_init (&b, -(L0 + Dl), Dl);
-      double V = uniform (&seed, -1.5, 1.5), Om = uniform (&seed, -1.5, 1.5);
+      double V = tap_uniform (&seed, -1.5, 1.5), Om = tap_uniform (&seed, -1.5, 1.5);
       double q[4] = { V > 0 ? 0.0 : Dl, V, 0.2, Om };
       double qm[4] = { V > 0 ? Dl : 0.0, -V, 0.2 + M_PI, Om };
       chaplygin_discrete_state s, m;

@@ -26,6 +26,14 @@ tap_check (int ok, double worst, double tol, const char *fmt, ...)
   printf (": worst %.3g, tolerance %.3g\n", worst, tol);
 }
 
+/* A deterministic generator (xorshift64*): uniform in [a, b). */
+static double
+tap_uniform (unsigned long long *s, double a, double b)
+{
+  *s ^= *s >> 12, *s ^= *s << 25, *s ^= *s >> 27;
+  return a + (b - a) * (double) ((*s * 0x2545F4914F6CDD1DULL) >> 11) * 0x1p-53;
+}
+
 static int
 tap_done (void)
 {
