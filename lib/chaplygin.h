@@ -280,7 +280,9 @@ typedef struct
      leaves at the collision: [0] D- = 0 (front), [1] D- = Delta (rear). */
   double C1[2];   /* energy coefficient, (B.3)/(B.4) */
   double C2[2];   /* momentum coefficient, (B.3)/(B.4) */
-  double l_end[2];  /* L0 + D at the ends: L0, L0 + Delta */
+  double l_end[2];  /* L0 + D at the ends: L0, L0 + Delta (rounded) */
+  double l_err[2];  /* their rounding errors: L0 + Delta = l_end[1] +
+                       l_err[1] exactly (l_err[0] = 0) */
 } chaplygin_discrete;
 
 int chaplygin_discrete_init (chaplygin_discrete *sys, double L0,

@@ -121,7 +121,8 @@ chaplygin_discrete_collide (double L0, double Delta, const double qminus[4],
     return CHAPLYGIN_ESTATE;
   CHP_TRY (check_end (Delta, qminus[CHAPLYGIN_D], V));
   double Dplus = Delta - qminus[CHAPLYGIN_D];   /* exactly 0 or Delta */
-  double r = chp_collision_ratio (L0, Delta, L0 + Dplus);
+  double r = chp_collision_ratio (L0, Delta, L0 + Dplus,
+                                  L0 + qminus[CHAPLYGIN_D]);
   double th = qminus[CHAPLYGIN_THETA];
   double om = r * qminus[CHAPLYGIN_OMEGA];
   if (!isfinite (om))
@@ -145,7 +146,7 @@ chp_collision_coefficients (double L0, double Delta, double Dminus,
   double b = L0 + Dminus, bp = L0 + (Delta - Dminus);
   double t = (Delta / chp_one_plus_sq (b)) / hypot (1.0, bp);
   *C1 = -0.5 * t * t;
-  *C2 = chp_collision_ratio (L0, Delta, b);
+  *C2 = chp_collision_ratio (L0, Delta, b, bp);
 }
 
 /* chaplygin_discrete_collide_eh: (3.7)
@@ -211,7 +212,7 @@ chaplygin_discrete_spin_ratio (double E, double H, double *ratio)
 
 /* chaplygin_discrete_spins: whether the motion that starts just after a
    collision in direction dir ends in the spinning equilibrium of (3.8):
-   2E = H^2 exactly (tested with one fma, so exactly) and the path from the
+   2E = H^2 exactly (chp_one_minus_h2, exact) and the path from the
    starting end reaches l = 0, i.e. D = -L0 lies in [0, Delta] on the far
    side of the start: dir = +1 needs L0 < 0 <= L0 + Delta (the peg at the
    front, D = 0, moving back towards -L0), dir = -1 needs L0 <= 0 < L0 + Delta.
@@ -226,7 +227,7 @@ chaplygin_discrete_spins (double L0, double Delta, int dir, double E,
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (L0, Delta, E, H) || !(Delta > 0.0) || !(E > 0.0))
     return CHAPLYGIN_EDOM;
-  int ratio_one = fabs (H) <= 0x1p500 && fma (H, H, -2.0 * E) == 0.0;
+  int ratio_one = chp_one_minus_h2 (E, H) == 0.0;
   int reaches = dir > 0 ? (L0 < 0.0 && -L0 <= Delta)
     : (L0 <= 0.0 && -L0 < Delta);
   *spins = ratio_one && reaches;

@@ -204,7 +204,13 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
   if (y == 0.0)
     s = x / sq;                 /* may be +Inf: mu = pi/2, the complete integral */
   else if (fmax (x, sp) <= 0x1p250)
-    s = dxy * (x + y) * sp / (x * (ay * by) + y * (ax * bx));
+    {
+      /* dxy (x + y) sp / (x ay by + y ax bx), with the denominator divided
+         by x + y (a weighted mean of ay by and ax bx, both >= sp sq > 0 or
+         >= y^2), so that tiny x, y, dxy do not underflow in a product */
+      double wx = x / (x + y), wy = y / (x + y);
+      s = dxy * sp / (wx * (ay * by) + wy * (ax * bx));
+    }
   else
     {
       int e;

@@ -28,38 +28,57 @@
 
 #include "internal.h"
 
+/* chp_one_minus_h2: 1 - h^2 = (2E - H^2)/(2E) for E > 0.
+   Method: H^2 - 2E by one fma, so that the sign is exact (zero exactly
+   when H^2 = 2E, the spinning condition (3.8)) and the value within 2 ulps;
+   for |H| > 2^500 on arguments scaled by 2^-2k, 2^-k (exact unless 2E 2^-2k
+   underflows, which only happens when H^2 >> 2E and the result overflows).
+   Returns -Inf when the result overflows. */
+double
+chp_one_minus_h2 (double E, double H)
+{
+  double twoE = 2.0 * E;
+  if (fabs (H) <= 0x1p500 && isfinite (twoE))
+    return -fma (H, H, -twoE) / twoE;
+  int k;
+  frexp (H, &k);
+  double Hs = ldexp (H, -k), twoEs = ldexp (E, 1 - 2 * k);
+  if (!(twoEs > 0.0))
+    return -HUGE_VAL;
+  return -fma (Hs, Hs, -twoEs) / twoEs;
+}
+
 /* chp_motion_init: the invariants of the motion with energy E > 0 and
-   momentum H.  1 - h^2 = -(H^2 - 2E)/(2E) is formed with one fma, so its
-   sign is exact and its value correct to 2 ulps (for |H| <= 2^500). */
+   momentum H (see chp_one_minus_h2).
+   Errors: CHAPLYGIN_EDOM (non-finite, E < 0), CHAPLYGIN_ESTATE (E = 0: at
+   rest, no motion), CHAPLYGIN_ERANGE (2E or h^2 overflows). */
 int
 chp_motion_init (double E, double H, chp_motion *m)
 {
-  if (!isfinite (E) || !isfinite (H))
+  if (!isfinite (E) || !isfinite (H) || E < 0.0)
     return CHAPLYGIN_EDOM;
-  if (!(E > 0.0))
+  if (E == 0.0)
     return CHAPLYGIN_ESTATE;
   double twoE = 2.0 * E;
-  if (!isfinite (twoE))
+  double omh2 = chp_one_minus_h2 (E, H);
+  if (!isfinite (twoE) || !isfinite (omh2))
     return CHAPLYGIN_ERANGE;
   m->E = E;
   m->H = H;
   m->sqrt2E = sqrt (twoE);
   m->h = H / m->sqrt2E;
-  if (fabs (H) <= 0x1p500)
-    m->omh2 = -fma (H, H, -twoE) / twoE;
-  else
-    m->omh2 = (1.0 - m->h) * (1.0 + m->h);
-  if (m->omh2 >= 0.0)
+  m->omh2 = omh2;
+  if (omh2 >= 0.0)
     {
       m->sp = 1.0;
-      m->sq = sqrt (m->omh2);
+      m->sq = sqrt (omh2);
       m->pmq = m->h * m->h;
       m->theta_factor = m->h;
     }
   else
     {
       m->sp = fabs (m->h);
-      m->sq = sqrt (-m->omh2);
+      m->sq = sqrt (-omh2);
       m->pmq = 1.0;
       m->theta_factor = chp_sign (H);
     }
@@ -72,44 +91,83 @@ chp_motion_g (const chp_motion *m, double l)
   return fma (l, l, m->omh2);
 }
 
-/* ---- quadrature integrands (the paper's, in l; in u near turning points) */
+/* Error-free transformations (Knuth, Dekker). */
+static inline void
+two_sum (double a, double b, double *s, double *e)
+{
+  double t = a + b, bb = t - a;
+  *s = t;
+  *e = (a - (t - bb)) + (b - bb);
+}
 
-/* The integration variable t runs from 0 over an interval whose width is
-   known exactly; the physical variable is base + dir t, so that rounding
-   only perturbs where the integrand is evaluated, never the width. */
+static inline void
+two_prod (double a, double b, double *p, double *e)
+{
+  *p = a * b;
+  *e = fma (a, b, -*p);
+}
+
+/* chp_motion_g_exact: g(l) = [2E (1 + l^2) - H^2]/(2E) for l = l + el (el the
+   rounding error of l, 0 if l is exact), the numerator with error-free
+   products and sums, so that g is within ~2 ulps of its value for the
+   given E, H, l however much 2E (1 + l^2) and H^2 cancel (a turning point
+   near l).  Falls back to chp_motion_g where an intermediate overflows. */
+double
+chp_motion_g_exact (const chp_motion *m, double l, double el)
+{
+  double twoE = 2.0 * m->E, H = m->H;
+  double p1, e1, p2, e2, p3, e3, s1, f1, s2, f2;
+  two_prod (l, l, &p1, &e1);
+  two_prod (twoE, p1, &p2, &e2);
+  two_prod (H, H, &p3, &e3);
+  two_sum (twoE, -p3, &s1, &f1);
+  two_sum (s1, p2, &s2, &f2);
+  double N = s2 + (((f1 + f2) + (e2 - e3)) + twoE * (e1 + 2.0 * l * el));
+  double g = N / twoE;
+  if (!isfinite (g) || !isfinite (p2) || !isfinite (p3))
+    return chp_motion_g (m, l);
+  return g;
+}
+
+/* ---- quadrature integrands (the paper's, in |l|; in u at turning points)
+
+   The integration variable t runs from 0 over an interval whose width is
+   known exactly; the physical variable (|l| or u) is A + t, so rounding
+   only perturbs where the integrand is evaluated, never the width.  The
+   integrands are written with hypot so that they neither overflow nor
+   underflow for any |l| the library accepts. */
 struct quad_par
 {
   const chp_motion *m;
-  double base, dir;
+  double A;
 };
 
-/* Regime A, variable l: |dtheta/dl| / |h| = 1/sqrt((1 + l^2) g(l)). */
+/* Regime A, |l| = A + t: |dtheta/dl| / |h| = 1/sqrt((1 + l^2)(l^2 + q)). */
 static double
 qa_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
-  double l = qp->base + qp->dir * t;
-  return 1.0 / sqrt (chp_one_plus_sq (l) * chp_motion_g (qp->m, l));
+  double l = qp->A + t;
+  return 1.0 / (hypot (1.0, l) * hypot (l, qp->m->sq));
 }
 
-/* Regime A: sqrt(2E) dtau/dl = sqrt((1 + l^2)/g(l)). */
+/* Regime A: sqrt(2E) dtau/dl = sqrt((1 + l^2)/(l^2 + q)). */
 static double
 qa_tau (double t, void *p)
 {
   const struct quad_par *qp = p;
-  double l = qp->base + qp->dir * t;
-  return sqrt (chp_one_plus_sq (l) / chp_motion_g (qp->m, l));
+  double l = qp->A + t;
+  return hypot (1.0, l) / hypot (l, qp->m->sq);
 }
 
-/* Regime B, variable u with |l| = c + u^2, g = u^2 (|l| + c):
+/* Regime B, u = A + t with |l| = c + u^2, g = u^2 (|l| + c):
    |dtheta/du| / |h| = 2/sqrt((1 + l^2)(|l| + c)). */
 static double
 qb_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
-  double u = qp->base + qp->dir * t;
-  double c = qp->m->sq, al = c + u * u;
-  return 2.0 / sqrt (chp_one_plus_sq (al) * (al + c));
+  double u = qp->A + t, c = qp->m->sq, al = c + u * u;
+  return 2.0 / (hypot (1.0, al) * sqrt (al + c));
 }
 
 /* Regime B: sqrt(2E) dtau/du = 2 sqrt((1 + l^2)/(|l| + c)). */
@@ -117,27 +175,36 @@ static double
 qb_tau (double t, void *p)
 {
   const struct quad_par *qp = p;
-  double u = qp->base + qp->dir * t;
-  double c = qp->m->sq, al = c + u * u;
-  return 2.0 * sqrt (chp_one_plus_sq (al) / (al + c));
+  double u = qp->A + t, c = qp->m->sq, al = c + u * u;
+  return 2.0 * hypot (1.0, al) / sqrt (al + c);
 }
 
-/* Integrate the heading and time integrands F_th, F_ta over t in [a, b]. */
+/* Integrate over t in [0, W] (the variable A + t), in pieces over which
+   A + t at most doubles once it exceeds 1: the integrands vary on the
+   scale max(A + t, 1), and one Gauss-Kronrod panel cannot span decades
+   (a leg may run from |l| ~ 1 to 1e100).  Sums into *th, *ta. */
 static int
-quad_pair (double (*f_th) (double, void *), double (*f_ta) (double, void *),
-           struct quad_par *qp, double a, double b, double tol, double *th,
-           double *ta)
+quad_geometric (double (*f_th) (double, void *), double (*f_ta) (double, void *),
+                const chp_motion *m, double A, double W, double tol, double *th,
+                double *ta)
 {
-  double r;
-  if (th)
+  struct quad_par qp = { m, A };
+  double t = 0.0, r;
+  while (t < W)
     {
-      CHP_TRY (chp_integrate (f_th, qp, a, b, tol, &r));
-      *th += r;
-    }
-  if (ta)
-    {
-      CHP_TRY (chp_integrate (f_ta, qp, a, b, tol, &r));
-      *ta += r;
+      double next = 2.0 * fmax (A + t, 1.0) - A;
+      double tn = (next > t && next < W) ? next : W;
+      if (th)
+        {
+          CHP_TRY (chp_integrate (f_th, &qp, t, tn, tol, &r));
+          *th += r;
+        }
+      if (ta)
+        {
+          CHP_TRY (chp_integrate (f_ta, &qp, t, tn, tol, &r));
+          *ta += r;
+        }
+      t = tn;
     }
   return CHAPLYGIN_SUCCESS;
 }
@@ -211,33 +278,29 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
       return CHAPLYGIN_SUCCESS;
     }
 
-  /* Quadrature, over an interval of exactly known width. */
-  struct quad_par qp = { m, 0.0, 1.0 };
+  /* Quadrature, over intervals of exactly known width. */
   double *qF = dtheta ? &F : NULL, *qT = dtau ? &T : NULL;
   if (m->omh2 >= 0.0)
     {
-      /* l = la + dir t, t in [0, dl]; split where l = 0 (t = |la|), where
-         the integrand peaks. */
-      qp.base = la;
-      qp.dir = chp_sign (lb - la);
+      /* in |l|: two pieces from 0 if la, lb straddle l = 0 (where the
+         integrand peaks), one otherwise */
       if (la * lb < 0.0)
         {
-          CHP_TRY (quad_pair (qa_theta, qa_tau, &qp, 0.0, aa, opt->tol, qF, qT));
-          CHP_TRY (quad_pair (qa_theta, qa_tau, &qp, aa, dl, opt->tol, qF, qT));
+          CHP_TRY (quad_geometric (qa_theta, qa_tau, m, 0.0, aa, opt->tol, qF, qT));
+          CHP_TRY (quad_geometric (qa_theta, qa_tau, m, 0.0, ab, opt->tol, qF, qT));
         }
       else
-        CHP_TRY (quad_pair (qa_theta, qa_tau, &qp, 0.0, dl, opt->tol, qF, qT));
+        CHP_TRY (quad_geometric (qa_theta, qa_tau, m, fmin (aa, ab), dl, opt->tol,
+                                 qF, qT));
     }
   else
     {
-      /* u = sqrt(|l| - c), |l| - c = g/(|l| + c) without cancellation, and
-         u_b - u_a = (|lb| - |la|)/(u_a + u_b) = +-dl/(u_a + u_b). */
+      /* in u = sqrt(|l| - c): |l| - c = g/(|l| + c) without cancellation,
+         and u_b - u_a = (|lb| - |la|)/(u_a + u_b) = +-dl/(u_a + u_b) */
       double c = m->sq;
       double ua = sqrt (ga / (aa + c)), ub = sqrt (gb / (ab + c));
-      qp.base = ua;
-      qp.dir = chp_sign (ab - aa);
-      CHP_TRY (quad_pair (qb_theta, qb_tau, &qp, 0.0, dl / (ua + ub), opt->tol,
-                          qF, qT));
+      CHP_TRY (quad_geometric (qb_theta, qb_tau, m, fmin (ua, ub), dl / (ua + ub),
+                               opt->tol, qF, qT));
     }
   F *= fabs (m->h);
   if (dtheta)
@@ -306,14 +369,16 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
    R_D); quadrature: adaptive Gauss-Kronrod on the integrand above (in
    u = sqrt(|l| - c) in regime B); ODE: (3.1) integrated to D exactly
    (chp_ode_until).  g(l0) is formed from V0 directly, so the start of the
-   leg carries no cancellation.
+   leg carries no cancellation, and g(l) at D from the factored (B.1).
    Special cases: D = D0 gives 0, 0; Omega0 = 0 gives dtheta = 0 and
    dtau = |D - D0|/|V0|.
    Errors: CHAPLYGIN_EINVAL (both outputs NULL, bad options), CHAPLYGIN_EDOM
    (non-finite input), CHAPLYGIN_ESTATE (D on the wrong side, beyond a
-   turning point, or the skate at rest), CHAPLYGIN_ESPIN (D is, or lies
-   beyond, the spinning point l = 0 with 2E = H^2, reached only as
-   tau -> inf), CHAPLYGIN_ENOCONV (quadrature/ODE). */
+   turning point or beyond the spinning point, or the skate at rest),
+   CHAPLYGIN_ESPIN (D is the spinning point l = 0 with 2E = H^2, reached
+   only as tau -> inf, or the start is the spinning equilibrium),
+   CHAPLYGIN_ERANGE (|L0 + D| or |L0 + D0| above 2^500, overflow),
+   CHAPLYGIN_ENOCONV (quadrature/ODE). */
 int
 chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
                             double D, const chaplygin_options *opt,
@@ -327,6 +392,8 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
     return CHAPLYGIN_EDOM;
 
   double l0 = L0 + D0, l = L0 + D;
+  if (fabs (l0) > CHP_L_MAX || fabs (l) > CHP_L_MAX)
+    return CHAPLYGIN_ERANGE;
   double n0 = chp_one_plus_sq (l0);
   double E = 0.5 * (V0 * V0 + n0 * Omega0 * Omega0);
   double H = n0 * Omega0;
@@ -355,8 +422,12 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
 
   chp_motion m;
   CHP_TRY (chp_motion_init (E, H, &m));
-  double g0 = n0 * V0 * V0 / (2.0 * E);
-  double gl = chp_motion_g (&m, l);
+  /* g = (1 + l^2) V^2/(2E) at both ends, from V0 and the factored (B.1):
+     g(l) = g(l0) + (D - D0)(2 L0 + D + D0), with no cancellation but that
+     of V^2 itself near a turning point (g from 1 - h^2 would lose
+     log10(l^2/g) digits for large |l|). */
+  double g0 = n0 * V0 * (V0 / (2.0 * E));
+  double gl = g0 + (D - D0) * (2.0 * L0 + D + D0);
   if (m.omh2 >= 0.0)
     {
       if (m.omh2 == 0.0 && l0 * l <= 0.0)
@@ -365,19 +436,27 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
   else if (gl < 0.0 || (l0 * l < 0.0) || (l == 0.0))
     return CHAPLYGIN_ESTATE;
 
+  double th = 0.0, ta = 0.0;
   if (o.method != CHAPLYGIN_ODE)
-    return chp_leg (&m, l0, g0, l, gl, fabs (D - D0), &o, dtheta, dtau);
-
-  double q0[4] = { D0, V0, 0.0, Omega0 }, q1[4], t;
-  int turned;
-  double Dlo = D > D0 ? -HUGE_VAL : D, Dhi = D > D0 ? D : HUGE_VAL;
-  CHP_TRY (chp_ode_until (L0, q0, Dlo, Dhi, 1, o.tol, q1, &t, &turned));
-  if (turned && gl != 0.0)
-    return CHAPLYGIN_ENOCONV;   /* turned back short of D: D is within the
-                                   integration error of the turning point */
+    CHP_TRY (chp_leg (&m, l0, g0, l, gl, fabs (D - D0), &o, dtheta ? &th : NULL,
+                      dtau ? &ta : NULL));
+  else
+    {
+      double q0[4] = { D0, V0, 0.0, Omega0 }, q1[4];
+      int turned;
+      double Dlo = D > D0 ? -HUGE_VAL : D, Dhi = D > D0 ? D : HUGE_VAL;
+      CHP_TRY (chp_ode_until (L0, q0, Dlo, Dhi, 1, o.tol, q1, &ta, &turned));
+      if (turned && gl != 0.0)
+        return CHAPLYGIN_ENOCONV;       /* turned back short of D: D is within
+                                           the integration error of the
+                                           turning point */
+      th = q1[CHAPLYGIN_THETA];
+    }
+  if (!isfinite (th) || !isfinite (ta))
+    return CHAPLYGIN_ERANGE;
   if (dtheta)
-    *dtheta = q1[CHAPLYGIN_THETA];
+    *dtheta = th;
   if (dtau)
-    *dtau = t;
+    *dtau = ta;
   return CHAPLYGIN_SUCCESS;
 }

@@ -48,12 +48,11 @@ int chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out);
 /* L/(1 + L^2) without overflow. */
 double chp_L_over_one_plus_sq (double L);
 
-/* [1 + b b']/[1 + b^2], the collision ratio of (3.6), (3.7) with
-   b = L0 + D-, b' = L0 + D+ (so b b' = L0 (L0 + Delta)); the numerator is
-   formed with an error-free sum so that it is accurate to a few ulps even
-   when 1 + L0 (L0 + Delta) cancels.  L0, Delta give the numerator, b the
-   denominator. */
-double chp_collision_ratio (double L0, double Delta, double b);
+/* [1 + b bp]/[1 + b^2], the collision ratio of (3.6), (3.7): b and bp are
+   L0 + D at the two slot ends (b bp = L0 (L0 + Delta)), b the one in the
+   denominator.  The numerator is formed with an error-free sum so that it
+   is accurate to a few ulps even when 1 + L0 (L0 + Delta) cancels. */
+double chp_collision_ratio (double L0, double Delta, double b, double bp);
 
 /* 1 + L0 (L0 + Delta), accurate to ~1 ulp of the result. */
 double chp_one_plus_L0_L0D (double L0, double Delta);
@@ -92,7 +91,7 @@ int chp_quartic_interval (double sp, double sq, double pmq, double y,
 /* Int_a^b f(t) dt to relative tolerance epsrel (raised to 64 eps at least),
    globally adaptive bisection with GSL's 21-point Kronrod rule, at most
    CHP_QUAD_LIMIT subintervals, no allocation, no GSL error handler.
-   CHAPLYGIN_ENOCONV if the tolerance is not met; CHAPLYGIN_EDOM if f
+   CHAPLYGIN_ENOCONV if the tolerance is not met; CHAPLYGIN_ERANGE if f
    returns a non-finite value. */
 #define CHP_QUAD_LIMIT 256
 int chp_integrate (double (*f) (double, void *), void *params, double a,
@@ -127,8 +126,21 @@ typedef struct
 
 int chp_motion_init (double E, double H, chp_motion *m);
 
-/* g(l) = l^2 + 1 - h^2 = (1 + l^2) V^2/(2E). */
+/* 1 - h^2 = (2E - H^2)/(2E), E > 0, with its sign exact (0 iff 2E = H^2);
+   -Inf on overflow. */
+double chp_one_minus_h2 (double E, double H);
+
+/* The largest |L0 + D| the discrete-skate routines accept: beyond it,
+   (1 + l^2) and its products overflow (CHAPLYGIN_ERANGE). */
+#define CHP_L_MAX 0x1p500
+
+/* g(l) = l^2 + 1 - h^2 = (1 + l^2) V^2/(2E), by one fma (cancels near a
+   turning point at l). */
 double chp_motion_g (const chp_motion *m, double l);
+
+/* The same for l + el (el the rounding error of a computed l), accurate to
+   ~2 ulps of g for the given E, H, l (error-free transformations). */
+double chp_motion_g_exact (const chp_motion *m, double l, double el);
 
 /* Heading and time along one leg from la to lb (no turning point strictly
    between them; lb may be one), ga = g(la), gb = g(lb), dl = |lb - la|. */

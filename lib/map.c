@@ -32,6 +32,11 @@ chaplygin_discrete_init (chaplygin_discrete *sys, double L0, double Delta)
   chp_collision_coefficients (L0, Delta, Delta, &sys->C1[1], &sys->C2[1]);
   sys->l_end[0] = L0;
   sys->l_end[1] = L0 + Delta;
+  {
+    double t = sys->l_end[1], bb = t - L0;      /* TwoSum */
+    sys->l_err[0] = 0.0;
+    sys->l_err[1] = (L0 - (t - bb)) + (Delta - bb);
+  }
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -65,12 +70,13 @@ chaplygin_discrete_coefficients (double L0, double Delta, double Dplus,
 /* chaplygin_discrete_turning_points: (B.5)
        D_c = -L0 -+ sqrt(H^2/(2E) - 1),
    the points where V = 0 for the energy E and momentum H.
-   Method: H^2/(2E) - 1 = fma(H, H, -2E)/(2E), so the radicand is exact to
-   two roundings and its sign exact; n_real = 2 (> 0), 1 (= 0: the double
-   root D = -L0, the spinning point) or 0 (< 0: V never vanishes).
-   Domain: finite; Delta > 0; E > 0; |H| <= 2^500.
-   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE
-   (|H| > 2^500). */
+   Method: H^2/(2E) - 1 by chp_one_minus_h2 (one fma), so the radicand is
+   within two roundings and its sign exact; n_real = 2 (> 0), 1 (= 0: the
+   double root D = -L0, the spinning point) or 0 (< 0: V never vanishes).
+   Domain: finite; Delta > 0; E > 0.
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, Delta <= 0,
+   E < 0), CHAPLYGIN_ESTATE (E = 0: at rest), CHAPLYGIN_ERANGE (H^2/(2E)
+   overflows). */
 int
 chaplygin_discrete_turning_points (double L0, double Delta, double E,
                                    double H, int *n_real, double Dc[2],
@@ -78,21 +84,23 @@ chaplygin_discrete_turning_points (double L0, double Delta, double E,
 {
   if (!n_real || !Dc || !n_in_slot)
     return CHAPLYGIN_EINVAL;
-  if (!chp_finite4 (L0, Delta, E, H) || !(Delta > 0.0) || !(E > 0.0))
+  if (!chp_finite4 (L0, Delta, E, H) || !(Delta > 0.0) || E < 0.0)
     return CHAPLYGIN_EDOM;
-  if (fabs (H) > 0x1p500 || !isfinite (2.0 * E))
+  if (E == 0.0)
+    return CHAPLYGIN_ESTATE;
+  double omh2 = chp_one_minus_h2 (E, H);
+  if (!isfinite (omh2))
     return CHAPLYGIN_ERANGE;
-  double d = fma (H, H, -2.0 * E);
   int n = 0;
   double r[2] = { 0.0, 0.0 };
-  if (d == 0.0)
+  if (omh2 == 0.0)
     {
       n = 1;
       r[0] = -L0;
     }
-  else if (d > 0.0)
+  else if (omh2 < 0.0)
     {
-      double c = sqrt (d / (2.0 * E));
+      double c = sqrt (-omh2);
       n = 2;
       r[0] = -L0 - c;
       r[1] = -L0 + c;
@@ -132,7 +140,7 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   double L0 = sys->L0, Delta = sys->Delta;
   double n0 = chp_one_plus_sq (l0);
   double q0[4] = { in->dir > 0 ? 0.0 : Delta,
-                   in->dir * sqrt (2.0 * m->E * g0 / n0), 0.0, m->H / n0 };
+                   in->dir * sqrt (2.0 * m->E * (g0 / n0)), 0.0, m->H / n0 };
   double q1[4], qp[4], t;
   int turned;
   CHP_TRY (chp_ode_until (L0, q0, 0.0, Delta, 0, tol, q1, &t, &turned));
@@ -145,6 +153,132 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   *Vminus = q1[CHAPLYGIN_V];
   *dtheta = q1[CHAPLYGIN_THETA];
   *dtau = t;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The return map proper; g0_phase, if not NULL, is g(l0) = (1 + l0^2)
+   V+^2/(2E) formed from V+ by the caller (chaplygin_discrete_poincare):
+   from (E, H) alone it loses V+ when V+^2 << (1 + l0^2) Omega+^2. */
+static int
+step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
+           const double *g0_phase, unsigned request,
+           const chaplygin_options *opt, chaplygin_discrete_state *out,
+           chaplygin_discrete_event *ev)
+{
+  chaplygin_options o;
+  if (!sys || !in || !out || (request & ~(unsigned) CHAPLYGIN_WANT_ALL))
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_options_resolve (opt, &o));
+  CHP_TRY (check_state (sys, in));
+  if (request & CHAPLYGIN_WANT_PEG)
+    request |= CHAPLYGIN_WANT_THETA;
+
+  const double L0 = sys->L0, Delta = sys->Delta;
+  const int start = in->dir > 0 ? 0 : 1, far = 1 - start;
+  const double l0 = sys->l_end[start], l1 = sys->l_end[far];
+  if (fabs (l0) > CHP_L_MAX || fabs (l1) > CHP_L_MAX)
+    return CHAPLYGIN_ERANGE;
+
+  chp_motion m;
+  CHP_TRY (chp_motion_init (in->E, in->H, &m));
+  /* g = (1 + l^2) V^2/(2E) at the start (with error-free arithmetic, so
+     that it is accurate for the given E, H even when V+ is small) and, by
+     the factored (B.1), at the far end: g1 = g0 + (l1 - l0)(l1 + l0), with
+     l1 - l0 = dir Delta exactly. */
+  const double g0 = g0_phase ? *g0_phase
+    : chp_motion_g_exact (&m, l0, sys->l_err[start]);
+  if (!(g0 > 0.0))
+    return CHAPLYGIN_ESTATE;
+  const double g1 = g0 + in->dir * Delta * (2.0 * L0 + Delta);
+
+  int reversal = 0;
+  if (m.omh2 >= 0.0)
+    {
+      if (m.omh2 == 0.0 && l0 * l1 <= 0.0)
+        return CHAPLYGIN_ESPIN;
+    }
+  else if (in->dir * l0 < 0.0)
+    reversal = (l0 * l1 <= 0.0 || g1 <= 0.0);
+
+  int iminus = reversal ? start : far;
+  double E1, H1, Vminus, dtheta = 0.0, dtau = 0.0;
+  const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
+  const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
+
+  if (o.method == CHAPLYGIN_ODE)
+    {
+      CHP_TRY (step_ode (sys, in, &m, l0, g0, o.tol, &iminus, &Vminus, &E1,
+                         &H1, &dtheta, &dtau));
+      /* The integration decides by itself which end it reaches; where that
+         contradicts the exact classification, the motion passes within the
+         integration error of a turning point or of the spinning state and
+         the integration cannot be trusted. */
+      if ((iminus == start) != reversal)
+        return CHAPLYGIN_ENOCONV;
+    }
+  else
+    {
+      double gm = reversal ? g0 : g1, lm = reversal ? l0 : l1;
+      E1 = in->E + sys->C1[iminus] * in->H * in->H;
+      H1 = sys->C2[iminus] * in->H;
+      /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction */
+      Vminus = (reversal ? -in->dir : in->dir)
+        * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
+      if (want_theta || want_tau)
+        {
+          double *pth = want_theta ? &dtheta : NULL;
+          double *pta = want_tau ? &dtau : NULL;
+          if (reversal)
+            {
+              /* Out to the turning point and back: twice one leg.
+                 |l0| - c = g0/(|l0| + c) without cancellation. */
+              double c = m.sq, lc = copysign (c, l0);
+              double dl = g0 / (fabs (l0) + c);
+              CHP_TRY (chp_leg (&m, l0, g0, lc, 0.0, dl, &o, pth, pta));
+              dtheta *= 2.0;
+              dtau *= 2.0;
+            }
+          else
+            CHP_TRY (chp_leg (&m, l0, g0, l1, g1, Delta, &o, pth, pta));
+        }
+    }
+  if (!isfinite (E1) || !isfinite (H1) || !isfinite (Vminus))
+    return CHAPLYGIN_ERANGE;
+
+  double Dminus = iminus ? Delta : 0.0;
+  double theta1 = in->theta + dtheta;
+  chaplygin_discrete_state r = *in;
+  /* the direction after the collision is that of V-: the same as before
+     without a reversal, the opposite with one (by the classification, not
+     by the sign of a computed V-, which may be 0) */
+  r.dir = reversal ? -in->dir : in->dir;
+  r.E = E1;
+  r.H = H1;
+  if (want_theta)
+    r.theta = theta1;
+  if (want_tau)
+    r.tau = in->tau + dtau;
+  if (request & CHAPLYGIN_WANT_PEG)
+    {
+      double sn, cs, shift = iminus ? Delta : -Delta;   /* D- - D+' */
+      sincos (theta1, &sn, &cs);
+      r.peg[0] = in->peg[0] + shift * cs;
+      r.peg[1] = in->peg[1] + shift * sn;
+    }
+  if (!chp_finite4 (r.theta, r.tau, r.peg[0], r.peg[1]) || !isfinite (dtheta)
+      || !isfinite (dtau))
+    return CHAPLYGIN_ERANGE;
+  if (ev)
+    {
+      ev->reversal = reversal;
+      ev->Dc = reversal ? copysign (m.sq, l0) - L0 : 0.0;
+      ev->Dminus = Dminus;
+      ev->Dplus = Delta - Dminus;
+      ev->Vminus = Vminus;
+      ev->dtheta = dtheta;
+      ev->dtau = dtau;
+    }
+  *out = r;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -167,14 +301,21 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    updated by the (3.7) coefficients of the end the peg leaves; heading and
    time by opt->method (closed form, quadrature: chp_leg; ODE: (3.1)
    integrated to the collision, then (3.6), (3.3), (3.4): every output of
-   that route comes from the integration).  Only what REQUEST asks for is
+   that route comes from the integration, and an integration that reaches
+   the other end than the exact classification says is reported as
+   CHAPLYGIN_ENOCONV).  Only what REQUEST asks for is
    computed (E, H, dir always).
+   Representation: a state (E, H) holds V+ only to absolute precision
+   ~eps sqrt(2E): when V+^2 << (1 + l0^2) Omega+^2 the map from (E, H) is
+   ill-conditioned in V+; chaplygin_discrete_poincare, which starts from
+   V+ itself, does not have that limitation.
    Domain: a valid system; in->dir = +-1; finite fields; E > 0 and
-   V+^2 = 2E - H^2/(1 + l0^2) > 0.
+   V+^2 = 2E - H^2/(1 + l0^2) > 0; |L0|, |L0 + Delta| <= 2^500.
    Errors: CHAPLYGIN_EINVAL (NULL, dir, request bits, options),
-   CHAPLYGIN_EDOM (non-finite), CHAPLYGIN_ESTATE (E <= 0, V+^2 <= 0),
+   CHAPLYGIN_EDOM (non-finite, E < 0), CHAPLYGIN_ESTATE (E = 0, V+^2 <= 0),
    CHAPLYGIN_ESPIN (2E = H^2 and the path reaches l = 0: no next
-   collision), CHAPLYGIN_ERANGE, CHAPLYGIN_ENOCONV. */
+   collision), CHAPLYGIN_ERANGE (|L0 + D| above 2^500, overflow),
+   CHAPLYGIN_ENOCONV. */
 int
 chaplygin_discrete_step (const chaplygin_discrete *sys,
                          const chaplygin_discrete_state *in,
@@ -182,104 +323,7 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
                          chaplygin_discrete_state *out,
                          chaplygin_discrete_event *ev)
 {
-  chaplygin_options o;
-  if (!sys || !in || !out || (request & ~(unsigned) CHAPLYGIN_WANT_ALL))
-    return CHAPLYGIN_EINVAL;
-  CHP_TRY (chp_options_resolve (opt, &o));
-  CHP_TRY (check_state (sys, in));
-  if (request & CHAPLYGIN_WANT_PEG)
-    request |= CHAPLYGIN_WANT_THETA;
-
-  const double L0 = sys->L0, Delta = sys->Delta;
-  const int start = in->dir > 0 ? 0 : 1, far = 1 - start;
-  const double l0 = sys->l_end[start], l1 = sys->l_end[far];
-
-  chp_motion m;
-  CHP_TRY (chp_motion_init (in->E, in->H, &m));
-  const double g0 = chp_motion_g (&m, l0);
-  if (!(g0 > 0.0))
-    return CHAPLYGIN_ESTATE;
-  const double g1 = chp_motion_g (&m, l1);
-
-  int reversal = 0;
-  if (m.omh2 >= 0.0)
-    {
-      if (m.omh2 == 0.0 && l0 * l1 <= 0.0)
-        return CHAPLYGIN_ESPIN;
-    }
-  else if (in->dir * l0 < 0.0)
-    reversal = (l0 * l1 <= 0.0 || g1 <= 0.0);
-
-  int iminus = reversal ? start : far;
-  double E1, H1, Vminus, dtheta = 0.0, dtau = 0.0;
-  const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
-  const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
-
-  if (o.method == CHAPLYGIN_ODE)
-    {
-      CHP_TRY (step_ode (sys, in, &m, l0, g0, o.tol, &iminus, &Vminus, &E1,
-                         &H1, &dtheta, &dtau));
-      reversal = (iminus == start);
-    }
-  else
-    {
-      double gm = reversal ? g0 : g1, lm = reversal ? l0 : l1;
-      E1 = in->E + sys->C1[iminus] * in->H * in->H;
-      H1 = sys->C2[iminus] * in->H;
-      Vminus = (reversal ? -in->dir : in->dir)
-        * sqrt (2.0 * in->E * gm / chp_one_plus_sq (lm));
-      if (want_theta || want_tau)
-        {
-          double *pth = want_theta ? &dtheta : NULL;
-          double *pta = want_tau ? &dtau : NULL;
-          if (reversal)
-            {
-              /* Out to the turning point and back: twice one leg.
-                 |l0| - c = g0/(|l0| + c) without cancellation. */
-              double c = m.sq, lc = copysign (c, l0);
-              double dl = g0 / (fabs (l0) + c);
-              CHP_TRY (chp_leg (&m, l0, g0, lc, 0.0, dl, &o, pth, pta));
-              dtheta *= 2.0;
-              dtau *= 2.0;
-            }
-          else
-            CHP_TRY (chp_leg (&m, l0, g0, l1, g1, Delta, &o, pth, pta));
-        }
-    }
-  if (!isfinite (E1) || !isfinite (H1))
-    return CHAPLYGIN_ERANGE;
-
-  double Dminus = iminus ? Delta : 0.0;
-  double theta1 = in->theta + dtheta;
-  chaplygin_discrete_state r = *in;
-  r.dir = Vminus > 0.0 ? 1 : -1;
-  r.E = E1;
-  r.H = H1;
-  if (want_theta)
-    r.theta = theta1;
-  if (want_tau)
-    r.tau = in->tau + dtau;
-  if (request & CHAPLYGIN_WANT_PEG)
-    {
-      double s, c, shift = iminus ? Delta : -Delta;   /* D- - D+' */
-      sincos (theta1, &s, &c);
-      r.peg[0] = in->peg[0] + shift * c;
-      r.peg[1] = in->peg[1] + shift * s;
-    }
-  if (!chp_finite4 (r.theta, r.tau, r.peg[0], r.peg[1]))
-    return CHAPLYGIN_ERANGE;
-  if (ev)
-    {
-      ev->reversal = reversal;
-      ev->Dc = reversal ? copysign (m.sq, l0) - L0 : 0.0;
-      ev->Dminus = Dminus;
-      ev->Dplus = Delta - Dminus;
-      ev->Vminus = Vminus;
-      ev->dtheta = dtheta;
-      ev->dtau = dtau;
-    }
-  *out = r;
-  return CHAPLYGIN_SUCCESS;
+  return step_core (sys, in, NULL, request, opt, out, ev);
 }
 
 /* chaplygin_discrete_state_from_phase: {D+, V+, theta+, Omega+} -> map
@@ -341,7 +385,8 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
 /* chaplygin_discrete_poincare: (3.5) f = h o p on phase states.
    p: the motion from just after collision i to just before collision i+1,
       by (B.1) for V and Omega at the end the peg leaves and by the heading
-      of (B.3)/(B.4) (opt->method);
+      of (B.3)/(B.4) (opt->method), with g(l0) = (1 + l0^2) V+^2/(2E) formed
+      from V+ itself (accurate also when V+ is small beside Omega+);
    h: the collision rule (3.6).
    qplus: {D+, V+, theta+, Omega+} with D+ = 0 if V+ > 0, Delta if V+ < 0.
    Errors: those of chaplygin_discrete_state_from_phase and
@@ -358,7 +403,10 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
   chaplygin_discrete_event ev;
   CHP_TRY (chaplygin_discrete_state_from_phase (sys, qplus, 0.0, NULL, &st));
   unsigned req = CHAPLYGIN_WANT_THETA | (dtau ? CHAPLYGIN_WANT_TAU : 0u);
-  CHP_TRY (chaplygin_discrete_step (sys, &st, req, opt, &st, &ev));
+  /* g(l0) from V+ itself: (1 + l0^2) V+^2/(2E) */
+  double l0 = sys->L0 + qplus[CHAPLYGIN_D], V = qplus[CHAPLYGIN_V];
+  double g0 = chp_one_plus_sq (l0) * V * (V / (2.0 * st.E));
+  CHP_TRY (step_core (sys, &st, &g0, req, opt, &st, &ev));
 
   /* p: (B.1) from the post-collision state to the end the peg leaves. */
   double V2, Om;
@@ -366,7 +414,8 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
                                     qplus[CHAPLYGIN_V],
                                     qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2,
                                     &Om));
-  double qminus[4] = { ev.Dminus, copysign (sqrt (V2), ev.Vminus),
+  double qminus[4] = { ev.Dminus, (ev.reversal ? -1 : 1) * copysign (sqrt (V2),
+                                                                 qplus[CHAPLYGIN_V]),
                        qplus[CHAPLYGIN_THETA] + ev.dtheta, Om };
   /* h: (3.6). */
   double q[4];

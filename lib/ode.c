@@ -1,10 +1,13 @@
-/* ode.c -- integration of (3.1) with exact event location (the ODE method).
+/* ode.c -- integration of (3.1) with event location (the ODE method).
 
-   GSL's odeiv2 has no event location.  Events are located exactly by
-   Henon's trick: once a step of the time integration crosses the event
-   surface, the step is undone and the last stretch is integrated with the
-   event coordinate itself as the independent variable (D for reaching a slot
-   end, V for a turning point), up to the event value exactly.
+   GSL's odeiv2 has no event location.  Once a step of the time integration
+   crosses an event surface (D at a bound, or V = 0), the event time is
+   found by Newton's method on the event function, safeguarded by the
+   bracket of the step, each iterate obtained by re-integrating from the
+   start of the step (the derivatives of the event functions are known:
+   dD/dtau = V, dV/dtau = (L0 + D) Omega^2).  Unlike Henon's trick (the
+   event coordinate as independent variable), this stays accurate when V is
+   small all along the last stretch, as it is near a turning point.
 
    Velocity scaling (a symmetry of (3.1): V, Omega -> lambda V, lambda Omega,
    tau -> tau/lambda) brings every problem to energy 1/2 before integrating,
@@ -30,51 +33,18 @@
 
 struct ode_params
 {
-  double L0;
+  double l0;                    /* L0 + D0: the position is d = D - D0 */
 };
 
-/* (3.1) in time: y = {D, V, theta, Omega}. */
+/* (3.1) in time: y = {d, V, theta, Omega}, d = D - D0, so l = l0 + d:
+   the field of the library with L0 := l0 and D := d. */
 static int
 rhs_time (double t, const double y[], double dydt[], void *p)
 {
   (void) t;
   const struct ode_params *par = p;
-  if (chaplygin_discrete_field (par->L0, y, dydt) != CHAPLYGIN_SUCCESS)
+  if (chaplygin_discrete_field (par->l0, y, dydt) != CHAPLYGIN_SUCCESS)
     return GSL_EBADFUNC;
-  return GSL_SUCCESS;
-}
-
-/* (3.1) with D as independent variable: y = {tau, V, theta, Omega}. */
-static int
-rhs_D (double D, const double y[], double dy[], void *p)
-{
-  const struct ode_params *par = p;
-  double q[4] = { D, y[1], y[2], y[3] }, dq[4];
-  if (chaplygin_discrete_field (par->L0, q, dq) != CHAPLYGIN_SUCCESS
-      || y[1] == 0.0)
-    return GSL_EBADFUNC;
-  double iv = 1.0 / y[1];
-  dy[0] = iv;
-  dy[1] = dq[1] * iv;
-  dy[2] = dq[2] * iv;
-  dy[3] = dq[3] * iv;
-  return GSL_SUCCESS;
-}
-
-/* (3.1) with V as independent variable: y = {tau, D, theta, Omega}. */
-static int
-rhs_V (double V, const double y[], double dy[], void *p)
-{
-  const struct ode_params *par = p;
-  double q[4] = { y[1], V, y[2], y[3] }, dq[4];
-  if (chaplygin_discrete_field (par->L0, q, dq) != CHAPLYGIN_SUCCESS
-      || dq[1] == 0.0)
-    return GSL_EBADFUNC;
-  double ia = 1.0 / dq[1];
-  dy[0] = ia;
-  dy[1] = dq[0] * ia;
-  dy[2] = dq[2] * ia;
-  dy[3] = dq[3] * ia;
   return GSL_SUCCESS;
 }
 
@@ -96,37 +66,110 @@ integrator_free (struct integrator *it)
     gsl_odeiv2_step_free (it->step);
 }
 
-/* Integrate SYS from x to x1 exactly (adaptive steps, last one trimmed). */
+/* Integrate SYS from x to x1 (adaptive steps, the last one trimmed to land
+   on x1).  GSL may leave x a rounding error beyond x1 when a step ends
+   next to it; the loop stops there (the state is then x1's to rounding)
+   rather than ask GSL for a step of the wrong direction, which its error
+   handler would report. */
 static int
 integrate_to (struct integrator *it, gsl_odeiv2_system *sys, double *x,
               double x1, double h, double y[4])
 {
   gsl_odeiv2_evolve_reset (it->evolve);
   gsl_odeiv2_step_reset (it->step);
-  if (fabs (h) > fabs (x1 - *x))
-    h = x1 - *x;
-  h = copysign (fabs (h), x1 - *x);
-  for (long n = 0; *x != x1; n++)
+  const double dir = x1 > *x ? 1.0 : -1.0;
+  for (long n = 0; (x1 - *x) * dir > 0.0; n++)
     {
       if (n == ODE_MAX_STEPS)
         return CHAPLYGIN_ENOCONV;
+      h = dir * fmin (fabs (h), fabs (x1 - *x));
+      if (h == 0.0)
+        break;
       int st = gsl_odeiv2_evolve_apply (it->evolve, it->control, it->step,
                                         sys, x, x1, &h, y);
       if (st != GSL_SUCCESS)
         return CHAPLYGIN_ENOCONV;
     }
+  *x = x1;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The state at time t, integrated from (ta, ya). */
+static int
+state_at (struct integrator *it, gsl_odeiv2_system *sys, double ta,
+          const double ya[4], double t, double y[4])
+{
+  for (int i = 0; i < 4; i++)
+    y[i] = ya[i];
+  double x = ta;
+  if (t == ta)
+    return CHAPLYGIN_SUCCESS;
+  return integrate_to (it, sys, &x, t, t - ta, y);
+}
+
+/* Find t in [lo, hi] where y[comp](t) = target, given that y[comp] - target
+   changes sign over [lo, hi] (ylo, yhi the states there); the state at the
+   root goes to ye with ye[comp] = target exactly.  Safeguarded Newton with
+   the analytic derivative of the event function; every iterate integrated
+   from (lo, ylo). */
+static int
+refine (struct integrator *it, gsl_odeiv2_system *sys, double L0, int comp,
+        double target, double lo, const double ylo[4], double hi,
+        const double yhi[4], double *te, double ye[4])
+{
+  const double t0 = lo, y0[4] = { ylo[0], ylo[1], ylo[2], ylo[3] };
+  double flo = ylo[comp] - target, fhi = yhi[comp] - target;
+  double best_t = hi, best_f = fhi, y[4];
+  for (int i = 0; i < 4; i++)
+    ye[i] = yhi[i];
+  if (flo == 0.0)
+    {
+      best_t = lo, best_f = 0.0;
+      for (int i = 0; i < 4; i++)
+        ye[i] = ylo[i];
+    }
+  double t = lo - flo * (hi - lo) / (fhi - flo);        /* secant start */
+  for (int iter = 0; iter < 100 && best_f != 0.0; iter++)
+    {
+      if (!(t > lo && t < hi))
+        t = 0.5 * (lo + hi);
+      if (t == lo || t == hi)
+        break;                  /* the bracket is one ulp wide */
+      CHP_TRY (state_at (it, sys, t0, y0, t, y));
+      double f = y[comp] - target;
+      if (fabs (f) < fabs (best_f))
+        {
+          best_t = t, best_f = f;
+          for (int i = 0; i < 4; i++)
+            ye[i] = y[i];
+        }
+      if (f == 0.0)
+        break;
+      if ((f < 0.0) == (flo < 0.0))
+        lo = t, flo = f;
+      else
+        hi = t, fhi = f;
+      double df = comp == CHAPLYGIN_D ? y[CHAPLYGIN_V]
+        : (L0 + y[CHAPLYGIN_D]) * y[CHAPLYGIN_OMEGA] * y[CHAPLYGIN_OMEGA];
+      double tn = df != 0.0 ? t - f / df : 0.5 * (lo + hi);
+      if (tn == t)
+        break;                  /* converged to rounding */
+      t = tn;
+    }
+  *te = best_t;
+  ye[comp] = target;
   return CHAPLYGIN_SUCCESS;
 }
 
 /* chp_ode_until: see internal.h.
-   Method: (3.1), scaled to E = 1/2, integrated in time by rk8pd under a
-   standard error control (relative tol, absolute tol/100 on components
-   scaled to the problem: lengths by max(|D0|, |Dhi - Dlo|, 1) where finite).
-   After each accepted step the event tests run: D outside (Dlo, Dhi), or V
-   changed sign (stop_at_turn).  A crossing step is undone and the crossing
-   integrated in D (or V) to the exact event value.  A step in which V
-   changes sign and D also leaves the interval is undone and retaken in
-   eighths, so that the Henon stretch never contains a turning point.
+   Method: (3.1), scaled to E = 1/2, for d = D - D0, integrated in time by
+   rk8pd under an error control relative to tol with absolute floors (see
+   the scales below).
+   After each accepted step: if V changed sign in it, the turning point is
+   located first (refine on V = 0); if D went beyond a bound before that
+   turn (or in a step without one), the crossing is located (refine on D).
+   So an exit followed by a return within one step is not missed, and the
+   bracket of every refinement contains one monotone stretch.
    Errors: CHAPLYGIN_ENOCONV if a step fails or ODE_MAX_STEPS are taken
    (e.g. a motion creeping towards the spinning state); CHAPLYGIN_ESTATE at
    rest; CHAPLYGIN_ERANGE if the energy overflows; CHAPLYGIN_ENOMEM if an
@@ -136,20 +179,32 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
                int stop_at_turn, double tol, double q1[4], double *tau,
                int *turned)
 {
-  double l0 = L0 + q0[CHAPLYGIN_D];
+  double D0 = q0[CHAPLYGIN_D], l0 = L0 + D0;
+  double n0 = chp_one_plus_sq (l0);
   double twoE = q0[CHAPLYGIN_V] * q0[CHAPLYGIN_V]
-    + chp_one_plus_sq (l0) * q0[CHAPLYGIN_OMEGA] * q0[CHAPLYGIN_OMEGA];
+    + n0 * q0[CHAPLYGIN_OMEGA] * q0[CHAPLYGIN_OMEGA];
   if (!isfinite (twoE))
     return CHAPLYGIN_ERANGE;
   if (!(twoE > 0.0))
     return CHAPLYGIN_ESTATE;    /* at rest: no event is ever reached */
   double lambda = 1.0 / sqrt (twoE);    /* velocity scale */
 
-  double D0 = q0[CHAPLYGIN_D];
+  /* The position is integrated as d = D - D0, so that an excursion far
+     below the ulp of D (a turning point just inside the start) keeps its
+     relative precision; the bounds become Dlo - D0, Dhi - D0 (exactly 0
+     for the end the motion starts from).  l = l0 + d in the field. */
+  double dlo = Dlo - D0, dhi = Dhi - D0;
+  /* Scales of the components, in the units of E = 1/2: the error control
+     is relative (tol) with an absolute floor tol/100 times these.  d and
+     theta start at 0 and Omega never changes sign but may fall by orders
+     of magnitude along a long leg (as 1/l^2), so their floors are tiny
+     (relative control); V's is its initial size, because V passes through
+     0 at turning points, where relative control would stall. */
   double span = (isfinite (Dlo) && isfinite (Dhi)) ? Dhi - Dlo
     : isfinite (Dhi) ? Dhi - D0 : isfinite (Dlo) ? D0 - Dlo : 1.0;
   double lscale = fmax (span, 1e-300);
-  double scale_abs[4] = { lscale, 1.0, 1.0, 1.0 };
+  double vscale = fmax (fabs (q0[CHAPLYGIN_V] * lambda), 1e-300);
+  double scale_abs[4] = { lscale * 0x1p-200, vscale, 1e-300, 1e-300 };
 
   struct integrator it = { NULL, NULL, NULL };
   it.step = gsl_odeiv2_step_alloc (gsl_odeiv2_step_rk8pd, 4);
@@ -162,89 +217,69 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
       return CHAPLYGIN_ENOMEM;
     }
 
-  struct ode_params par = { L0 };
-  gsl_odeiv2_system sys_t = { rhs_time, NULL, 4, &par };
-  gsl_odeiv2_system sys_D = { rhs_D, NULL, 4, &par };
-  gsl_odeiv2_system sys_V = { rhs_V, NULL, 4, &par };
+  struct ode_params par = { l0 };
+  gsl_odeiv2_system sys = { rhs_time, NULL, 4, &par };
 
-  double y[4] = { q0[0], q0[1] * lambda, q0[2], q0[3] * lambda };
-  double t = 0.0;
-  double h = 1e-3 * fmin (lscale, 1.0);
-  double hmax = HUGE_VAL;
-  double vsign = y[1] != 0.0 ? chp_sign (y[1]) : 0.0;
-  int status = CHAPLYGIN_ENOCONV;
-  int event = 0;                /* 1: D bound, 2: turning point */
+  double y[4] = { 0.0, q0[1] * lambda, q0[2], q0[3] * lambda };
+  double t = 0.0, h = 1e-3 * fmin (lscale, 1.0);
+  int status = CHAPLYGIN_ENOCONV, event = 0;    /* 1: D bound, 2: V = 0 */
+  double te = 0.0, ye[4];
 
-  for (long n = 0; n < ODE_MAX_STEPS; n++)
+  for (long n = 0; n < ODE_MAX_STEPS && event == 0; n++)
     {
       double ta = t, ya[4] = { y[0], y[1], y[2], y[3] };
-      double t1 = (hmax == HUGE_VAL) ? 1e300 : t + hmax;
-      if (gsl_odeiv2_evolve_apply (it.evolve, it.control, it.step, &sys_t,
-                                   &t, t1, &h, y) != GSL_SUCCESS)
+      if (gsl_odeiv2_evolve_apply (it.evolve, it.control, it.step, &sys,
+                                   &t, 1e300, &h, y) != GSL_SUCCESS)
         break;
-      if (hmax != HUGE_VAL && h > hmax)
-        h = hmax;
-      int out = (y[0] >= Dhi || y[0] <= Dlo);
-      int flipped = (vsign != 0.0 && (y[1] == 0.0 || chp_sign (y[1]) != vsign));
-      if (out && ya[1] * y[1] <= 0.0)
+      /* the stretch to examine for a D crossing: [ta, tc] with state yc */
+      double tc = t, yc[4] = { y[0], y[1], y[2], y[3] };
+      if (ya[1] * y[1] < 0.0)
         {
-          /* A turning point (or the start, V = 0) and the exit in one step:
-             the D-parametrised stretch would be singular.  Undo, retake
-             the step in eighths; hmax stays reduced from then on. */
-          t = ta;
-          for (int i = 0; i < 4; i++)
-            y[i] = ya[i];
-          gsl_odeiv2_evolve_reset (it.evolve);
-          gsl_odeiv2_step_reset (it.step);
-          hmax = (hmax == HUGE_VAL ? h : hmax) / 8.0;
-          h = hmax;
-          if (hmax < 1e-300)
+          double tt, yt[4];
+          status = refine (&it, &sys, l0, CHAPLYGIN_V, 0.0, ta, ya, t, y, &tt, yt);
+          if (status != CHAPLYGIN_SUCCESS)
             break;
-          continue;
-        }
-      if (out)
-        {
-          double bound = (y[0] >= Dhi) ? Dhi : Dlo;
-          t = ta;
-          for (int i = 0; i < 4; i++)
-            y[i] = ya[i];
-          double x = y[0], z[4] = { t, y[1], y[2], y[3] };
-          status = integrate_to (&it, &sys_D, &x, bound, bound - x, z);
-          if (status == CHAPLYGIN_SUCCESS)
+          if (yt[0] >= dhi || yt[0] <= dlo)
             {
-              t = z[0];
-              y[0] = bound, y[1] = z[1], y[2] = z[2], y[3] = z[3];
-              event = 1;
+              tc = tt;          /* the exit came before the turn */
+              for (int i = 0; i < 4; i++)
+                yc[i] = yt[i];
             }
-          break;
-        }
-      if (flipped && stop_at_turn)
-        {
-          t = ta;
-          for (int i = 0; i < 4; i++)
-            y[i] = ya[i];
-          double x = y[1], z[4] = { t, y[0], y[2], y[3] };
-          status = integrate_to (&it, &sys_V, &x, 0.0, -x, z);
-          if (status == CHAPLYGIN_SUCCESS)
+          else if (stop_at_turn)
             {
-              t = z[0];
-              y[0] = z[1], y[1] = 0.0, y[2] = z[2], y[3] = z[3];
+              te = tt;
+              for (int i = 0; i < 4; i++)
+                ye[i] = yt[i];
               event = 2;
+              break;
             }
-          break;
+          else if (y[0] >= dhi || y[0] <= dlo)
+            {
+              ta = tt;          /* the exit came after the turn */
+              for (int i = 0; i < 4; i++)
+                ya[i] = yt[i];
+            }
         }
-      if (y[1] != 0.0)
-        vsign = chp_sign (y[1]);
+      if (yc[0] >= dhi || yc[0] <= dlo)
+        {
+          int upper = yc[0] >= dhi;
+          status = refine (&it, &sys, l0, CHAPLYGIN_D, upper ? dhi : dlo, ta, ya, tc,
+                           yc, &te, ye);
+          if (status != CHAPLYGIN_SUCCESS)
+            break;
+          ye[0] = upper ? Dhi : Dlo;            /* land on the bound exactly */
+          event = 1;
+        }
     }
   integrator_free (&it);
-  if (status != CHAPLYGIN_SUCCESS || event == 0)
+  if (event == 0)
     return CHAPLYGIN_ENOCONV;
 
-  q1[CHAPLYGIN_D] = y[0];
-  q1[CHAPLYGIN_V] = y[1] / lambda;
-  q1[CHAPLYGIN_THETA] = y[2];
-  q1[CHAPLYGIN_OMEGA] = y[3] / lambda;
-  *tau = t * lambda;
+  q1[CHAPLYGIN_D] = event == 1 ? ye[0] : D0 + ye[0];
+  q1[CHAPLYGIN_V] = ye[1] / lambda;
+  q1[CHAPLYGIN_THETA] = ye[2];
+  q1[CHAPLYGIN_OMEGA] = ye[3] / lambda;
+  *tau = te * lambda;
   *turned = (event == 2);
   return CHAPLYGIN_SUCCESS;
 }

@@ -57,7 +57,8 @@ rule (const gsl_function *fn, struct piece *pc)
    max(epsrel, 64 eps) |result|.  The Kronrod error estimate is floored by
    GSL at 50 eps times the integral of |f| on each piece, so no tolerance
    below that could be certified; 64 eps leaves a margin for the summation.
-   Errors: CHAPLYGIN_EDOM if f returns NaN or Inf anywhere it is sampled;
+   Errors: CHAPLYGIN_ERANGE if f returns NaN or Inf anywhere it is sampled
+   (the integrand is not representable there);
    CHAPLYGIN_ENOCONV if the subinterval limit is reached first (the integrand
    has a singularity the caller should have removed). */
 int
@@ -90,7 +91,7 @@ chp_integrate (double (*f) (double, void *), void *params, double a,
             worst = i;
         }
       if (g.bad)
-        return CHAPLYGIN_EDOM;
+        return CHAPLYGIN_ERANGE;
       if (err <= tol * fabs (total))
         {
           *result = total;

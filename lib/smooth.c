@@ -197,7 +197,9 @@ chaplygin_smooth_reversal (double L, const double q0[4], int *reverses,
   if (!isfinite (L) || !chp_finite4 (q0[0], q0[1], q0[2], q0[3]))
     return CHAPLYGIN_EDOM;
   double V0 = q0[CHAPLYGIN_V], Om0 = q0[CHAPLYGIN_OMEGA];
-  if (!(L * V0 < 0.0) || Om0 == 0.0)
+  /* a reversal iff L and V0 have opposite signs (compared as signs: the
+     product could underflow) and Omega0 != 0 */
+  if (L == 0.0 || V0 == 0.0 || (L < 0.0) == (V0 < 0.0) || Om0 == 0.0)
     {
       *reverses = 0;
       return CHAPLYGIN_SUCCESS;
@@ -209,6 +211,23 @@ chaplygin_smooth_reversal (double L, const double q0[4], int *reverses,
   *reverses = 1;
   *Sc = s;
   return CHAPLYGIN_SUCCESS;
+}
+
+/* V0^2 = 2 E0 - H0^2/(1 + L^2) as [2 E0 (1 + L^2) - H0^2]/(1 + L^2), the
+   numerator formed with an error-free product and one fma: its sign is
+   exact for the rounded 1 + L^2 (so V0 = 0 is recognised whenever the
+   inputs make it exactly so), its value accurate to ~1 ulp. */
+static double
+v0_squared (double L, double E0, double H0)
+{
+  double n = chp_one_plus_sq (L), twoE = 2.0 * E0;
+  double p = twoE * n, e = fma (twoE, n, -p);   /* 2 E0 n = p + e exactly */
+  if (!isfinite (p) || !isfinite (H0 * H0))
+    {
+      double b = H0 / hypot (1.0, L);            /* overflow-free form */
+      return twoE - b * b;
+    }
+  return (fma (-H0, H0, p) + e) / n;
 }
 
 /* chaplygin_smooth_reversal_eh: (A.6)
@@ -228,10 +247,10 @@ chaplygin_smooth_reversal_eh (double L, double S0, double E0, double H0,
     return CHAPLYGIN_EDOM;
   double B = hypot (1.0, L);
   double BOm = H0 / B;                  /* B Omega0 */
-  double v2 = 2.0 * E0 - BOm * BOm;
+  double v2 = v0_squared (L, E0, H0);
   if (v2 < 0.0)
     return CHAPLYGIN_ESTATE;
-  if (!(L * dir0 < 0.0) || H0 == 0.0 || v2 == 0.0)
+  if (L == 0.0 || (L < 0.0) == (dir0 < 0) || H0 == 0.0 || v2 == 0.0)
     {
       *reverses = 0;
       return CHAPLYGIN_SUCCESS;
@@ -379,7 +398,7 @@ check_closed_form_args (double L, const double q0[4], double S)
 }
 
 /* chaplygin_smooth_closed_form: (A.2) with (A.3), corrected beyond S_c:
-       V(S) = K sqrt(V0^2 + Omega0^2 (1 + L^2)(1 - exp(-2 a x))),
+       V(S) = K s0 sqrt(V0^2 + Omega0^2 (1 + L^2)(1 - exp(-2 a x))),
        Omega(S) = Omega0 exp(-a x),
        theta(S) = theta0 + sgn(Omega0) (sqrt(1 + L^2)/L) (psi(S) - psi0),
    x = s0 (S - S0) before the reversal, x = s0 (2 S_c - S - S0) after it
@@ -455,11 +474,11 @@ chaplygin_smooth_closed_form_eh (double L, const double p0[4], int dir0,
   if (!isfinite (L) || !chp_finite4 (p0[0], p0[1], p0[2], p0[3])
       || !isfinite (S) || !(S >= p0[CHAPLYGIN_S]) || !(p0[CHAPLYGIN_E] >= 0.0))
     return CHAPLYGIN_EDOM;
-  double B = hypot (1.0, L);
   double E0 = p0[CHAPLYGIN_E], H0 = p0[CHAPLYGIN_H];
   double Om0 = H0 / chp_one_plus_sq (L);
-  double BOm = H0 / B;
-  double v2 = 2.0 * E0 - BOm * BOm;
+  double v2 = v0_squared (L, E0, H0);
+  if (!isfinite (v2))
+    return CHAPLYGIN_ERANGE;
   if (v2 < 0.0)
     return CHAPLYGIN_ESTATE;
   if (v2 > 0.0 && dir0 != 1 && dir0 != -1)

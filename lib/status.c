@@ -93,19 +93,16 @@ chp_one_plus_L0_L0D (double L0, double Delta)
   return fma (L0, s, 1.0) + L0 * e;
 }
 
-/* chp_collision_ratio: [1 + L0 (L0 + Delta)]/[1 + b^2].  For |b| <= 2^500 the
-   quotient of two accurately formed numbers (error <= ~2 ulps); beyond,
-   where 1 + b^2 would overflow, both are divided by b^2 first. */
+/* chp_collision_ratio: [1 + L0 (L0 + Delta)]/[1 + b^2], where b and bp are
+   the values of L0 + D at the two slot ends (b for the denominator, bp the
+   other; b bp = L0 (L0 + Delta)).  For arguments up to 2^500 the quotient
+   of two accurately formed numbers (error <= ~2 ulps); beyond, where 1 + b^2
+   would overflow, (1/b^2 + bp/b)/(1/b^2 + 1). */
 double
-chp_collision_ratio (double L0, double Delta, double b)
+chp_collision_ratio (double L0, double Delta, double b, double bp)
 {
   if (fabs (b) <= 0x1p500 && fabs (L0) <= 0x1p500 && fabs (Delta) <= 0x1p500)
     return chp_one_plus_L0_L0D (L0, Delta) / chp_one_plus_sq (b);
-  {
-    /* (1 + L0 (L0 + Delta))/b^2 with L0 (L0 + Delta) = b b' and
-       b' = 2 L0 + Delta - b: ratio = (1/b^2 + b'/b)/(1/b^2 + 1). */
-    double ib = 1.0 / b;
-    double bprime = (L0 - b) + (L0 + Delta);
-    return (ib * ib + bprime * ib) / (ib * ib + 1.0);
-  }
+  double ib = 1.0 / b;
+  return (ib * ib + bp * ib) / (ib * ib + 1.0);
 }

@@ -7,6 +7,7 @@
 
 #include "internal.h"
 #include "ref_map.h"
+#include "ref_poincare.h"
 #include "testutil.h"
 
 #define NREF (sizeof ref_map / sizeof ref_map[0])
@@ -213,7 +214,14 @@ START_TEST (eq_B_5)
   double Dc[2] = { 7, 7 };
   ck_assert_ok (chaplygin_discrete_turning_points (-0.25, 1.0, 0.78125, 1.25, &nr, Dc, &ns));
   ck_assert (nr == 1 && Dc[0] == 0.25 && ns == 1);
-  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 0.0, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 0.0, 1, &nr, Dc, &ns), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, -1.0, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
+  /* |H| beyond 2^500: the radicand by scaled arithmetic, still exact in
+     sign: H = 2^510, 2E = 2^1020 gives H^2 = 2E, a double root */
+  ck_assert_ok (chaplygin_discrete_turning_points (-0.5, 1, 0x1p1019, 0x1p510, &nr, Dc, &ns));
+  ck_assert (nr == 1 && Dc[0] == 0.5);
+  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1e-300, 1e200, &nr, Dc, &ns),
+                    CHAPLYGIN_ERANGE);
   ck_assert_status (chaplygin_discrete_turning_points (0, 0, 1, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_turning_points (NAN, 1, 1, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1e200, &nr, Dc, &ns), CHAPLYGIN_ERANGE);
@@ -254,9 +262,27 @@ START_TEST (eq_3_5)
          former is conditioned by (2E')/V'^2. */
       double kappa = 2 * s1.E / (q1[1] * q1[1]);
       ck_assert_rel (qn[CHAPLYGIN_V], q1[CHAPLYGIN_V], 16 * DBL_EPSILON * kappa);
-      ck_assert_rel (qn[CHAPLYGIN_THETA], q1[CHAPLYGIN_THETA], 4 * DBL_EPSILON);
+      /* The step from (E, H) inherits that conditioning through g(l0) in
+         its heading and time; the Poincare map starts from V+ and does not.
+         Compared where the state is well conditioned (kappa < 100); the
+         ill-conditioned states are checked against references below. */
+      /* The step is now exact for its (E, H), which carry one rounding
+         each: g(l0) = [2E (1 + l0^2) - H^2]/(2E) has condition number
+         (2E + H^2/(1 + l0^2))/V^2 ~ 2 kappa in them.  And a turning point
+         near the far end conditions both routes. */
+      double om = 1 - s.H * s.H / (2 * s.E), kfar = 1;
+      for (int e = 0; e < 2; e++)
+        {
+          double l = L0 + (e ? Dl : 0.0);
+          kfar = fmax (kfar, (l * l + fabs (om)) / fabs (l * l + om));
+        }
+      kappa = 2 * kappa * kfar;         /* composed condition numbers */
+      if (kappa < 100)
+        {
+          ck_assert_rel (qn[CHAPLYGIN_THETA], q1[CHAPLYGIN_THETA], 16 * DBL_EPSILON * kappa);
+          ck_assert_rel (dt, s1.tau, 16 * DBL_EPSILON * kappa);
+        }
       ck_assert_rel (qn[CHAPLYGIN_OMEGA], q1[CHAPLYGIN_OMEGA], 8 * DBL_EPSILON);
-      ck_assert_rel (dt, s1.tau, 0.0);
       ck_assert_ok (chaplygin_discrete_poincare (&sys, q, &ODE, qo, &dto));
       ck_assert (qo[CHAPLYGIN_D] == qn[CHAPLYGIN_D]);
       for (int j = 1; j < 4; j++)
@@ -264,6 +290,28 @@ START_TEST (eq_3_5)
                        "component %d: ODE %.17g closed %.17g", j, qo[j], qn[j]);
       ck_assert_rel (dto, dt, 1e-10 * kappa);
     }
+  /* V+ small beside Omega+ (the reviewer's cases): a state (E, H) cannot
+     hold V+, the phase form can.  References at 40 digits (ref_poincare.h);
+     the heading and time are then as well conditioned as anywhere: 16 eps
+     (test_ellint), all three methods within their tolerances. */
+  for (size_t i = 0; i < sizeof ref_poincare / sizeof ref_poincare[0]; i++)
+    {
+      chaplygin_discrete sp;
+      ck_assert_ok (chaplygin_discrete_init (&sp, ref_poincare[i].L0, ref_poincare[i].Delta));
+      double q[4] = { ref_poincare[i].V > 0 ? 0.0 : ref_poincare[i].Delta, ref_poincare[i].V,
+                      0.0, ref_poincare[i].Omega }, qn[4], dt;
+      const chaplygin_options *meth[3] = { &CLOSED, &QUAD, &ODE };
+      const double tol[3] = { 16 * DBL_EPSILON, 1e-13, 1e-10 };
+      for (int j = 0; j < 3; j++)
+        {
+          ck_assert_ok (chaplygin_discrete_poincare (&sp, q, meth[j], qn, &dt));
+          ck_assert_rel (qn[CHAPLYGIN_THETA], ref_poincare[i].dtheta, tol[j]);
+          ck_assert_rel (dt, ref_poincare[i].dtau, tol[j]);
+          ck_assert_rel (qn[CHAPLYGIN_V], ref_poincare[i].V1, j == 2 ? 1e-10 : 4 * DBL_EPSILON);
+          ck_assert_rel (qn[CHAPLYGIN_OMEGA], ref_poincare[i].Omega1, j == 2 ? 1e-10 : 4 * DBL_EPSILON);
+        }
+    }
+
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, 0.5, 1.0));
   double q[4] = { 0.0, -1.0, 0.0, 1.0 }, qn[4] = { 9, 9, 9, 9 };
@@ -442,6 +490,69 @@ START_TEST (test_requests_and_conventions)
 }
 END_TEST
 
+START_TEST (test_extremes_found_in_review)
+{
+  /* Cases a review found wrong in an earlier version, each with a
+     reference from its own route. */
+  const chaplygin_options *meth[3] = { &CLOSED, &QUAD, &ODE };
+  chaplygin_discrete sys;
+  chaplygin_discrete_state o;
+  /* Tiny lever arm and slot, L0 = Delta = 1e-200, E = H = 1/2 (h = 1/2):
+     the integrand h/sqrt((1 + l^2)(l^2 + 1 - h^2)) is 1/sqrt(3) to
+     O(l^2) = 1e-400, so dtheta = Delta/sqrt(3) (the old tan(mu) formula
+     underflowed to 0). */
+  ck_assert_ok (chaplygin_discrete_init (&sys, 1e-200, 1e-200));
+  chaplygin_discrete_state s = { 1, 0.5, 0.5, 0, 0, { 0, 0 } };
+  for (int j = 0; j < 3; j++)
+    {
+      ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, meth[j], &o, NULL));
+      ck_assert_rel (o.theta, 1e-200 / sqrt (3.0), j == 2 ? 1e-10 : 4 * DBL_EPSILON);
+    }
+  /* Far from the slot, L0 = 1e80, Delta = 1: the integrand is h/l^2 to
+     O(1/l^2), dtheta = h Delta/(L0 (L0 + Delta)) = 5e-161 (the old
+     quadrature integrand overflowed). */
+  ck_assert_ok (chaplygin_discrete_init (&sys, 1e80, 1.0));
+  for (int j = 0; j < 3; j++)
+    {
+      ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, meth[j], &o, NULL));
+      ck_assert_rel (o.theta, 5e-161, j == 2 ? 1e-10 : 4 * DBL_EPSILON);
+      ck_assert_rel (o.tau, 1.0, j == 2 ? 1e-10 : 4 * DBL_EPSILON);
+    }
+  /* A slot of 1e100 from L0 = 1: the leg spans 100 decades of |l|.
+     Reference: mpmath quadrature at 40 digits of h/sqrt((1 + l^2)(l^2 +
+     1 - h^2)) over [1, 1 + 1e100] split at the powers of 10:
+     0.4021830506160327782524394 (the old quadrature returned 0). */
+  ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 1e100));
+  ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, &CLOSED, &o, NULL));
+  ck_assert_rel (o.theta, 0.4021830506160327782524394, 4 * DBL_EPSILON);
+  ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, &QUAD, &o, NULL));
+  ck_assert_rel (o.theta, 0.4021830506160327782524394, 1e-13);
+  /* Within 1 ulp of the spinning energy with the spinning point at the far
+     end (L0 = -1, Delta = 1, H = 1, E = 1/2 + 1 ulp): no reversal, V- =
+     sqrt(2E - H^2) = 1.49e-8 exactly by (B.1).  The integration cannot
+     resolve it and says so; the closed form does. */
+  ck_assert_ok (chaplygin_discrete_init (&sys, -1.0, 1.0));
+  chaplygin_discrete_state ns = { 1, nextafter (0.5, 1.0), 1.0, 0, 0, { 0, 0 } };
+  chaplygin_discrete_event ev;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &ns, CHAPLYGIN_WANT_ALL, &CLOSED, &o, &ev));
+  ck_assert (!ev.reversal && o.dir == 1);
+  ck_assert_rel (ev.Vminus, sqrt (2 * ns.E - 1.0), 4 * DBL_EPSILON);
+  ck_assert_status (chaplygin_discrete_step (&sys, &ns, CHAPLYGIN_WANT_ALL, &ODE, &o, &ev),
+                    CHAPLYGIN_ENOCONV);
+  /* |H| beyond 2^500: the spinning test is exact there too, and the
+     predicate and the map agree (H = 2^510, 2E = 2^1020). */
+  int spins;
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+  ck_assert_ok (chaplygin_discrete_spins (-0.5, 1.0, 1, 0x1p1019, 0x1p510, &spins));
+  ck_assert_int_eq (spins, 1);
+  chaplygin_discrete_state bs = { 1, 0x1p1019, 0x1p510, 0, 0, { 0, 0 } };
+  ck_assert_status (chaplygin_discrete_step (&sys, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ESPIN);
+  bs.E = nextafter (0x1p1019, 0.0);
+  ck_assert_ok (chaplygin_discrete_spins (-0.5, 1.0, 1, bs.E, 0x1p510, &spins));
+  ck_assert_int_eq (spins, 0);
+}
+END_TEST
+
 START_TEST (test_step_errors)
 {
   chaplygin_discrete sys;
@@ -476,16 +587,23 @@ START_TEST (test_step_errors)
   chaplygin_discrete junk = sys;
   junk.Delta = -1;
   ck_assert_status (chaplygin_discrete_step (&junk, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
-  /* E' = E + C1 H^2 cannot overflow (C1 < 0), H' = C2 H can: L0 = 1,
-     Delta = 1e300, backward from the rear end without reversal, so the peg
-     leaves D = 0 where C2 = (2 + 1e300)/2. */
+  /* |L0 + Delta| beyond 2^500 is outside the supported range: ERANGE,
+     not garbage (1 + l^2 and its products would overflow). */
   chaplygin_discrete big;
   ck_assert_ok (chaplygin_discrete_init (&big, 1.0, 1e300));
-  chaplygin_discrete_state bs = { -1, 1e20, 1e10, 0, 0, { 0, 0 } };
+  chaplygin_discrete_state bs = { -1, 1e20, 1.0, 0, 0, { 0, 0 } };
   ck_assert_status (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ERANGE);
-  bs.H = 1.0;                   /* representable: 5e299 */
+  ck_assert_ok (chaplygin_discrete_init (&big, 1e155, 1.0));
+  bs.dir = 1, bs.E = 0.5, bs.H = 0.5;
+  ck_assert_status (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ERANGE);
+  /* within it: L0 = 1, Delta = 1e150, backward without reversal, the peg
+     leaves D = 0 where C2 = (2 + 1e150)/2 (the reviewer's case of a C2
+     lost to cancellation, at 1e160, is tested in test_status) */
+  ck_assert_ok (chaplygin_discrete_init (&big, 1.0, 1e150));
+  bs.dir = -1, bs.E = 1.0, bs.H = 1.0;
   ck_assert_ok (chaplygin_discrete_step (&big, &bs, CHAPLYGIN_WANT_ALL, NULL, &o, NULL));
-  ck_assert_rel (o.H, 5e299, 4 * DBL_EPSILON);
+  ck_assert_rel (o.H, 5e149, 4 * DBL_EPSILON);
+  ck_assert (o.dir == -1);
   o.E = 9;
   s.dir = 1, s.E = 1.0, s.H = 1.0;
   /* every field of the state is validated */
@@ -552,6 +670,7 @@ main (void)
   t = tcase_create ("conventions");
   tcase_add_test (t, test_requests_and_conventions);
   tcase_add_test (t, test_step_errors);
+  tcase_add_test (t, test_extremes_found_in_review);
   suite_add_tcase (s, t);
   return tu_run (s);
 }

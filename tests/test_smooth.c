@@ -260,6 +260,12 @@ START_TEST (eq_A_1)
   q0[1] = 0.0, q0[3] = 1.0;
   ck_assert_ok (chaplygin_smooth_reversal (-1.0, q0, &rev, &Sc));
   ck_assert (rev == 0);
+  /* L V0 underflows: the signs decide, not the product */
+  double qu[4] = { 0, -1e-200, 0, 1 };
+  int K;
+  ck_assert_ok (chaplygin_smooth_reversal (1e-200, qu, &rev, &Sc));
+  ck_assert_ok (chaplygin_smooth_branch (1e-200, qu, 1e300, &K));
+  ck_assert (rev == 1 && K == -1);
   /* a huge V0/Omega0: the logarithm is formed without overflow */
   double q1[4] = { 0, 1e200, 0, 1e-200 };
   ck_assert_ok (chaplygin_smooth_reversal (-1.0, q1, &rev, &Sc));
@@ -480,6 +486,10 @@ START_TEST (eq_A_4)
   ck_assert_status (chaplygin_smooth_closed_form_eh (NAN, p0, 1, 1.0, p), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_smooth_closed_form_eh (0.0, NULL, 1, 1.0, p), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_smooth_closed_form_eh (0.0, p0, 1, 1.0, NULL), CHAPLYGIN_EINVAL);
+  /* V0 = 0 exactly from (E0, H0) = (5/8, 5/4) at L = 1/2: accepted (an
+     earlier version rounded V0^2 to -2e-16 and refused it) */
+  double pv[4] = { 0, 0.625, 0, 1.25 };
+  ck_assert_ok (chaplygin_smooth_closed_form_eh (0.5, pv, 1, 2.0, p));
   /* (1 + L^2) overflows: H_C is not representable */
   double ph[4] = { 0, 1.0, 0, 1.0 };
   ck_assert_status (chaplygin_smooth_closed_form_eh (1e200, ph, 1, 1.0, p), CHAPLYGIN_ERANGE);

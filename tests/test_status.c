@@ -94,20 +94,24 @@ START_TEST (test_ratio_helpers)
 
       double L0 = tu_uniform (&r, -5.0, 5.0) * pow (10.0, tu_uniform (&r, 0, 2));
       double Delta = tu_uniform (&r, 0.01, 5.0);
-      double b = (k % 2) ? L0 : L0 + Delta;
+      double b = (k % 2) ? L0 : L0 + Delta, bp = (k % 2) ? L0 + Delta : L0;
       q128 bq = (k % 2) ? (q128) L0 : (q128) L0 + Delta;
       q128 rq = (1 + (q128) L0 * ((q128) L0 + Delta)) / (1 + bq * bq);
       /* The numerator is accurate to 2 ulps (above); the denominator 1 + b^2
          is formed from the rounded b = fl(L0 + Delta) (relative error
          eps/2, doubled by squaring) and rounded once; then one division:
          within 4 ulps, cancellation in the numerator included. */
-      ck_assert_rel (chp_collision_ratio (L0, Delta, b), (double) rq,
+      ck_assert_rel (chp_collision_ratio (L0, Delta, b, bp), (double) rq,
                      4 * DBL_EPSILON);
     }
   /* Overflow branch: b beyond 2^500, against the asymptotic value
      (1 + b b')/(1 + b^2) -> b'/b for huge b. */
   double L0 = 1e200, Delta = 3.0;
-  ck_assert_rel (chp_collision_ratio (L0, Delta, L0 + Delta), L0 / (L0 + Delta),
+  ck_assert_rel (chp_collision_ratio (L0, Delta, L0 + Delta, L0), L0 / (L0 + Delta),
+                 2 * DBL_EPSILON);
+  /* |L0| << Delta beyond 2^500: the other end's value is passed, not
+     reconstructed as 2 L0 + Delta - b (which cancels to 0 here). */
+  ck_assert_rel (chp_collision_ratio (1.0, 1e160, 1.0 + 1e160, 1.0), 1e-160,
                  2 * DBL_EPSILON);
 }
 END_TEST

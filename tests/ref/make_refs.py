@@ -3,7 +3,7 @@
 
 Run from the top of the tree:  python3 tests/ref/make_refs.py
 Needs mpmath (Debian: python3-mpmath).  Writes tests/ref_ellint.h,
-tests/ref_flow.h, tests/ref_map.h, tests/ref_smooth.h.
+tests/ref_flow.h, tests/ref_map.h, tests/ref_poincare.h, tests/ref_smooth.h.
 
 Every input is a double, converted to mpmath exactly; every reference is
 computed at 40 significant digits (30 for the smooth sleigh, whose route is
@@ -100,13 +100,22 @@ def leg_ref(L0, D0, V0, Om0, D):
     H = n0 * Om0
 
     def V2(x):
-        return 2 * E - H ** 2 / (1 + (L0 + x) ** 2)
+        # conservation of E and H, factored: V^2 = V0^2 + (x - D0)(2 L0 + x
+        # + D0) n0 Omega0^2/(1 + (L0 + x)^2) -- exact, no cancellation at a
+        # turning point start (V0 = 0)
+        return V0 ** 2 + (x - D0) * (2 * L0 + x + D0) * n0 * Om0 ** 2 / (1 + (L0 + x) ** 2)
 
     # the leg must not pass a turning point: V^2 > 0 on a fine grid.
     for k in range(1, 2001):
-        assert V2(D0 + (D - D0) * mpf(k) / 2000) > 0, "row passes a turning point"
-    th = quad(lambda x: abs(H) / ((1 + (L0 + x) ** 2) * sqrt(V2(x))), [min(D0, D), max(D0, D)])
-    ta = quad(lambda x: 1 / sqrt(V2(x)), [min(D0, D), max(D0, D)])
+        assert V2(D0 + (D - D0) * mpf(k) / 2000) >= 0, "row passes a turning point"
+    lo, hi = min(D0, D), max(D0, D)
+    pts = [lo, hi]
+    if hi - lo > 10 * (abs(L0 + lo) + 1) and L0 + lo > 0:
+        # a long leg: split where l = L0 + D passes powers of 10
+        pts = [lo] + [mpf(10) ** k - L0 for k in range(0, 400)
+                      if lo < mpf(10) ** k - L0 < hi] + [hi]
+    th = quad(lambda x: abs(H) / ((1 + (L0 + x) ** 2) * sqrt(V2(x))), pts)
+    ta = quad(lambda x: 1 / sqrt(V2(x)), pts)
     return sign(Om0) * th, ta
 
 
@@ -125,10 +134,30 @@ def flow_cases():
         (-0.5, 0.0, 1.0, 0.8, 1.0),             # Fig. 3 parameters
         (1.7, 0.4, -0.33, -0.91, 0.39),          # close to a turning point
         (-3.3, 0.0, 2.2, 0.1, 10.0),            # long slot, crosses l = 0
+        # found by review: a start at a turning point with a leg of 1e-15
+        # and 1e-16 (g from 1 - h^2 rounded to 0), large |l| (g from 1 - h^2
+        # cancelled), a leg over 100 decades of |l|
+        (1.0, 0.0, 0.0, 1.0, 1e-15),
+        (1.0, 0.0, 0.0, 1.0, 1e-16),
+        (1e20, 0.0, 1.0, 1.0, 1.0),
+        (1e100, 0.0, 1.0, 1.0, 1.0),
+        (1.0, 0.0, 1.0, 0.25, 1e100),
     ]
     out = []
     for (L0, D0, V0, Om0, D) in rows:
-        th, ta = leg_ref(L0, D0, V0, Om0, D)
+        if L0 == 1e100:
+            # V grows from 1 to 1e50 within 1e-100 of the start, a feature no
+            # quadrature resolves: exact reduction instead.  With V0 = Omega0
+            # = 1, Omega/V = r/sqrt(1 + D (2 L0 + D) r), r = n0/(1 + l^2)
+            # = 1 + O(D/L0), so theta = tau = acosh((1 + L0)/sqrt(L0^2 - 1))
+            # - acosh(L0/sqrt(L0^2 - 1)), relative error O(1/L0) = 1e-100.
+            from mpmath import acosh
+            mp.dps = 250
+            L = mpf(L0)
+            th = ta = acosh((1 + L) / sqrt(L * L - 1)) - acosh(L / sqrt(L * L - 1))
+            mp.dps = 40
+        else:
+            th, ta = leg_ref(L0, D0, V0, Om0, D)
         out.append((L0, D0, V0, Om0, D, th, ta))
     with open(OUT + "ref_flow.h", "w") as f:
         header(f, "ref_flow.h", "tanh-sinh quadrature in D (mpmath, 40 digits) of "
@@ -142,7 +171,9 @@ def flow_cases():
 
 # ---------------------------------------------------------------- map (B.3/B.4)
 def segment_ref(L0, Delta, d, E, H):
-    L0, Delta, E, H = map(mpf, (L0, Delta, E, H))
+    L0, Delta = mpf(L0), mpf(Delta)
+    if not isinstance(E, type(mpf(0))):
+        E, H = mpf(E), mpf(H)
     Dp = mpf(0) if d > 0 else Delta
     Dfar = Delta - Dp
 
@@ -250,6 +281,39 @@ def map_cases():
         f.write("};\n")
 
 
+# ---------------------------------------------------------------- poincare
+def poincare_cases():
+    """Phase states with V+ small beside Omega+: E and H formed in mpmath
+    from the exact doubles V+, Omega+ (a double (E, H) would not hold V+)."""
+    rows = [(-10.0, 1.0, 1e-7, 1.0), (-1.0, 1.0, 1e-7, 1.0), (0.5, 0.75, 1e-6, 2.0),
+            (-0.25, 0.5, -1e-5, 1.5), (2.0, 1.0, -3e-8, -0.8), (-3.0, 2.0, 1e-4, 0.3)]
+    out = []
+    for (L0, Dl, V, Om) in rows:
+        d = 1 if V > 0 else -1
+        Dp = 0.0 if d > 0 else Dl
+        l0 = mpf(L0) + mpf(Dp)
+        n0 = 1 + l0 ** 2
+        E = (mpf(V) ** 2 + n0 * mpf(Om) ** 2) / 2
+        H = n0 * mpf(Om)
+        rev, nd, E1, H1, th, ta, root = segment_ref(L0, Dl, d, E, H)
+        # the phase state after the collision: Omega+ = H1/(1 + l+^2), V+ = V-
+        Dnew = mpf(0) if nd > 0 else mpf(Dl)
+        lp = mpf(L0) + Dnew
+        Om1 = H1 / (1 + lp ** 2)
+        V1 = nd * sqrt(2 * E1 - H1 * Om1)
+        out.append((L0, Dl, V, Om, rev, th, ta, V1, Om1))
+    with open(OUT + "ref_poincare.h", "w") as f:
+        header(f, "ref_poincare.h", "as ref_map.h, from phase states with V+ << Omega+; "
+               "E, H formed at 40 digits from the exact doubles V+, Omega+")
+        f.write("static const struct { double L0, Delta, V, Omega; int reversal; "
+                "double dtheta, dtau, V1, Omega1; } ref_poincare[] = {\n")
+        for r in out:
+            L0, Dl, V, Om, rev, th, ta, V1, Om1 = r
+            f.write("  { %s, %s, %s, %s, %d, %s, %s, %s, %s },\n" % (
+                c(L0), c(Dl), c(V), c(Om), rev, c(th), c(ta), c(V1), c(Om1)))
+        f.write("};\n")
+
+
 # ---------------------------------------------------------------- smooth
 def smooth_ref(L, V0, Om0, sigmas):
     L, V0, Om0 = mpf(L), mpf(V0), mpf(Om0)
@@ -312,7 +376,7 @@ def smooth_cases():
 
 if __name__ == "__main__":
     import sys
-    which = sys.argv[1:] or ["ellint", "flow", "map", "smooth"]
+    which = sys.argv[1:] or ["ellint", "flow", "map", "poincare", "smooth"]
     mp.dps = 40
     if "ellint" in which:
         ellint_cases()
@@ -320,5 +384,7 @@ if __name__ == "__main__":
         flow_cases()
     if "map" in which:
         map_cases()
+    if "poincare" in which:
+        poincare_cases()
     if "smooth" in which:
         smooth_cases()
