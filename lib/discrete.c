@@ -149,6 +149,17 @@ chp_collision_coefficients (double L0, double Delta, double Dminus,
   *C2 = chp_collision_ratio (L0, Delta, b, bp);
 }
 
+/* The energy just after a collision: V-^2/2 + H+^2/(2 (1 + l+^2)), with
+   V-^2 = 2E g-/(1 + l-^2) (g- = (1 + l-^2) V-^2/(2E) at the end the peg
+   leaves), which equals E + C1 H^2 of (3.7) as a sum of nonnegative terms. */
+double
+chp_post_collision_energy (double E, double g_minus, double l_minus,
+                           double H_plus, double l_plus)
+{
+  return E * (g_minus / chp_one_plus_sq (l_minus))
+    + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus));
+}
+
 /* chaplygin_discrete_collide_eh: (3.7)
        D+ = Delta - D-,
        E+ = E- - Delta^2 H-^2 / (2 [1 + (L0 + D-)^2]^2 [1 + (L0 + Delta - D-)^2]),
@@ -159,10 +170,16 @@ chp_collision_coefficients (double L0, double Delta, double Dminus,
            = -Omega-^2 (l+ - l-)^2 / (2 (1 + l+^2)), (l+ - l-)^2 = Delta^2.
    (The transcription misplaces a parenthesis in the last factor of the
    denominator; see the errata.)
+   Method: E+ is formed as the energy of the state after the collision,
+   V-^2/2 + H+^2/(2 (1 + l+^2)), with V-^2 = 2E- g/(1 + l-^2) and
+   g = [2E- (1 + l-^2) - H-^2]/(2E-) by error-free arithmetic: equal to
+   E- + C1 H-^2 of (3.7) but a sum of nonnegative terms, so that E+ keeps
+   its relative accuracy when the collision removes nearly all the energy
+   (E- + C1 H-^2 would lose log10(E-/E+) digits).
    Domain: finite; Delta > 0; pminus[D] exactly 0 or Delta; E- >= 0 with
-   V-^2 = 2E- - H-^2/(1 + (L0 + D-)^2) > 0.
+   V-^2 = 2E- - H-^2/(1 + (L0 + D-)^2) > 0; |L0|, |L0 + Delta| <= 2^500.
    Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (D- not an
-   end, or V-^2 <= 0), CHAPLYGIN_ERANGE. */
+   end, or V-^2 <= 0, or E- = 0), CHAPLYGIN_ERANGE. */
 int
 chaplygin_discrete_collide_eh (double L0, double Delta,
                                const double pminus[4], double pplus[4])
@@ -176,12 +193,25 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
   double H = pminus[CHAPLYGIN_H];
   if (Dm != 0.0 && Dm != Delta)
     return CHAPLYGIN_ESTATE;
-  double n = chp_one_plus_sq (L0 + Dm);
-  if (!(2.0 * E - H * (H / n) > 0.0))
+  double b = L0 + Dm, bp = L0 + (Delta - Dm);
+  if (fabs (b) > CHP_L_MAX || fabs (bp) > CHP_L_MAX)
+    return CHAPLYGIN_ERANGE;
+  /* g = (1 + b^2) V-^2/(2E), error-free (b's own rounding included) */
+  chp_motion m;
+  CHP_TRY (chp_motion_init (E, H, &m));
+  double eb = 0.0;
+  if (Dm != 0.0)
+    {
+      double bb = b - L0;
+      eb = (L0 - (b - bb)) + (Dm - bb);
+    }
+  double g = chp_motion_g_exact (&m, b, eb);
+  if (!(g > 0.0))
     return CHAPLYGIN_ESTATE;
   double C1, C2;
   chp_collision_coefficients (L0, Delta, Dm, &C1, &C2);
-  double Ep = E + C1 * H * H, Hp = C2 * H;
+  double Hp = C2 * H;
+  double Ep = chp_post_collision_energy (E, g, b, Hp, bp);
   if (!isfinite (Ep) || !isfinite (Hp))
     return CHAPLYGIN_ERANGE;
   pplus[CHAPLYGIN_D] = Delta - Dm;

@@ -181,15 +181,22 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
 
   chp_motion m;
   CHP_TRY (chp_motion_init (in->E, in->H, &m));
-  /* g = (1 + l^2) V^2/(2E) at the start (with error-free arithmetic, so
-     that it is accurate for the given E, H even when V+ is small) and, by
-     the factored (B.1), at the far end: g1 = g0 + (l1 - l0)(l1 + l0), with
-     l1 - l0 = dir Delta exactly. */
+  /* g = (1 + l^2) V^2/(2E) at the start: with error-free arithmetic from
+     (E, H), accurate for them even when V+ is small beside Omega+, or as
+     given from V+ by the Poincare map. */
   const double g0 = g0_phase ? *g0_phase
     : chp_motion_g_exact (&m, l0, sys->l_err[start]);
   if (!(g0 > 0.0))
     return CHAPLYGIN_ESTATE;
-  const double g1 = g0 + in->dir * Delta * (2.0 * L0 + Delta);
+  /* At the far end: from (E, H) by error-free arithmetic when they are the
+     input, exact for them; from a phase state g0 + (l1 - l0)(l1 + l0),
+     l1 - l0 = dir Delta exactly, unless that cancels worse than E and H
+     (rounded from the phase state) are conditioned there. */
+  const double delta = in->dir * Delta * (2.0 * L0 + Delta);
+  const double g1_eh = chp_motion_g_exact (&m, l1, sys->l_err[far]);
+  const double g1 = (g0_phase && g0 + fabs (delta)
+                     <= chp_one_plus_sq (l1) + fabs (1.0 - m.omh2))
+    ? g0 + delta : g1_eh;
 
   int reversal = 0;
   if (m.omh2 >= 0.0)
@@ -219,8 +226,10 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   else
     {
       double gm = reversal ? g0 : g1, lm = reversal ? l0 : l1;
-      E1 = in->E + sys->C1[iminus] * in->H * in->H;
       H1 = sys->C2[iminus] * in->H;
+      /* E + C1 H^2 of (3.7), as a sum of nonnegative terms (accurate also
+         when the collision takes nearly all the energy) */
+      E1 = chp_post_collision_energy (in->E, gm, lm, H1, sys->l_end[1 - iminus]);
       /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction */
       Vminus = (reversal ? -in->dir : in->dir)
         * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
