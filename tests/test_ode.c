@@ -74,6 +74,33 @@ START_TEST (test_turning_point)
 }
 END_TEST
 
+START_TEST (test_exit_before_turn)
+{
+  /* A bound 1e-9 before a turning point: the motion crosses it with a
+     small speed and would turn just beyond.  A step of the integration
+     typically spans the crossing, the turn and part of the way back, and
+     ends inside the interval with V reversed: the event must still be
+     found (the turn is located first and lies beyond the bound).  Route:
+     V^2 at the bound from the invariants, 2E - H^2/(1 + l^2). */
+  double L0 = 0.4, q0[4] = { 1.0, -0.2, 0.0, -1.1 }, q1[4], tau, E, H;
+  int turned;
+  invariants (L0, q0, &E, &H);
+  double lc = sqrt (H * H / (2 * E) - 1.0), Dc = lc - L0;
+  double Dlo = Dc + 1e-9;
+  ck_assert_ok (chp_ode_until (L0, q0, Dlo, 2.0, 0, 1e-13, q1, &tau, &turned));
+  ck_assert (!turned);
+  ck_assert (q1[0] == Dlo);
+  double l = L0 + Dlo;
+  double v2 = 2 * E - H * H / (1 + l * l);
+  /* V ~ 1e-4.5 at the bound: V^2 is a difference conditioned by
+     2E/V^2 ~ 1e9; the integration error 1e-13 relative: 1e-3 in V */
+  ck_assert_rel (q1[1], -sqrt (v2), 1e-3);
+  /* with stop_at_turn the turn is not reported: the exit comes first */
+  ck_assert_ok (chp_ode_until (L0, q0, Dlo, 2.0, 1, 1e-13, q1, &tau, &turned));
+  ck_assert (!turned && q1[0] == Dlo);
+}
+END_TEST
+
 START_TEST (test_saddle)
 {
   /* Exactly the spinning energy (2E = H^2) moving towards l = 0: the exact
@@ -121,6 +148,7 @@ main (void)
   tcase_add_test (tc, test_lands_on_bound);
   tcase_add_test (tc, test_straight_line);
   tcase_add_test (tc, test_turning_point);
+  tcase_add_test (tc, test_exit_before_turn);
   tcase_add_test (tc, test_saddle);
   tcase_add_test (tc, test_failures);
   suite_add_tcase (s, tc);
