@@ -193,18 +193,13 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
   double H = pminus[CHAPLYGIN_H];
   if (Dm != 0.0 && Dm != Delta)
     return CHAPLYGIN_ESTATE;
-  double b = L0 + Dm, bp = L0 + (Delta - Dm);
+  double b, eb, bp = L0 + (Delta - Dm);
+  chp_two_sum (L0, Dm, &b, &eb);        /* b + eb = L0 + D- exactly */
   if (fabs (b) > CHP_L_MAX || fabs (bp) > CHP_L_MAX)
     return CHAPLYGIN_ERANGE;
   /* g = (1 + b^2) V-^2/(2E), error-free (b's own rounding included) */
   chp_motion m;
   CHP_TRY (chp_motion_init (E, H, &m));
-  double eb = 0.0;
-  if (Dm != 0.0)
-    {
-      double bb = b - L0;
-      eb = (L0 - (b - bb)) + (Dm - bb);
-    }
   double g = chp_motion_g_exact (&m, b, eb);
   if (!(g > 0.0))
     return CHAPLYGIN_ESTATE;

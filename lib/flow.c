@@ -91,22 +91,6 @@ chp_motion_g (const chp_motion *m, double l)
   return fma (l, l, m->omh2);
 }
 
-/* Error-free transformations (Knuth, Dekker). */
-static inline void
-two_sum (double a, double b, double *s, double *e)
-{
-  double t = a + b, bb = t - a;
-  *s = t;
-  *e = (a - (t - bb)) + (b - bb);
-}
-
-static inline void
-two_prod (double a, double b, double *p, double *e)
-{
-  *p = a * b;
-  *e = fma (a, b, -*p);
-}
-
 /* chp_motion_g_exact: g(l) = [2E (1 + l^2) - H^2]/(2E) for l = l + el (el the
    rounding error of l, 0 if l is exact), the numerator with error-free
    products and sums, so that g is within ~2 ulps of its value for the
@@ -117,11 +101,11 @@ chp_motion_g_exact (const chp_motion *m, double l, double el)
 {
   double twoE = 2.0 * m->E, H = m->H;
   double p1, e1, p2, e2, p3, e3, s1, f1, s2, f2;
-  two_prod (l, l, &p1, &e1);
-  two_prod (twoE, p1, &p2, &e2);
-  two_prod (H, H, &p3, &e3);
-  two_sum (twoE, -p3, &s1, &f1);
-  two_sum (s1, p2, &s2, &f2);
+  chp_two_prod (l, l, &p1, &e1);
+  chp_two_prod (twoE, p1, &p2, &e2);
+  chp_two_prod (H, H, &p3, &e3);
+  chp_two_sum (twoE, -p3, &s1, &f1);
+  chp_two_sum (s1, p2, &s2, &f2);
   double N = s2 + (((f1 + f2) + (e2 - e3)) + twoE * (e1 + 2.0 * l * el));
   double g = N / twoE;
   if (!isfinite (g) || !isfinite (p2) || !isfinite (p3))

@@ -42,6 +42,23 @@ chp_sign (double x)
   return x < 0.0 ? -1.0 : 1.0;
 }
 
+/* Error-free transformations (Knuth, Dekker): a + b = *s + *e and
+   a b = *p + *e exactly (barring overflow). */
+static inline void
+chp_two_sum (double a, double b, double *s, double *e)
+{
+  double t = a + b, bb = t - a;
+  *s = t;
+  *e = (a - (t - bb)) + (b - bb);
+}
+
+static inline void
+chp_two_prod (double a, double b, double *p, double *e)
+{
+  *p = a * b;
+  *e = fma (a, b, -*p);
+}
+
 /* Options: NULL means CHAPLYGIN_OPTIONS_DEFAULT; validates the rest. */
 int chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out);
 

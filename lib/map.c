@@ -31,12 +31,8 @@ chaplygin_discrete_init (chaplygin_discrete *sys, double L0, double Delta)
   chp_collision_coefficients (L0, Delta, 0.0, &sys->C1[0], &sys->C2[0]);
   chp_collision_coefficients (L0, Delta, Delta, &sys->C1[1], &sys->C2[1]);
   sys->l_end[0] = L0;
-  sys->l_end[1] = L0 + Delta;
-  {
-    double t = sys->l_end[1], bb = t - L0;      /* TwoSum */
-    sys->l_err[0] = 0.0;
-    sys->l_err[1] = (L0 - (t - bb)) + (Delta - bb);
-  }
+  sys->l_err[0] = 0.0;
+  chp_two_sum (L0, Delta, &sys->l_end[1], &sys->l_err[1]);
   return CHAPLYGIN_SUCCESS;
 }
 

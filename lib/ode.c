@@ -107,13 +107,14 @@ state_at (struct integrator *it, gsl_odeiv2_system *sys, double ta,
   return integrate_to (it, sys, &x, t, t - ta, y);
 }
 
-/* Find t in [lo, hi] where y[comp](t) = target, given that y[comp] - target
+/* Find t in [lo, hi] where y[comp](t) = target (y[D] the offset d from the
+   start, l0 the L0 + D0 of the field), given that y[comp] - target
    changes sign over [lo, hi] (ylo, yhi the states there); the state at the
    root goes to ye with ye[comp] = target exactly.  Safeguarded Newton with
    the analytic derivative of the event function; every iterate integrated
    from (lo, ylo). */
 static int
-refine (struct integrator *it, gsl_odeiv2_system *sys, double L0, int comp,
+refine (struct integrator *it, gsl_odeiv2_system *sys, double l0, int comp,
         double target, double lo, const double ylo[4], double hi,
         const double yhi[4], double *te, double ye[4])
 {
@@ -150,7 +151,7 @@ refine (struct integrator *it, gsl_odeiv2_system *sys, double L0, int comp,
       else
         hi = t, fhi = f;
       double df = comp == CHAPLYGIN_D ? y[CHAPLYGIN_V]
-        : (L0 + y[CHAPLYGIN_D]) * y[CHAPLYGIN_OMEGA] * y[CHAPLYGIN_OMEGA];
+        : (l0 + y[CHAPLYGIN_D]) * y[CHAPLYGIN_OMEGA] * y[CHAPLYGIN_OMEGA];
       double tn = df != 0.0 ? t - f / df : 0.5 * (lo + hi);
       if (tn == t)
         break;                  /* converged to rounding */

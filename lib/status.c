@@ -87,9 +87,8 @@ chp_L_over_one_plus_sq (double L)
 double
 chp_one_plus_L0_L0D (double L0, double Delta)
 {
-  double s = L0 + Delta;
-  double bb = s - L0;
-  double e = (L0 - (s - bb)) + (Delta - bb);
+  double s, e;
+  chp_two_sum (L0, Delta, &s, &e);
   return fma (L0, s, 1.0) + L0 * e;
 }
 
