@@ -20,6 +20,8 @@
 #ifndef CHAPLYGIN_CHAPLYGIN_H_INCLUDED
 #define CHAPLYGIN_CHAPLYGIN_H_INCLUDED
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -360,6 +362,90 @@ int chaplygin_discrete_state_from_phase (const chaplygin_discrete *sys,
 int chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
                                        const chaplygin_discrete_state *st,
                                        double q[4]);
+
+/* ------------------------------------------------------------------ */
+/* Sections 3.1.1, 3.1.2, 4.1 and (B.14): fixed points and stability   */
+/* ------------------------------------------------------------------ */
+
+/* (B.14) the period-1 fixed point with speed |V*| (dir = sign V*): E* =
+   V*^2/2, H* = 0, heading theta, time tau, peg at peg (NULL: origin);
+   *tau_star (may be NULL) = Delta/|V*|. */
+int chaplygin_discrete_fixed_point (const chaplygin_discrete *sys,
+                                    double Vstar, double theta, double tau,
+                                    const double peg[2],
+                                    chaplygin_discrete_state *st,
+                                    double *tau_star);
+
+/* (B.14) the energy a collision takes, -C1 H^2 >= 0, for a state with
+   direction dir whose segment does (reversal = 1) or does not reverse;
+   zero iff H = 0: periodic motions need lossless collisions. */
+int chaplygin_discrete_collision_loss (const chaplygin_discrete *sys,
+                                       int dir, int reversal, double H,
+                                       double *loss);
+
+/* (3.9) the Jacobian of the return map (B.3) in p = {D+, E, theta, H},
+   row-major J[4 i + j] = dp'_i/dp_j, at a state whose segment does not
+   reverse (CHAPLYGIN_ESTATE otherwise); df3/dE and df3/dH analytic. */
+int chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
+                                 const chaplygin_discrete_state *st,
+                                 double J[16]);
+
+/* (3.10) sigma4 = [1 + L0 (L0 + Delta)]/[1 + (L0 + Delta)^2] (dir +1,
+   V* > 0) or [1 + L0 (L0 + Delta)]/[1 + L0^2] (dir -1); sigma (may be
+   NULL) receives all four eigenvalues {0, 1, 1, sigma4}. */
+int chaplygin_discrete_sigma4 (double L0, double Delta, int dir,
+                               double *sigma4, double sigma[4]);
+
+/* (3.11) (dir +1) and (3.12) (dir -1): *stable = 1 iff |sigma4| < 1, i.e.
+   L0/Delta > -1 and (1/Delta)^2 > -(1 + 2 L0/Delta)(1 + L0/Delta)/2
+   (dir +1); L0/Delta < 0 and (1/Delta)^2 > -(L0/Delta)(1 + 2 L0/Delta)/2
+   (dir -1).  The printed trailing "> 0" is not a condition (errata). */
+int chaplygin_discrete_stable (double L0, double Delta, int dir,
+                               int *stable);
+
+/* The boundary of the stable region of (3.11)/(3.12) in the plane
+   x = L0/Delta, y = 1/Delta^2 of Fig. 2(b): stable iff *stabilizable and
+   y > *ymin (written only if *stabilizable). */
+int chaplygin_discrete_stability_boundary (int dir, double x,
+                                           int *stabilizable, double *ymin);
+
+/* (4.1) xi4 = (|V*|/Delta) log sigma4 (sigma4 for the direction of V*),
+   without cancellation for small Delta; -> -L0 V* / (1 + L0^2) as
+   Delta -> 0. */
+int chaplygin_discrete_xi4 (double L0, double Delta, double Vstar,
+                            double *xi4);
+
+/* (4.1) the Taylor coefficients xi4 = V* (c0 + c1 Delta + c2 Delta^2 + ...)
+   for dir = sign V* (the paper's c2 is wrong: errata). */
+int chaplygin_discrete_xi4_taylor (double L0, int dir, double c[3]);
+
+/* The linearisation of (3.1): A[4 i + j] = d(dq_i/dtau)/dq_j. */
+int chaplygin_discrete_field_jacobian (double L0, const double q[4],
+                                       double A[16]);
+
+/* The spinning solution {-L0, 0, theta0 + Omega tau, Omega}, which
+   exists iff -Delta < L0 < 0 (CHAPLYGIN_EDOM otherwise). */
+int chaplygin_discrete_spin_equilibrium (double L0, double Delta,
+                                         double Omega, double theta0,
+                                         double tau, double q[4]);
+
+/* Its eigenvalues {-|Omega|, 0, 0, |Omega|}: a saddle. */
+int chaplygin_discrete_spin_eigenvalues (double L0, double Delta,
+                                         double Omega, double lambda[4]);
+
+/* ------------------------------------------------------------------ */
+/* Sweeps for Fig. 2: x = L0/Delta, y = (1/Delta)^2 >= 0               */
+/* ------------------------------------------------------------------ */
+
+/* Fig. 2(a): sigma4[i] for x[i], i < n, at y; status (may be NULL) per
+   point; returns the first failing point's status or success. */
+int chaplygin_sweep_sigma4 (int dir, double y, size_t n, const double *x,
+                            double *sigma4, int *status);
+
+/* Fig. 2(b): region[i nx + j] = 1 (V* > 0 stable) + 2 (V* < 0 stable) at
+   (x[j], y[i]). */
+int chaplygin_sweep_stability (size_t nx, const double *x, size_t ny,
+                               const double *y, unsigned char *region);
 
 #ifdef __cplusplus
 }

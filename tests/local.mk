@@ -17,7 +17,8 @@ UNIT_CHECKS = \
 	tests/test_map \
 	tests/test_ellint \
 	tests/test_quad \
-	tests/test_ode
+	tests/test_ode \
+	tests/test_stability
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
 
@@ -48,5 +49,8 @@ tests_test_quad_LDADD = $(TEST_LDADD)
 tests_test_ode_SOURCES = tests/test_ode.c
 tests_test_ode_CFLAGS = $(TEST_CFLAGS)
 tests_test_ode_LDADD = $(TEST_LDADD)
+tests_test_stability_SOURCES = tests/test_stability.c tests/ref_stability.h
+tests_test_stability_CFLAGS = $(TEST_CFLAGS)
+tests_test_stability_LDADD = $(TEST_LDADD) -lquadmath
 
 EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README

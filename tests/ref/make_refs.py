@@ -3,7 +3,8 @@
 
 Run from the top of the tree:  python3 tests/ref/make_refs.py
 Needs mpmath (Debian: python3-mpmath).  Writes tests/ref_ellint.h,
-tests/ref_flow.h, tests/ref_map.h, tests/ref_poincare.h, tests/ref_smooth.h.
+tests/ref_flow.h, tests/ref_map.h, tests/ref_poincare.h, tests/ref_smooth.h,
+tests/ref_stability.h.
 
 Every input is a double, converted to mpmath exactly; every reference is
 computed at 40 significant digits (30 for the smooth sleigh, whose route is
@@ -374,9 +375,96 @@ def smooth_cases():
         f.write("};\n")
 
 
+# ------------------------------------------------------------- stability
+def stability_cases():
+    """sigma4 and the f3 partials from the segment map (the derivation of
+    (3.6) by angular momentum about the new peg, quadrature for the
+    heading): sigma4 = H'/H at H -> 0, df3/dE and df3/dH by mpmath's
+    numerical differentiation of the quadrature heading; xi4 and its
+    Taylor coefficients by 400-digit evaluation and mpmath.taylor of
+    log(sigma4) (not the library's log1p form or its algebra)."""
+    from mpmath import diff, log, taylor
+    rows = []
+    for (L0, Delta) in [(1.0, 1.0 / 3), (2.385, 0.7182), (-0.25, 1.0),
+                        (-3.3, 1.1), (-0.6, 1.0), (0.0, 2.5), (-1.25, 1.0),
+                        (1e-3, 1e-4), (12.5, 0.03)]:
+        for d in (1, -1):
+            eps = mpf("1e-30")
+            r = segment_ref(L0, Delta, d, mpf(1) / 2, eps)
+            rows.append((L0, Delta, d, r[3] / eps))
+    with open(OUT + "ref_stability.h", "w") as f:
+        header(f, "ref_stability.h", "segment map of make_refs.py at H = 1e-30, "
+               "sigma4 = H'/H (40 digits)")
+        f.write("static const struct { double L0, Delta; int dir; double sigma4; } "
+                "ref_sigma4[] = {\n")
+        for r in rows:
+            f.write("  { %s, %s, %d, %s },\n" % (c(r[0]), c(r[1]), r[2], c(r[3])))
+        f.write("};\n")
+        # Jacobian entries: states (dir, E, H) with no reversal
+        jr = []
+        for (L0, Delta, d, E, H) in [(1.0, 1.0 / 3, 1, 0.5, 0.0),
+                                     (1.0, 1.0 / 3, 1, 0.7, 0.45),
+                                     (2.385, 0.7182, -1, 1.3, 0.21),
+                                     (-0.6, 1.0, 1, 1.9, -1.1),
+                                     (-0.6, 1.0, -1, 0.8, 0.9),
+                                     (-3.3, 1.1, 1, 0.125, 0.3),
+                                     (40.0, 0.5, 1, 2.0, 0.0),
+                                     (40.0, 0.5, -1, 2.0, 1e-3),
+                                     (0.3, 2.0, 1, 1.0, 1.4)]:
+            th = lambda e, h: segment_ref(L0, Delta, d, e, h)[4]
+            dE = diff(lambda e: th(e, mpf(H)), mpf(E))
+            dH = diff(lambda h: th(mpf(E), h), mpf(H))
+            assert segment_ref(L0, Delta, d, mpf(E), mpf(H))[0] == 0
+            jr.append((L0, Delta, d, E, H, dE, dH))
+        f.write("/* df3/dE, df3/dH by mpmath.diff of the quadrature heading */\n")
+        f.write("static const struct { double L0, Delta; int dir; double E, H, df3dE, "
+                "df3dH; } ref_jacobian[] = {\n")
+        for r in jr:
+            f.write("  { %s, %s, %d, %s, %s, %s, %s },\n"
+                    % (c(r[0]), c(r[1]), r[2], c(r[3]), c(r[4]), c(r[5]), c(r[6])))
+        f.write("};\n")
+        mp.dps = 400   # Delta down to 1e-300: sigma4 - 1 needs > 300 digits
+        xr = []
+        for (L0, Delta, V) in [(1.0, 1.0 / 3, 1.0), (2.385, 1e-9, 0.75),
+                               (-0.6, 1e-12, 1.0), (0.3, 1e-300, 2.0),
+                               (-3.3, 0.05, -1.5), (0.75, 1e-15, -1.0),
+                               (1e3, 2.0, 1.0), (-0.25, 0.4, 1.25),
+                               (5.0, 1e-6, -0.5)]:
+            L0m, Dm, Vm = mpf(L0), mpf(Delta), mpf(V)
+            if V > 0:
+                s4 = (1 + L0m * (L0m + Dm)) / (1 + (L0m + Dm) ** 2)
+            else:
+                s4 = (1 + L0m * (L0m + Dm)) / (1 + L0m ** 2)
+            xr.append((L0, Delta, V, abs(Vm) / Dm * log(s4)))
+        f.write("/* xi4 = (|V*|/Delta) log sigma4 at 60 digits */\n")
+        f.write("static const struct { double L0, Delta, V, xi4; } ref_xi4[] = {\n")
+        for r in xr:
+            f.write("  { %s },\n" % ", ".join(c(v) for v in r))
+        f.write("};\n")
+        tr = []
+        for L0 in (1.0, 0.3, -2.0, 2.385, -0.6, 0.0):
+            for d in (1, -1):
+                L0m = mpf(L0)
+                if d > 0:
+                    fn = lambda D: log((1 + L0m * (L0m + D)) / (1 + (L0m + D) ** 2))
+                else:
+                    fn = lambda D: log((1 + L0m * (L0m + D)) / (1 + L0m ** 2))
+                # xi4/V* = log(sigma4)/Delta for d > 0, -log(sigma4)/Delta for d < 0
+                co = taylor(fn, 0, 3)
+                tr.append((L0, d, d * co[1], d * co[2], d * co[3]))
+        f.write("/* Taylor coefficients of xi4/V* by mpmath.taylor of log sigma4 */\n")
+        f.write("static const struct { double L0; int dir; double c0, c1, c2; } "
+                "ref_taylor[] = {\n")
+        for r in tr:
+            f.write("  { %s, %d, %s, %s, %s },\n" % (c(r[0]), r[1], c(r[2]), c(r[3]), c(r[4])))
+        f.write("};\n")
+        mp.dps = 40
+
+
 if __name__ == "__main__":
     import sys
-    which = sys.argv[1:] or ["ellint", "flow", "map", "poincare", "smooth"]
+    which = sys.argv[1:] or ["ellint", "flow", "map", "poincare", "smooth",
+                             "stability"]
     mp.dps = 40
     if "ellint" in which:
         ellint_cases()
@@ -388,3 +476,5 @@ if __name__ == "__main__":
         poincare_cases()
     if "smooth" in which:
         smooth_cases()
+    if "stability" in which:
+        stability_cases()
