@@ -410,7 +410,10 @@ def stability_cases():
                                      (-3.3, 1.1, 1, 0.125, 0.3),
                                      (40.0, 0.5, 1, 2.0, 0.0),
                                      (40.0, 0.5, -1, 2.0, 1e-3),
-                                     (0.3, 2.0, 1, 1.0, 1.4)]:
+                                     (0.3, 2.0, 1, 1.0, 1.4),
+                                     (1000.0, 1e-3, 1, 0.5, 0.3),
+                                     (3.3, 0.01, -1, 0.8, 0.5),
+                                     (-7.77, 0.0123, 1, 1.5, 2.0)]:
             th = lambda e, h: segment_ref(L0, Delta, d, e, h)[4]
             dE = diff(lambda e: th(e, mpf(H)), mpf(E))
             dH = diff(lambda h: th(mpf(E), h), mpf(H))
@@ -436,7 +439,7 @@ def stability_cases():
             else:
                 s4 = (1 + L0m * (L0m + Dm)) / (1 + L0m ** 2)
             xr.append((L0, Delta, V, abs(Vm) / Dm * log(s4)))
-        f.write("/* xi4 = (|V*|/Delta) log sigma4 at 60 digits */\n")
+        f.write("/* xi4 = (|V*|/Delta) log sigma4 at 400 digits */\n")
         f.write("static const struct { double L0, Delta, V, xi4; } ref_xi4[] = {\n")
         for r in xr:
             f.write("  { %s },\n" % ", ".join(c(v) for v in r))
