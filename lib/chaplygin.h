@@ -447,6 +447,167 @@ int chaplygin_sweep_sigma4 (int dir, double y, size_t n, const double *x,
 int chaplygin_sweep_stability (size_t nx, const double *x, size_t ny,
                                const double *y, unsigned char *region);
 
+/* ------------------------------------------------------------------ */
+/* Section 3.1.3 and Appendix B.2.2: fates and basins of attraction    */
+/* ------------------------------------------------------------------ */
+
+/* Where a motion of the discrete skate ends. */
+typedef enum
+{
+  CHAPLYGIN_FATE_BACKWARD = -1,  /* straight-line motion, V* < 0, H -> 0 */
+  CHAPLYGIN_FATE_SPIN = 0,       /* the spinning equilibrium (3.8) */
+  CHAPLYGIN_FATE_FORWARD = 1,    /* straight-line motion, V* > 0, H -> 0 */
+  CHAPLYGIN_FATE_UNDECIDED = 2   /* not certain after max_collisions */
+} chaplygin_fate_kind;
+
+typedef struct
+{
+  int kind;                     /* a chaplygin_fate_kind */
+  unsigned long collisions;     /* collisions iterated: the fate is certain
+                                   from the state after this collision on
+                                   (spin: the state that spins; undecided:
+                                   max_collisions) */
+  unsigned long reversals;      /* velocity reversals (all of them: none
+                                   follows a certain fate) */
+  unsigned long last_reversal;  /* the collision ending the last reversing
+                                   segment, 0 if none */
+  double E_final;               /* forward/backward: lim E (B.10); spin: E of
+                                   the spinning motion; undecided: E after
+                                   max_collisions */
+  double V_final;               /* forward/backward: V* = +-sqrt(2 E_final);
+                                   spin: 0; undecided: V+ after
+                                   max_collisions */
+} chaplygin_fate;
+
+/* The fate of the motion from the post-collision state INIT: iterates the
+   return map (B.3)/(B.4) on (V+^2, H) until no further velocity reversal is
+   possible (|C2| < 1 in the current direction, the energy/momentum ratio
+   above both the reversal range of the next segment and the ratio r* that
+   the map repels from), at most max_collisions times.  reversal_at (may be
+   NULL) receives the collision numbers ending the first reversal_cap
+   reversing segments. */
+int chaplygin_discrete_fate (const chaplygin_discrete *sys,
+                             const chaplygin_discrete_state *init,
+                             unsigned long max_collisions,
+                             unsigned long *reversal_at, size_t reversal_cap,
+                             chaplygin_fate *fate);
+
+/* The same from a post-collision phase state qplus = {D+, V+, theta+,
+   Omega+} (D+ = 0 if V+ > 0, Delta if V+ < 0): V+ is used as given, not
+   through E, so the fate stays accurate when V+^2 << (1 + l^2) Omega+^2. */
+int chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
+                                   const double qplus[4],
+                                   unsigned long max_collisions,
+                                   unsigned long *reversal_at,
+                                   size_t reversal_cap, chaplygin_fate *fate);
+
+/* Figure 3: the fates of the n post-collision states with Omega+ = Omega0,
+   theta+ = 0 and V+ on the uniform grid V_lo = V_0 < ... < V_(n-1) = V_hi,
+   the peg at D = 0 for V+ > 0 and at Delta for V+ < 0 (no grid point may
+   be 0).  fates[i] receives the fate of V_i. */
+int chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
+                               double V_lo, double V_hi, size_t n,
+                               unsigned long max_collisions,
+                               chaplygin_fate *fates);
+
+/* The basin boundaries on the grid of chaplygin_discrete_basins (n_grid
+   points): every grid point whose motion spins, and between neighbouring
+   points with opposite straight-line fates the V+ where the fate changes,
+   refined by bisection to adjacent doubles: a motion that spins after some
+   collisions, or one with 2E/H^2 = r* > 1 that comes to rest (see
+   lib/fate.c).  *count receives the number found; the first
+   min(*count, cap) are written to V_boundary, in grid order (ENOCONV if a
+   bisection point is still undecided after max_collisions). */
+int chaplygin_discrete_basin_boundaries (const chaplygin_discrete *sys,
+                                         double Omega0, double V_lo,
+                                         double V_hi, size_t n_grid,
+                                         unsigned long max_collisions,
+                                         double *V_boundary, size_t cap,
+                                         size_t *count);
+
+/* ------------------------------------------------------------------ */
+/* Appendix B.3: the massless skate, rho = 0                           */
+/* ------------------------------------------------------------------ */
+
+/* (B.17) L0 = ell0/delta, D = d/delta, V = v/v0, Omega = omega delta/v0,
+   tau = t v0/delta, theta unchanged, and Delta = dim->delta/delta (1 when
+   the slot length itself is the scale); and its inverse. */
+int chaplygin_massless_nondimensionalize (double delta, double v0,
+                                          const chaplygin_discrete_dim *dim,
+                                          chaplygin_discrete_nondim *nd);
+int chaplygin_massless_dimensionalize (double delta, double v0,
+                                       const chaplygin_discrete_nondim *nd,
+                                       chaplygin_discrete_dim *dim);
+
+/* (3.3), (3.4) at rho = 0 in the units of (B.17):
+   E = [V^2 + (L0 + D)^2 Omega^2]/2,  H = (L0 + D)^2 Omega
+   (the kinetic energy and the angular momentum about the peg of the point
+   mass). */
+int chaplygin_massless_energy (double L0, double D, double V, double Omega,
+                               double *E);
+int chaplygin_massless_momentum (double L0, double D, double Omega,
+                                 double *H);
+
+/* A post-collision phase state {D+, V+, theta+, Omega+} (D+ = 0 for
+   V+ > 0, 1 for V+ < 0, exactly) to a map state and back: dir = sgn V+,
+   E and H as above; back, Omega = H/l^2 (0 if H = 0) and
+   V = dir sqrt(2E - H^2/l^2) formed without cancellation. */
+int chaplygin_massless_state_from_phase (double L0, const double q[4],
+                                         double tau, const double peg[2],
+                                         chaplygin_discrete_state *st);
+int chaplygin_massless_state_to_phase (double L0,
+                                       const chaplygin_discrete_state *st,
+                                       double q[4]);
+
+/* (B.16) the momentum coefficient of H' = C2 H for a post-collision state
+   with peg at Dplus (0 or 1):
+     no reversal (reversal = 0):  C2 = L0 (L0 + 1)/(L0 + (1 - D+))^2
+                                     = (L0 + D+)/(L0 + 1 - D+)   (as printed);
+     reversal (reversal = 1):     C2 = L0 (L0 + 1)/(L0 + D+)^2
+                                     = (L0 + 1 - D+)/(L0 + D+).
+   The paper prints only the first; the period-2 motions have a reversal
+   in every segment and need the second (errata). */
+int chaplygin_massless_coefficient (double L0, double Dplus, int reversal,
+                                    double *C2);
+
+/* (B.15) the return map of the massless skate: E' = E (lossless),
+   H' = C2 H with the C2 of (B.16) for the segment's case, and (REQUEST)
+   heading, time and peg by the elementary geometry of the straight-line
+   motion of G.  Fields not requested are copied unchanged; out may equal
+   in; ev may be NULL (ev->Dc is the turning point, ev->dtheta, ev->dtau
+   the increments, 0 when not requested).  H = 0 is straight motion along
+   the slot (G may pass over the peg).  CHAPLYGIN_ESPIN where the new peg
+   would land on the moving point mass (L0 = 0 or -1, H != 0: no next
+   state; the paper's "spins infinitely fast"). */
+int chaplygin_massless_step (double L0, const chaplygin_discrete_state *in,
+                             unsigned request,
+                             chaplygin_discrete_state *out,
+                             chaplygin_discrete_event *ev);
+
+/* Whether the massless skate with mass position L0 has period-2 motions:
+   *exists = 1 iff -1 < L0 < 0 (the point mass strictly inside the slot;
+   the paper says L0 < 0, L0 != -1: errata).  Every state with H != 0 is
+   then of period 2. */
+int chaplygin_massless_period2 (double L0, int *exists);
+
+/* The Jacobian of the return map (B.15) in the coordinates (D, E, theta, H)
+   at a post-collision state, row-major: the D row and column are zero
+   (as in (3.9)), E' = E, H' = C2 H, theta' = theta + dtheta(E, H).
+   CHAPLYGIN_EDOM at H = 0 where the map jumps (an H != 0 would reverse). */
+int chaplygin_massless_jacobian (double L0, const chaplygin_discrete_state *st,
+                                 double J[16]);
+
+/* The Jacobian of the two-collision map at st, J2 = J(f(st)) J(st), by the
+   chain rule from the analytic one-collision Jacobians.  At a period-2
+   point it is diag(0, 1, 1, 1) up to rounding: eigenvalues 0, 1, 1, 1. */
+int chaplygin_massless_jacobian2 (double L0, const chaplygin_discrete_state *st,
+                                  double J[16]);
+
+/* The position of the point mass G = peg + (L0 + D+) (cos theta, sin theta)
+   of a post-collision state. */
+int chaplygin_massless_mass_centre (double L0, const chaplygin_discrete_state *st,
+                                    double G[2]);
+
 #ifdef __cplusplus
 }
 #endif

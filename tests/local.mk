@@ -18,7 +18,9 @@ UNIT_CHECKS = \
 	tests/test_ellint \
 	tests/test_quad \
 	tests/test_ode \
-	tests/test_stability
+	tests/test_stability \
+	tests/test_fate \
+	tests/test_massless
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
 
@@ -52,5 +54,11 @@ tests_test_ode_LDADD = $(TEST_LDADD)
 tests_test_stability_SOURCES = tests/test_stability.c tests/ref_stability.h
 tests_test_stability_CFLAGS = $(TEST_CFLAGS)
 tests_test_stability_LDADD = $(TEST_LDADD) -lquadmath
+tests_test_fate_SOURCES = tests/test_fate.c
+tests_test_fate_CFLAGS = $(TEST_CFLAGS)
+tests_test_fate_LDADD = $(TEST_LDADD)
+tests_test_massless_SOURCES = tests/test_massless.c
+tests_test_massless_CFLAGS = $(TEST_CFLAGS)
+tests_test_massless_LDADD = $(TEST_LDADD)
 
 EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README

@@ -1,0 +1,502 @@
+/* fate.c -- Section 3.1.3 and Appendix B.2.2: where a motion of the
+   discrete skate ends (straight-line motion forward or backward, or the
+   spinning equilibrium (3.8)) and the basins of attraction of Figure 3.
+
+   The return map in speed-momentum form.  Just after a collision the peg is
+   at the end l0 = L0 + D+ of the slot (l = L0 + D, the distance from peg to
+   mass centre) and the motion runs towards the far end l1 = L0 + Delta - D+.
+   With u = (V+)^2 and H = H_P, (B.1) with Omega0 = H/(1 + l0^2) reads
+       V(l)^2 = u + H^2 [1/(1 + l0^2) - 1/(1 + l^2)],
+   smallest where |l| is smallest on the segment: at l = 0 if the segment
+   contains it, at l1 if |l| decreases towards l1, at l0 otherwise.  So with
+       q = u - b H^2,  b = l0^2/(1 + l0^2)                   (contains 0),
+                         (l0^2 - l1^2)/((1 + l0^2)(1 + l1^2))  (towards 0),
+                         0                                    (away from 0),
+   q = min V^2 over the segment, and
+     q > 0:  the peg reaches l1 (B.3): u' = V(l1)^2 = q + e H^2 with
+             e = b + (l1^2 - l0^2)/((1 + l0^2)(1 + l1^2)) >= 0, H' = C2 H with
+             C2 = (1 + l0 l1)/(1 + l1^2) of the collision at l1;
+     q < 0:  a reversal (B.4): the peg comes back to l0 with V = -V+, so
+             u' = u exactly, H' = C2 H with C2 = (1 + l0 l1)/(1 + l0^2) of
+             the collision at l0, and the direction flips;
+     q = 0:  the spinning equilibrium (3.8) if the segment contains l = 0
+             (the mass centre is reached with V = 0 and 2E = H^2); otherwise
+             a turning point exactly at l1, counted as a reversal as by
+             chaplygin_discrete_step.
+   u is either kept exactly or replaced by V(l1)^2 = q + e H^2, which loses
+   accuracy only where the physics does (a turning point near l1), so u
+   keeps its relative accuracy: unlike (E, H), which holds V+ only to
+   ~eps sqrt(2E), (u, H) holds it to ~eps V+ however small V+ is beside
+   (1 + l0^2) Omega+.  (For Figure 3 that makes the tenth basin boundary
+   ~1e4 times, the twentieth ~1e7 times more accurate than iterating
+   (E, H) does.)
+
+   When the fate is certain.  In terms of r = 2E/H^2 = u/H^2 + 1/(1 + l0^2),
+   a segment without reversal maps r' = (r + 2 C1)/C2^2 ((B.3) with (3.7)),
+   so with r* = 2 C1/(C2^2 - 1),  r' - r* = (r - r*)/C2^2, and E tends to
+       E_final = E + C1 H^2/(1 - C2^2) = (H^2/2)(r - r*)             (B.10)
+   if no reversal ever follows (|C2| < 1).  q > 0 iff r > 1/(1 + m^2), m the
+   smallest |l| on the segment.  If |C2| < 1 and r > r* (E_final > 0), r
+   increases monotonically, so if also q > 0 now, q > 0 at every later
+   collision: no reversal is possible any more and the fate is certain.
+   Otherwise a reversal follows (r < r* decreases without bound; |C2| >= 1
+   makes r tend to r* < 0 or decrease linearly) or q <= 0 now.  r* may
+   exceed 1 (for -Delta < L0 < 0 with the mass centre near one end): then
+   motions with 1 < r < r* still reverse, and r = r* separates the basins
+   without spinning: E -> 0, the skate comes to rest.  In u terms
+       u_final = 2 E_final = u + k H^2,
+       k = 1/(1 + l0^2) + 2 C1/(1 - C2^2)
+         = (l0 + l1)(1 + l1^2) / ((1 + l0^2) l1 (2 + l1 (l0 + l1))),
+   and |C2| < 1 iff dir l1 > 0 and 2 + l1 (l0 + l1) > 0 (dir = sign of
+   l1 - l0): signs, not a rounded |C2| (which rounds to 1 for |L0| >> 1).
+
+   Scaling: the map is homogeneous of degree 2 in (V, H); each motion is
+   iterated on (V, H) scaled by an exact power of two to E ~ 1, so that no
+   intermediate overflows or underflows, and the results scaled back.  */
+#include <config.h>
+
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+
+#include "internal.h"
+
+/* One direction of travel, from the end l0 where the peg starts to l1. */
+typedef struct
+{
+  double n0;        /* 1 + l0^2 */
+  double b;         /* reversal iff u <= b H^2 (see the head of the file) */
+  double e;         /* no reversal: u' = (u - b H^2) + e H^2 */
+  double k;         /* u_final = u + k H^2, if stable */
+  double C2_far;    /* H' = C2_far H without a reversal (B.3) */
+  double C2_start;  /* H' = C2_start H with a reversal (B.4) */
+  int crosses;      /* the segment contains l = 0 */
+  int stable;       /* |C2_far| < 1 */
+} fate_leg;
+
+/* Both directions: [0] V+ > 0 (peg at D = 0), [1] V+ < 0 (peg at Delta). */
+typedef struct
+{
+  fate_leg leg[2];
+} fate_coef;
+
+/* The coefficients of both directions from a system made by
+   chaplygin_discrete_init.  l0 + l1 = 2 L0 + Delta and l1 - l0 = +-Delta
+   are formed directly (one rounding, none), l^2 and 1 + l^2 with the
+   rounding error of L0 + Delta (sys->l_err) included. */
+static int
+fate_coef_init (const chaplygin_discrete *sys, fate_coef *c)
+{
+  const double L0 = sys->L0, Delta = sys->Delta;
+  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0)
+      || !chp_finite4 (sys->C2[0], sys->C2[1], sys->l_end[0], sys->l_end[1])
+      || !chp_finite2 (sys->l_err[0], sys->l_err[1]))
+    return CHAPLYGIN_EDOM;
+  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
+    return CHAPLYGIN_ERANGE;
+  const double s = 2.0 * L0 + Delta;    /* l0 + l1 */
+  for (int i = 0; i < 2; i++)
+    {
+      fate_leg *g = &c->leg[i];
+      const int f = 1 - i;
+      const double dir = i == 0 ? 1.0 : -1.0;
+      const double l0 = sys->l_end[i], l1 = sys->l_end[f];
+      const double sq0 = fma (l0, l0, 2.0 * l0 * sys->l_err[i]);
+      const double sq1 = fma (l1, l1, 2.0 * l1 * sys->l_err[f]);
+      const double n0 = 1.0 + sq0, n1 = 1.0 + sq1;
+      /* (l1^2 - l0^2)/((1 + l0^2)(1 + l1^2)), l1 - l0 = dir Delta exactly */
+      const double a = dir * (Delta / n0) * (s / n1);
+      g->n0 = n0;
+      g->crosses = (l0 <= 0.0 && l1 >= 0.0) || (l0 >= 0.0 && l1 <= 0.0);
+      if (g->crosses)
+        {
+          g->b = sq0 / n0;
+          g->e = sq1 / n1;
+        }
+      else if (dir * l0 < 0.0)
+        {
+          g->b = -a;            /* towards l = 0: the minimum is at l1 */
+          g->e = 0.0;
+        }
+      else
+        {
+          g->b = 0.0;           /* away from l = 0: never reverses */
+          g->e = a;
+        }
+      const double twoplus = fma (l1, s, 2.0) + sys->l_err[f] * s;
+      g->stable = dir * l1 > 0.0 && twoplus > 0.0;
+      g->k = g->stable ? (s / n0) * (n1 / l1) / twoplus : 0.0;
+      g->C2_far = sys->C2[f];
+      g->C2_start = sys->C2[i];
+    }
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Iterate (u, H) in direction dir (scaled by 2^-scale in V and H) until
+   the fate is certain, the motion spins, or max collisions are done. */
+static void
+fate_run (const fate_coef *c, int dir, double u, double H, int scale,
+          unsigned long max, unsigned long *reversal_at, size_t cap,
+          chaplygin_fate *out)
+{
+  unsigned long n = 0, nrev = 0, last = 0;
+  double uf = u;
+  int kind;
+  for (;;)
+    {
+      const fate_leg *g = &c->leg[dir > 0 ? 0 : 1];
+      if (H == 0.0)
+        {
+          kind = dir;           /* straight-line motion from now on */
+          uf = u;
+          break;
+        }
+      const double q = fma (-(g->b * H), H, u);
+      if (g->stable && q > 0.0)
+        {
+          uf = fma (g->k * H, H, u);
+          if (uf > 0.0)
+            {
+              kind = dir;
+              break;
+            }
+        }
+      if (q == 0.0 && g->crosses)
+        {
+          kind = CHAPLYGIN_FATE_SPIN;
+          break;
+        }
+      if (n == max)
+        {
+          kind = CHAPLYGIN_FATE_UNDECIDED;
+          break;
+        }
+      n++;
+      if (q <= 0.0)
+        {
+          /* (B.4): back at l0 with V = -V+, u unchanged */
+          H *= g->C2_start;
+          dir = -dir;
+          if (reversal_at && nrev < cap)
+            reversal_at[nrev] = n;
+          nrev++;
+          last = n;
+        }
+      else
+        {
+          /* (B.3): V(l1)^2 = q + e H^2 */
+          u = fma (g->e * H, H, q);
+          H *= g->C2_far;
+        }
+    }
+
+  chaplygin_fate r;
+  r.kind = kind;
+  r.collisions = n;
+  r.reversals = nrev;
+  r.last_reversal = last;
+  if (kind == CHAPLYGIN_FATE_FORWARD || kind == CHAPLYGIN_FATE_BACKWARD)
+    {
+      r.E_final = ldexp (0.5 * uf, 2 * scale);
+      r.V_final = dir * ldexp (sqrt (uf), scale);
+    }
+  else
+    {
+      const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
+      r.E_final = ldexp (0.5 * (u + H * (H / n0)), 2 * scale);
+      r.V_final = kind == CHAPLYGIN_FATE_SPIN ? 0.0
+        : dir * ldexp (sqrt (u), scale);
+    }
+  *out = r;
+}
+
+/* The fate from a phase state V+ != 0, Omega+ (both finite), the peg at the
+   end the sign of V+ implies.  V and H are scaled by 2^-k so that
+   max(|V+|, |Omega+| sqrt(1 + l0^2)) is O(1). */
+static void
+fate_from_phase (const fate_coef *c, double V, double Omega,
+                 unsigned long max, unsigned long *reversal_at, size_t cap,
+                 chaplygin_fate *out)
+{
+  const int dir = V > 0.0 ? 1 : -1;
+  const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
+  int k = ilogb (V);
+  if (Omega != 0.0)
+    {
+      int kO = ilogb (Omega) + ilogb (n0) / 2;
+      if (kO > k)
+        k = kO;
+    }
+  const double Vs = ldexp (V, -k);
+  const double Hs = n0 * ldexp (Omega, -k);
+  fate_run (c, dir, Vs * Vs, Hs, k, max, reversal_at, cap, out);
+}
+
+/* chaplygin_discrete_fate: Section 3.1.3, the fate of the motion from the
+   post-collision state init = {dir, E, H} (theta, tau, peg are not used).
+   Method: the return map (B.3)/(B.4) on (u = V+^2, H), V+^2 = 2E g(l0)/
+   (1 + l0^2) with g by error-free arithmetic from E and H (exact for them,
+   as in chaplygin_discrete_step), iterated until the fate is certain by
+   the criterion at the head of this file: no further reversal can occur
+   (then kind = the direction, E_final by (B.10), V_final = dir
+   sqrt(2 E_final)), or min V^2 over the next segment is exactly 0 with
+   l = 0 on it (kind = SPIN; the state with 2E = H^2 exactly that reaches
+   l = 0 spins at collision 0, as chaplygin_discrete_spins says), or after
+   max_collisions (kind = UNDECIDED, E and V+ of the last state).
+   H = 0: straight-line motion, E_final = E.  Reversals are classified as
+   by chaplygin_discrete_step (the two agree except within a few ulps of a
+   turning point at an end or of the spinning state, where (E, H) and
+   (u, H) round differently).
+   Cost: a few flops per collision, no square root or division: ~6 ns
+   (1.7e8 collisions/s, ~20 times chaplygin_discrete_step with request 0).
+   Accuracy: |E_final - (B.10)| <= 8 eps (sum_j E_j + T) + (4k + 8) eps T,
+   T = |C1| H^2/(1 - C2^2), with (B.10) evaluated in binary128 at the
+   state after the k collisions and sum_j E_j over them (the rounding of
+   each collision adds, as in any iteration; test fate_b10, worst 0.13 of
+   the bound).  E_final may underflow to 0 for E near the underflow
+   threshold.
+   Domain: sys from chaplygin_discrete_init; dir = +-1; finite fields;
+   E > 0, V+^2 > 0; |L0|, |L0 + Delta| <= 2^500.
+   Errors: CHAPLYGIN_EINVAL (NULL sys, init or fate, dir), CHAPLYGIN_EDOM
+   (non-finite, Delta <= 0, E < 0), CHAPLYGIN_ESTATE (E = 0, V+^2 <= 0),
+   CHAPLYGIN_ERANGE (|L0 + D| above 2^500, H^2/(2E) overflows).
+   reversal_at is written (at most reversal_cap entries) only on success. */
+int
+chaplygin_discrete_fate (const chaplygin_discrete *sys,
+                         const chaplygin_discrete_state *init,
+                         unsigned long max_collisions,
+                         unsigned long *reversal_at, size_t reversal_cap,
+                         chaplygin_fate *fate)
+{
+  if (!sys || !init || !fate)
+    return CHAPLYGIN_EINVAL;
+  fate_coef c;
+  CHP_TRY (fate_coef_init (sys, &c));
+  if (init->dir != 1 && init->dir != -1)
+    return CHAPLYGIN_EINVAL;
+  const double E = init->E, H = init->H;
+  if (!chp_finite4 (E, H, init->theta, init->tau)
+      || !chp_finite2 (init->peg[0], init->peg[1]) || E < 0.0)
+    return CHAPLYGIN_EDOM;
+  if (E == 0.0)
+    return CHAPLYGIN_ESTATE;
+  const int i = init->dir > 0 ? 0 : 1;
+  /* E and H scaled exactly by 2^-2k, 2^-k: 1/2 <= E < 4 (E = 0 is
+     excluded above: ilogb(0) is not a number) */
+  const int k = ilogb (E) / 2;
+  const double Es = ldexp (E, -2 * k), Hs = ldexp (H, -k);
+  chp_motion m;
+  CHP_TRY (chp_motion_init (Es, Hs, &m));
+  const double g0 = chp_motion_g_exact (&m, sys->l_end[i], sys->l_err[i]);
+  if (!(g0 > 0.0))
+    return CHAPLYGIN_ESTATE;
+  /* the spinning state (3.8), exactly as chaplygin_discrete_spins: 2E = H^2
+     (the sign of 1 - h^2 is exact, and so is the scaling) and l = 0 on the
+     path (l0 = 0 itself has V+ = 0, excluded above) */
+  const int spins = m.omh2 == 0.0 && c.leg[i].crosses;
+  if (spins || H == 0.0)
+    {
+      chaplygin_fate r = { spins ? CHAPLYGIN_FATE_SPIN : init->dir, 0, 0, 0,
+                           E, spins ? 0.0 : init->dir * sqrt (2.0 * E) };
+      *fate = r;
+      return CHAPLYGIN_SUCCESS;
+    }
+  const double u = 2.0 * Es * (g0 / c.leg[i].n0);
+  fate_run (&c, init->dir, u, Hs, k, max_collisions, reversal_at,
+            reversal_cap, fate);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_fate_phase: the same from qplus = {D+, V+, theta+,
+   Omega+}, H = (1 + l0^2) Omega+ and u = V+^2 from V+ itself (so V+ keeps
+   its relative accuracy however small beside (1 + l0^2) Omega+).
+   Domain: finite; V+ != 0; D+ = 0 for V+ > 0, Delta for V+ < 0 exactly.
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, Delta <= 0),
+   CHAPLYGIN_ESTATE (V+ = 0 or D+ not the matching end), CHAPLYGIN_ERANGE
+   (|L0 + D| above 2^500). */
+int
+chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
+                               const double qplus[4],
+                               unsigned long max_collisions,
+                               unsigned long *reversal_at,
+                               size_t reversal_cap, chaplygin_fate *fate)
+{
+  if (!sys || !qplus || !fate)
+    return CHAPLYGIN_EINVAL;
+  fate_coef c;
+  CHP_TRY (fate_coef_init (sys, &c));
+  if (!chp_finite4 (qplus[0], qplus[1], qplus[2], qplus[3]))
+    return CHAPLYGIN_EDOM;
+  const double V = qplus[CHAPLYGIN_V], D = qplus[CHAPLYGIN_D];
+  if (V == 0.0 || (V > 0.0 && D != 0.0) || (V < 0.0 && D != sys->Delta))
+    return CHAPLYGIN_ESTATE;
+  fate_from_phase (&c, V, qplus[CHAPLYGIN_OMEGA], max_collisions,
+                   reversal_at, reversal_cap, fate);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The i-th of n points of the uniform grid from lo to hi (both included). */
+static double
+grid_point (double lo, double hi, size_t n, size_t i)
+{
+  if (i == 0)
+    return lo;
+  if (i == n - 1)
+    return hi;
+  return lo + (hi - lo) * ((double) i / (double) (n - 1));
+}
+
+/* Validation shared by the grid functions. */
+static int
+check_grid (const chaplygin_discrete *sys, double Omega0, double V_lo,
+            double V_hi, size_t n, fate_coef *c)
+{
+  CHP_TRY (fate_coef_init (sys, c));
+  if (!chp_finite2 (V_lo, V_hi) || !isfinite (Omega0) || V_lo > V_hi
+      || !isfinite (V_hi - V_lo))
+    return CHAPLYGIN_EDOM;
+  for (size_t i = 0; i < n; i++)
+    if (grid_point (V_lo, V_hi, n, i) == 0.0)
+      return CHAPLYGIN_ESTATE;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_basins: Figure 3, the fates of the post-collision
+   states {D+, V_i, 0, Omega0}, V_i = V_lo + (V_hi - V_lo) i/(n - 1),
+   i = 0 ... n-1 (V_0 = V_lo and V_(n-1) = V_hi exactly; n = 1: V_lo), by
+   chaplygin_discrete_fate_phase.  n = 0 does nothing (fates may be NULL).
+   Domain: finite; V_lo <= V_hi, V_hi - V_lo finite; no grid point 0.
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (a grid
+   point is 0), CHAPLYGIN_ERANGE (|L0 + D| above 2^500). */
+int
+chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
+                           double V_lo, double V_hi, size_t n,
+                           unsigned long max_collisions,
+                           chaplygin_fate *fates)
+{
+  if (!sys || (n > 0 && !fates))
+    return CHAPLYGIN_EINVAL;
+  fate_coef c;
+  CHP_TRY (check_grid (sys, Omega0, V_lo, V_hi, n, &c));
+  for (size_t i = 0; i < n; i++)
+    fate_from_phase (&c, grid_point (V_lo, V_hi, n, i), Omega0,
+                     max_collisions, NULL, 0, &fates[i]);
+  return CHAPLYGIN_SUCCESS;
+}
+
+static int
+fate_kind (const fate_coef *c, double V, double Omega0, unsigned long max)
+{
+  chaplygin_fate f;
+  fate_from_phase (c, V, Omega0, max, NULL, 0, &f);
+  return f.kind;
+}
+
+/* Bisection between a (fate ka) and b (the opposite straight-line fate)
+   down to adjacent doubles; a spinning midpoint ends it there.  V = 0 is
+   never evaluated (a midpoint 0 is replaced by b/2). */
+static int
+bisect (const fate_coef *c, double Omega0, double a, int ka, double b,
+        unsigned long max, double *Vb)
+{
+  for (;;)
+    {
+      double m = a + 0.5 * (b - a);
+      if (m == 0.0)
+        m = 0.5 * b;
+      if (m == a || m == b || m == 0.0)
+        break;
+      int km = fate_kind (c, m, Omega0, max);
+      if (km == CHAPLYGIN_FATE_SPIN)
+        {
+          *Vb = m;
+          return CHAPLYGIN_SUCCESS;
+        }
+      if (km == CHAPLYGIN_FATE_UNDECIDED)
+        return CHAPLYGIN_ENOCONV;
+      if (km == ka)
+        a = m;
+      else
+        b = m;
+    }
+  *Vb = a + 0.5 * (b - a);
+  return CHAPLYGIN_SUCCESS;
+}
+
+static int
+straight (int kind)
+{
+  return kind == CHAPLYGIN_FATE_FORWARD || kind == CHAPLYGIN_FATE_BACKWARD;
+}
+
+/* chaplygin_discrete_basin_boundaries: Figure 3, the boundaries between
+   the basins on the grid of chaplygin_discrete_basins: each grid point
+   whose motion spins, and for each pair of neighbouring grid points with
+   opposite straight-line fates the V+ between them where the computed fate
+   changes, by bisection to adjacent doubles (the returned V+ is one of
+   them, or a point found to spin).  Pairs with an undecided end are
+   skipped; boundaries that the grid does not separate (an even number
+   between two points) are not seen.  A boundary is a motion that spins
+   after some collisions, or one with 2E/H^2 = r* > 1 that comes to rest
+   (see the head of this file).
+   Accuracy: the computed fate changes within one ulp of the returned V+.
+   For Figure 3 (L0 = -1/2, Delta = 1, Omega0 = 4/5) the returned V_n are
+   within 6 eps (relative) of the exact boundaries (3/5)^n/sqrt(5) of
+   (B.13) for n = 0 ... 38, against a worst-case bound of (6 + n) eps (n
+   roundings of H); test basins_boundaries_figure3.
+   *count receives the number of boundaries; the first min(*count, cap)
+   are written to V_boundary (only those are refined).
+   Errors: as chaplygin_discrete_basins; CHAPLYGIN_EINVAL (count NULL, or
+   V_boundary NULL with cap > 0), CHAPLYGIN_ENOCONV (a bisection point
+   still undecided after max_collisions), CHAPLYGIN_ENOMEM.  Outputs are
+   written only on success. */
+int
+chaplygin_discrete_basin_boundaries (const chaplygin_discrete *sys,
+                                     double Omega0, double V_lo,
+                                     double V_hi, size_t n_grid,
+                                     unsigned long max_collisions,
+                                     double *V_boundary, size_t cap,
+                                     size_t *count)
+{
+  if (!sys || !count || (cap > 0 && !V_boundary))
+    return CHAPLYGIN_EINVAL;
+  fate_coef c;
+  CHP_TRY (check_grid (sys, Omega0, V_lo, V_hi, n_grid, &c));
+  size_t nbuf = cap < n_grid ? cap : n_grid;
+  double *buf = NULL;
+  if (nbuf > 0 && !(buf = malloc (nbuf * sizeof *buf)))
+    return CHAPLYGIN_ENOMEM;
+
+  size_t found = 0;
+  double V_prev = 0.0;
+  int k_prev = CHAPLYGIN_FATE_UNDECIDED;
+  int status = CHAPLYGIN_SUCCESS;
+  for (size_t i = 0; i < n_grid && status == CHAPLYGIN_SUCCESS; i++)
+    {
+      double V = grid_point (V_lo, V_hi, n_grid, i);
+      int k = fate_kind (&c, V, Omega0, max_collisions);
+      if (k == CHAPLYGIN_FATE_SPIN)
+        {
+          if (found < nbuf)
+            buf[found] = V;
+          found++;
+        }
+      else if (straight (k) && straight (k_prev) && k != k_prev)
+        {
+          if (found < nbuf)
+            status = bisect (&c, Omega0, V_prev, k_prev, V, max_collisions,
+                             &buf[found]);
+          found++;
+        }
+      V_prev = V;
+      k_prev = k;
+    }
+  if (status == CHAPLYGIN_SUCCESS)
+    {
+      for (size_t i = 0; i < nbuf && i < found; i++)
+        V_boundary[i] = buf[i];
+      *count = found;
+    }
+  free (buf);
+  return status;
+}
