@@ -294,6 +294,27 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* (B.1) evaluated as printed, without the reachability checks of
+   chaplygin_discrete_flow (for callers that have classified the motion
+   already); V^2 may come out slightly negative near a turning point.
+   CHAPLYGIN_ERANGE on overflow. */
+int
+chp_flow_eval (double L0, double D0, double V0, double Omega0, double D,
+               double *V2, double *Omega)
+{
+  double l0 = L0 + D0, l = L0 + D;
+  double n0 = chp_one_plus_sq (l0), n = chp_one_plus_sq (l);
+  double ratio = n0 / n;
+  double om = Omega0 * ratio;
+  double v2 = V0 * V0 + (D - D0) * (2.0 * L0 + D + D0) * ratio
+    * Omega0 * Omega0;
+  if (!isfinite (v2) || !isfinite (om))
+    return CHAPLYGIN_ERANGE;
+  *V2 = v2;
+  *Omega = om;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* chaplygin_discrete_flow: (B.1)
        V(D)^2 = V0^2 + (D - D0)(2 L0 + D + D0)(1 + (L0 + D0)^2) Omega0^2
                        / (1 + (L0 + D)^2),
@@ -318,14 +339,9 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (L0, D0, V0, Omega0) || !isfinite (D))
     return CHAPLYGIN_EDOM;
-  double l0 = L0 + D0, l = L0 + D;
-  double n0 = chp_one_plus_sq (l0), n = chp_one_plus_sq (l);
-  double ratio = n0 / n;
-  double om = Omega0 * ratio;
-  double v2 = V0 * V0 + (D - D0) * (2.0 * L0 + D + D0) * ratio
-    * Omega0 * Omega0;
-  if (!isfinite (v2) || !isfinite (om))
-    return CHAPLYGIN_ERANGE;
+  double v2, om;
+  CHP_TRY (chp_flow_eval (L0, D0, V0, Omega0, D, &v2, &om));
+  double l0 = L0 + D0, l = L0 + D, n0 = chp_one_plus_sq (l0);
   if (v2 < 0.0)
     return CHAPLYGIN_ESTATE;
   /* V^2 is smallest where l = 0: a path that crosses l = 0 must have

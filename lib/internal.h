@@ -164,6 +164,11 @@ double chp_motion_g (const chp_motion *m, double l);
    ~2 ulps of g for the given E, H, l (error-free transformations). */
 double chp_motion_g_exact (const chp_motion *m, double l, double el);
 
+/* (B.1) as printed, no reachability checks: V(D)^2 (may be slightly
+   negative near a turning point) and Omega(D). */
+int chp_flow_eval (double L0, double D0, double V0, double Omega0, double D,
+                   double *V2, double *Omega);
+
 /* Heading and time along one leg from la to lb (no turning point strictly
    between them; lb may be one), ga = g(la), gb = g(lb), dl = |lb - la|. */
 int chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,

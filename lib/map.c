@@ -413,12 +413,15 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
   double g0 = chp_one_plus_sq (l0) * V * (V / (2.0 * st.E));
   CHP_TRY (step_core (sys, &st, &g0, req, opt, &st, &ev));
 
-  /* p: (B.1) from the post-collision state to the end the peg leaves. */
+  /* p: (B.1) from the post-collision state to the end the peg leaves,
+     which step_core has classified from (E, H) exactly: no second
+     reachability test that could disagree with it within rounding (a
+     motion through l = 0 with 2E within an ulp of H^2) */
   double V2, Om;
-  CHP_TRY (chaplygin_discrete_flow (sys->L0, qplus[CHAPLYGIN_D],
-                                    qplus[CHAPLYGIN_V],
-                                    qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2,
-                                    &Om));
+  CHP_TRY (chp_flow_eval (sys->L0, qplus[CHAPLYGIN_D], qplus[CHAPLYGIN_V],
+                          qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2, &Om));
+  if (V2 < 0.0)
+    V2 = 0.0;
   double qminus[4] = { ev.Dminus, (ev.reversal ? -1 : 1) * copysign (sqrt (V2),
                                                                  qplus[CHAPLYGIN_V]),
                        qplus[CHAPLYGIN_THETA] + ev.dtheta, Om };

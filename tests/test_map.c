@@ -551,6 +551,21 @@ START_TEST (test_extremes_found_in_review)
   bs.E = nextafter (0x1p1019, 0.0);
   ck_assert_ok (chaplygin_discrete_spins (-0.5, 1.0, 1, bs.E, 0x1p510, &spins));
   ck_assert_int_eq (spins, 0);
+  /* The Poincare map through l = 0 with 2E within an ulp of H^2 (found by
+     the fate tests): the step, from (E, H), passes (1 - h^2 = 1.9e-17 >
+     0); (B.1)'s own reachability test, recomputed from the phase state,
+     once said the far end was out of reach (ESTATE).  Asserted: the two
+     routes agree, to the rounding of E, H formed from the phase state. */
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.45, 1.0));
+  double qp[4] = { 0, 0.00039838813622516261, 0, 0.00080733046406745719 };
+  double qn[4];
+  chaplygin_discrete_state ps;
+  ck_assert_ok (chaplygin_discrete_poincare (&sys, qp, NULL, qn, NULL));
+  ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, qp, 0, NULL, &ps));
+  ck_assert_ok (chaplygin_discrete_step (&sys, &ps, CHAPLYGIN_WANT_THETA, NULL, &o, &ev));
+  ck_assert (!ev.reversal && qn[CHAPLYGIN_V] > 0.0);
+  ck_assert_eps (qn[CHAPLYGIN_THETA], o.theta, 4);
+  ck_assert_eps (qn[CHAPLYGIN_OMEGA] * (1 + (-0.45) * (-0.45)), o.H, 8);
 }
 END_TEST
 
