@@ -608,6 +608,97 @@ int chaplygin_massless_jacobian2 (double L0, const chaplygin_discrete_state *st,
 int chaplygin_massless_mass_centre (double L0, const chaplygin_discrete_state *st,
                                     double G[2]);
 
+/* ------------------------------------------------------------------ */
+/* Section 3.1.3 and Appendix B.2.1, B.2.2: reversals, energy series   */
+/* ------------------------------------------------------------------ */
+
+/* (3.15) the lower bound on r for a post-collision state with direction
+   dir: V+^2 > 0 iff r > rmin = 1/(1 + l_s^2), l_s = L0 (dir = +1) or
+   L0 + Delta (dir = -1). */
+int chaplygin_discrete_ratio_lower_bound (double L0, double Delta, int dir,
+                                          double *rmin);
+
+/* (3.13), (3.14) and their generalisation: the open interval
+   (rlo, rhi) of r in which a valid state with direction dir reverses
+   before its next collision: rlo = 1/(1 + l_s^2) (3.15), rhi = 1/(1 + m^2),
+   m = min |l| over the path (0 if the path reaches l = 0).  *nonempty = 1
+   iff the path moves towards l = 0 (exact; the rounded bounds may coincide
+   when Delta << eps |L0|); otherwise rlo = rhi.  L0 > 0, dir = -1 gives
+   (3.13); L0 < -Delta, dir = +1 gives (3.14); -Delta < L0 < 0 gives
+   (1/(1 + l_s^2), 1) for either direction. */
+int chaplygin_discrete_reversal_range (double L0, double Delta, int dir,
+                                       double *rlo, double *rhi,
+                                       int *nonempty);
+
+/* (B.7) C3 = dir Delta (2 L0 + Delta)/(1 + l_f^2): the change of
+   Y = (1 + l_s^2) V^2/H^2 along a path without reversal; with (B.3),
+   Y' = (Y + C3)/C2^2. */
+int chaplygin_discrete_c3 (double L0, double Delta, int dir, double *C3);
+
+/* (B.6), corrected and generalised: the number n of further collisions
+   without reversal before the path that reverses, for the post-collision
+   state (dir, E, H):
+     n = ceil( log[(r (1 - C2^2) + 2 C1)/(rho (1 - C2^2) + 2 C1)]
+               / log C2^2 ),
+   rho = 1/(1 + m^2), C1, C2 of (B.3), resolved exactly at integers by
+   testing the (B.9) iterates.  *reverses = 1 and *n written, or
+   *reverses = 0 (no reversal ever) and *n untouched.
+   CHAPLYGIN_ESPIN if the motion reaches the spinning state (3.8) first. */
+int chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
+                                                   int dir, double E,
+                                                   double H, int *reverses,
+                                                   unsigned long *n);
+
+/* (B.8), corrected (MAX, not MIN): *two = 1 iff both turning points (B.5)
+   lie inside the slot, 0 < D_c < Delta: -Delta < L0 < 0 and
+   MAX{1/(1 + L0^2), 1/(1 + (L0 + Delta)^2)} < r < 1; then a state of
+   either direction reverses. */
+int chaplygin_discrete_two_turning_points (double L0, double Delta, double E,
+                                           double H, int *two);
+
+/* (B.9), corrected (the sum has n terms, j = 0 .. n-1): the state after n
+   collisions without reversal,
+     E_n = E + C1 H^2 (1 - C2^2n)/(1 - C2^2),   H_n = C2^n H.
+   CHAPLYGIN_ESTATE if the motion reverses before the n-th collision. */
+int chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
+                                     double E, double H, unsigned long n,
+                                     double *En, double *Hn);
+
+/* (B.10) the final energy of a state that never reverses again:
+     E_f = E + C1 H^2/(1 - C2^2).
+   CHAPLYGIN_EDOM if |C2| >= 1 (the series diverges, (B.11) fails: the
+   motion reverses), CHAPLYGIN_ESTATE if it reverses although |C2| < 1. */
+int chaplygin_discrete_final_energy (const chaplygin_discrete *sys, int dir,
+                                     double E, double H, double *Ef);
+
+/* (B.11), corrected: *converges = 1 iff |C2| < 1 for the (B.3) coefficient
+   of direction dir, i.e. with x = L0/Delta, u = 1 - D+/Delta:
+     -x + 2 x u + u^2 > 0   and   (1/Delta)^2 > -(2 x^2 + (1 + 2u) x + u^2)/2,
+   which are (3.11) for dir = +1 (u = 1) and (3.12) for dir = -1 (u = 0).
+   Decided exactly. */
+int chaplygin_discrete_energy_converges (double L0, double Delta, int dir,
+                                         int *converges);
+
+/* (B.12) and its V < 0 counterpart: the final velocity of the
+   post-collision phase state (V, Omega) (peg at D = 0 if V > 0, D = Delta
+   if V < 0) that never reverses again:
+     V > 0:  Vf^2 = V^2 + (1 + L0^2)
+                  [1 - Delta/((L0 + Delta)(2 + (L0 + Delta)(2 L0 + Delta)))] Omega^2,
+     V < 0:  Vf^2 = V^2 + (1 + (L0 + Delta)^2)
+                  [1 + Delta/(L0 (2 + L0 (2 L0 + Delta)))] Omega^2,
+   Vf with the sign of V.  Statuses as chaplygin_discrete_final_energy. */
+int chaplygin_discrete_final_velocity (double L0, double Delta, double V,
+                                       double Omega, double *Vf);
+
+/* (B.13) the symmetric case L0 = -Delta/2: the post-collision ratio
+   V^2/Omega^2 from which the motion reaches the spinning state (3.8) just
+   after the n-th collision (n reversals on the way):
+     V^2/Omega^2 = (1 + L0^2)^2 (C2^2n - 2 C1 (1 - C2^2n)/(1 - C2^2))
+                   - (1 + L0^2)
+                 = L0^2 (1 + L0^2) C2^2n,   C2 = (1 - L0^2)/(1 + L0^2). */
+int chaplygin_discrete_spin_sequence (double Delta, unsigned long n,
+                                      double *v2_over_omega2);
+
 #ifdef __cplusplus
 }
 #endif

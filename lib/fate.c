@@ -134,7 +134,7 @@ fate_coef_init (const chaplygin_discrete *sys, fate_coef *c)
 
 /* Iterate (u, H) in direction dir (scaled by 2^-scale in V and H) until
    the fate is certain, the motion spins, or max collisions are done. */
-static void
+static int
 fate_run (const fate_coef *c, int dir, double u, double H, int scale,
           unsigned long max, unsigned long *reversal_at, size_t cap,
           chaplygin_fate *out)
@@ -207,13 +207,17 @@ fate_run (const fate_coef *c, int dir, double u, double H, int scale,
       r.V_final = kind == CHAPLYGIN_FATE_SPIN ? 0.0
         : dir * ldexp (sqrt (u), scale);
     }
+  /* an energy beyond the double range (|V+| above ~1e154) */
+  if (!isfinite (r.E_final) || !isfinite (r.V_final))
+    return CHAPLYGIN_ERANGE;
   *out = r;
+  return CHAPLYGIN_SUCCESS;
 }
 
 /* The fate from a phase state V+ != 0, Omega+ (both finite), the peg at the
    end the sign of V+ implies.  V and H are scaled by 2^-k so that
    max(|V+|, |Omega+| sqrt(1 + l0^2)) is O(1). */
-static void
+static int
 fate_from_phase (const fate_coef *c, double V, double Omega,
                  unsigned long max, unsigned long *reversal_at, size_t cap,
                  chaplygin_fate *out)
@@ -229,7 +233,7 @@ fate_from_phase (const fate_coef *c, double V, double Omega,
     }
   const double Vs = ldexp (V, -k);
   const double Hs = n0 * ldexp (Omega, -k);
-  fate_run (c, dir, Vs * Vs, Hs, k, max, reversal_at, cap, out);
+  return fate_run (c, dir, Vs * Vs, Hs, k, max, reversal_at, cap, out);
 }
 
 /* chaplygin_discrete_fate: Section 3.1.3, the fate of the motion from the
@@ -259,7 +263,8 @@ fate_from_phase (const fate_coef *c, double V, double Omega,
    E > 0, V+^2 > 0; |L0|, |L0 + Delta| <= 2^500.
    Errors: CHAPLYGIN_EINVAL (NULL sys, init or fate, dir), CHAPLYGIN_EDOM
    (non-finite, Delta <= 0, E < 0), CHAPLYGIN_ESTATE (E = 0, V+^2 <= 0),
-   CHAPLYGIN_ERANGE (|L0 + D| above 2^500, H^2/(2E) overflows).
+   CHAPLYGIN_ERANGE (|L0 + D| above 2^500, H^2/(2E) overflows, the final
+   energy beyond the double range).
    reversal_at is written (at most reversal_cap entries) only on success. */
 int
 chaplygin_discrete_fate (const chaplygin_discrete *sys,
@@ -297,14 +302,14 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
   if (spins || H == 0.0)
     {
       chaplygin_fate r = { spins ? CHAPLYGIN_FATE_SPIN : init->dir, 0, 0, 0,
-                           E, spins ? 0.0 : init->dir * sqrt (2.0 * E) };
+                           E, spins ? 0.0 : init->dir * (isfinite (2.0 * E) ? sqrt (2.0 * E)
+                                                  : M_SQRT2 * sqrt (E)) };
       *fate = r;
       return CHAPLYGIN_SUCCESS;
     }
   const double u = 2.0 * Es * (g0 / c.leg[i].n0);
-  fate_run (&c, init->dir, u, Hs, k, max_collisions, reversal_at,
-            reversal_cap, fate);
-  return CHAPLYGIN_SUCCESS;
+  return fate_run (&c, init->dir, u, Hs, k, max_collisions, reversal_at,
+                   reversal_cap, fate);
 }
 
 /* chaplygin_discrete_fate_phase: the same from qplus = {D+, V+, theta+,
@@ -313,7 +318,8 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
    Domain: finite; V+ != 0; D+ = 0 for V+ > 0, Delta for V+ < 0 exactly.
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, Delta <= 0),
    CHAPLYGIN_ESTATE (V+ = 0 or D+ not the matching end), CHAPLYGIN_ERANGE
-   (|L0 + D| above 2^500). */
+   (|L0 + D| above 2^500, the final energy beyond the double range:
+   |V+| above ~1e154). */
 int
 chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
                                const double qplus[4],
@@ -330,9 +336,8 @@ chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
   const double V = qplus[CHAPLYGIN_V], D = qplus[CHAPLYGIN_D];
   if (V == 0.0 || (V > 0.0 && D != 0.0) || (V < 0.0 && D != sys->Delta))
     return CHAPLYGIN_ESTATE;
-  fate_from_phase (&c, V, qplus[CHAPLYGIN_OMEGA], max_collisions,
-                   reversal_at, reversal_cap, fate);
-  return CHAPLYGIN_SUCCESS;
+  return fate_from_phase (&c, V, qplus[CHAPLYGIN_OMEGA], max_collisions,
+                          reversal_at, reversal_cap, fate);
 }
 
 /* The i-th of n points of the uniform grid from lo to hi (both included). */
@@ -367,7 +372,8 @@ check_grid (const chaplygin_discrete *sys, double Omega0, double V_lo,
    chaplygin_discrete_fate_phase.  n = 0 does nothing (fates may be NULL).
    Domain: finite; V_lo <= V_hi, V_hi - V_lo finite; no grid point 0.
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (a grid
-   point is 0), CHAPLYGIN_ERANGE (|L0 + D| above 2^500). */
+   point is 0), CHAPLYGIN_ERANGE (|L0 + D| above 2^500, a final energy
+   beyond the double range). */
 int
 chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
                            double V_lo, double V_hi, size_t n,
@@ -379,8 +385,8 @@ chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
   fate_coef c;
   CHP_TRY (check_grid (sys, Omega0, V_lo, V_hi, n, &c));
   for (size_t i = 0; i < n; i++)
-    fate_from_phase (&c, grid_point (V_lo, V_hi, n, i), Omega0,
-                     max_collisions, NULL, 0, &fates[i]);
+    CHP_TRY (fate_from_phase (&c, grid_point (V_lo, V_hi, n, i), Omega0,
+                              max_collisions, NULL, 0, &fates[i]));
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -388,7 +394,9 @@ static int
 fate_kind (const fate_coef *c, double V, double Omega0, unsigned long max)
 {
   chaplygin_fate f;
-  fate_from_phase (c, V, Omega0, max, NULL, 0, &f);
+  /* an energy beyond the double range: not decided (ENOCONV upstream) */
+  if (fate_from_phase (c, V, Omega0, max, NULL, 0, &f) != CHAPLYGIN_SUCCESS)
+    return CHAPLYGIN_FATE_UNDECIDED;
   return f.kind;
 }
 

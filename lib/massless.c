@@ -136,7 +136,8 @@ chaplygin_massless_energy (double L0, double D, double V, double Omega,
   if (!chp_finite4 (L0, D, V, Omega))
     return CHAPLYGIN_EDOM;
   double u = (L0 + D) * Omega;
-  double r = 0.5 * (V * V + u * u);
+  /* halved first: E may be representable where V^2 is not */
+  double r = (0.5 * V) * V + (0.5 * u) * u;
   if (!isfinite (r))
     return CHAPLYGIN_ERANGE;
   *E = r;

@@ -20,7 +20,9 @@ UNIT_CHECKS = \
 	tests/test_ode \
 	tests/test_stability \
 	tests/test_fate \
-	tests/test_massless
+	tests/test_massless \
+	tests/test_reversal \
+	tests/test_energy
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
 
@@ -60,5 +62,11 @@ tests_test_fate_LDADD = $(TEST_LDADD)
 tests_test_massless_SOURCES = tests/test_massless.c
 tests_test_massless_CFLAGS = $(TEST_CFLAGS)
 tests_test_massless_LDADD = $(TEST_LDADD)
+tests_test_reversal_SOURCES = tests/test_reversal.c
+tests_test_reversal_CFLAGS = $(TEST_CFLAGS)
+tests_test_reversal_LDADD = $(TEST_LDADD)
+tests_test_energy_SOURCES = tests/test_energy.c
+tests_test_energy_CFLAGS = $(TEST_CFLAGS)
+tests_test_energy_LDADD = $(TEST_LDADD)
 
 EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README

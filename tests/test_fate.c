@@ -782,6 +782,20 @@ START_TEST (fate_errors)
   chaplygin_discrete_state s = { 1, 1.0, 0.5, 0, 0, { 0, 0 } }, t;
   double q[4] = { 0, 0.5, 0, 0.7 }, p[4];
   unsigned long at[2] = { 9, 9 };
+  /* energies at the top of the double range (found in review): H = 0 and
+     E = 1e308 is representable, V* = sqrt(2E) = 1.4e154; a phase state
+     with V+ = 1e200 has E beyond it: ERANGE, nothing written */
+  chaplygin_discrete_state big = { -1, 1e308, 0.0, 0, 0, { 0, 0 } };
+  ck_assert_ok (chaplygin_discrete_fate (&sys, &big, 10, NULL, 0, &f));
+  ck_assert_int_eq (f.kind, CHAPLYGIN_FATE_BACKWARD);
+  ck_assert_eps (f.V_final, -sqrt (2.0) * 1e154, 2);
+  double qbig[4] = { 0, 1e200, 0, 0.5 };
+  f = keep;
+  ck_assert_status (chaplygin_discrete_fate_phase (&sys, qbig, 10, NULL, 0, &f),
+                    CHAPLYGIN_ERANGE);
+  ck_assert (f.kind == 7 && f.E_final == 7.0);
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.5, 1e200, 2e200, 2, 10, &f),
+                    CHAPLYGIN_ERANGE);
   ck_assert_status (chaplygin_discrete_fate (NULL, &s, 10, NULL, 0, &f), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_fate (&sys, NULL, 10, NULL, 0, &f), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_fate (&sys, &s, 10, NULL, 0, NULL), CHAPLYGIN_EINVAL);

@@ -1135,6 +1135,13 @@ END_TEST
 
 START_TEST (test_edge_cases)
 {
+  /* E representable although V^2 is not (found in review): V = 1.5e154
+     gives E = 1.125e308 */
+  double Ebig;
+  ck_assert_ok (chaplygin_massless_energy (-0.5, 0.0, 1.5e154, 0.0, &Ebig));
+  ck_assert_eps (Ebig, 1.125e308, 2);
+  ck_assert_status (chaplygin_massless_energy (-0.5, 0.0, 1e155, 0.0, &Ebig),
+                    CHAPLYGIN_ERANGE);
   chaplygin_discrete_state s = make_state (1, 0.5, 0.3, 0.1, 0.2, 0.3, 0.4), o;
   chaplygin_discrete_event ev;
   o = make_state (9, 9, 9, 9, 9, 9, 9);
