@@ -336,6 +336,42 @@ criteria_against_eigenvalues (int dir)
     }
   ck_assert_int_gt (n_stable, 1000);
   ck_assert_int_gt (n_unstable, 1000);
+  /* against iterating the map: from the fixed point with H perturbed to
+     1e-6, 40 collisions shrink |H| without a reversal iff stable (points with
+     ||sigma4| - 1| > 0.05, so |sigma4|^40 is below 0.13 or above 7);
+     the first collision by the ODE route (3.1) + (3.6) gives
+     H'/H = sigma4 to its tolerance */
+  const chaplygin_options ode = { CHAPLYGIN_ODE, 1e-12, CHAPLYGIN_PREC_DOUBLE };
+  int n_checked = 0;
+  while (n_checked < 200)
+    {
+      double x = tu_uniform (&r, -4.0, 2.0), y = tu_uniform (&r, 0.01, 1.0);
+      double Delta = 1.0 / sqrt (y), L0 = x * Delta, s4;
+      __float128 margin;
+      int want = stable_by_eigenvalue (L0, Delta, dir, &margin);
+      if (margin < 0.05)
+        continue;
+      chaplygin_discrete sys;
+      chaplygin_discrete_state st;
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+      ck_assert_ok (chaplygin_discrete_fixed_point (&sys, dir * 1.3, 0, 0, NULL,
+                                                    &st, NULL));
+      ck_assert_ok (chaplygin_discrete_sigma4 (L0, Delta, dir, &s4, NULL));
+      st.H = 1e-6;
+      chaplygin_discrete_state o;
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, &ode, &o, NULL));
+      ck_assert_rel (o.H / st.H, s4, 1e-9);
+      /* a reversal means the motion has left the fixed point */
+      int left = 0;
+      for (int k = 0; k < 40 && !left; k++)
+        {
+          chaplygin_discrete_event ev;
+          ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, NULL, &st, &ev));
+          left = ev.reversal;
+        }
+      ck_assert_int_eq (!left && fabs (st.H) < 1e-6, want);
+      n_checked++;
+    }
 }
 
 START_TEST (eq_3_11)
