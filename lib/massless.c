@@ -41,14 +41,6 @@
 
 /* ---- (B.17) ----------------------------------------------------------- */
 
-static int
-check_scales (double delta, double v0)
-{
-  if (!chp_finite2 (delta, v0) || !(delta > 0.0) || !(v0 > 0.0))
-    return CHAPLYGIN_EDOM;
-  return CHAPLYGIN_SUCCESS;
-}
-
 /* chaplygin_massless_nondimensionalize: (B.17)
        L0 = ell0/delta, D = d/delta, V = v/v0, Omega = omega delta/v0,
        tau = t v0/delta, theta unchanged, Delta = dim->delta/delta.
@@ -58,6 +50,8 @@ check_scales (double delta, double v0)
    scale as E = T/(m v0^2) (chaplygin_energy_nondimensionalize) and
    H = h/(m delta v0) (chaplygin_momentum_nondimensionalize with delta in
    place of rho).
+   Method: (3.2) with delta in place of rho
+   (chaplygin_discrete_nondimensionalize).
    Domain: delta > 0, v0 > 0, all fields finite.
    Accuracy: each quotient correctly rounded; Omega and tau within 1.5 ulps
    (two roundings: omega (delta/v0)).
@@ -68,25 +62,7 @@ chaplygin_massless_nondimensionalize (double delta, double v0,
                                       const chaplygin_discrete_dim *dim,
                                       chaplygin_discrete_nondim *nd)
 {
-  if (!dim || !nd)
-    return CHAPLYGIN_EINVAL;
-  CHP_TRY (check_scales (delta, v0));
-  if (!chp_finite4 (dim->ell0, dim->delta, dim->d, dim->v)
-      || !chp_finite2 (dim->theta, dim->omega) || !isfinite (dim->t))
-    return CHAPLYGIN_EDOM;
-  chaplygin_discrete_nondim r;
-  r.L0 = dim->ell0 / delta;
-  r.Delta = dim->delta / delta;
-  r.D = dim->d / delta;
-  r.V = dim->v / v0;
-  r.theta = dim->theta;
-  r.Omega = dim->omega * (delta / v0);
-  r.tau = dim->t * (v0 / delta);
-  if (!chp_finite4 (r.L0, r.Delta, r.D, r.V)
-      || !chp_finite2 (r.Omega, r.tau))
-    return CHAPLYGIN_ERANGE;
-  *nd = r;
-  return CHAPLYGIN_SUCCESS;
+  return chaplygin_discrete_nondimensionalize (delta, v0, dim, nd);
 }
 
 /* chaplygin_massless_dimensionalize: the inverse of (B.17):
@@ -98,25 +74,7 @@ chaplygin_massless_dimensionalize (double delta, double v0,
                                    const chaplygin_discrete_nondim *nd,
                                    chaplygin_discrete_dim *dim)
 {
-  if (!dim || !nd)
-    return CHAPLYGIN_EINVAL;
-  CHP_TRY (check_scales (delta, v0));
-  if (!chp_finite4 (nd->L0, nd->Delta, nd->D, nd->V)
-      || !chp_finite2 (nd->theta, nd->Omega) || !isfinite (nd->tau))
-    return CHAPLYGIN_EDOM;
-  chaplygin_discrete_dim r;
-  r.ell0 = nd->L0 * delta;
-  r.delta = nd->Delta * delta;
-  r.d = nd->D * delta;
-  r.v = nd->V * v0;
-  r.theta = nd->theta;
-  r.omega = nd->Omega * (v0 / delta);
-  r.t = nd->tau * (delta / v0);
-  if (!chp_finite4 (r.ell0, r.delta, r.d, r.v)
-      || !chp_finite2 (r.omega, r.t))
-    return CHAPLYGIN_ERANGE;
-  *dim = r;
-  return CHAPLYGIN_SUCCESS;
+  return chaplygin_discrete_dimensionalize (delta, v0, nd, dim);
 }
 
 /* ---- invariants ------------------------------------------------------- */
