@@ -25,7 +25,7 @@ case $lib in
   *) symbols=$(nm -g --defined-only "$lib" | awk '$2 == "T" { print $3 }') ;;
 esac
 # TCase names: literal first arguments of tcase_create() or of the add()
-# helper some suites use ("add (s, "eq_3_1", ...)").
+# helper tu_add (s, "eq_3_1", ...) of tests/testutil.h.
 tcases=$(cat "$top_srcdir"/tests/*.c \
   | sed -n -e 's/.*tcase_create *( *"\([^"]*\)".*/\1/p' \
            -e 's/.*add *( *s *, *"\([^"]*\)".*/\1/p')

@@ -427,25 +427,15 @@ START_TEST (eq_3_8)
 }
 END_TEST
 
-/* One TCase per equation, named after it (doc/concordance.tsv). */
-static void
-add (Suite *s, const char *name, const TTest *test)
-{
-  TCase *t = tcase_create (name);
-  tcase_set_timeout (t, 60);
-  tcase_add_test (t, test);
-  suite_add_tcase (s, t);
-}
-
 int
 main (void)
 {
   Suite *s = suite_create ("discrete");
-  add (s, "eq_3_1", eq_3_1);
-  add (s, "eq_3_3", eq_3_3);
-  add (s, "eq_3_4", eq_3_4);
-  add (s, "eq_3_6", eq_3_6);
-  add (s, "eq_3_7", eq_3_7);
-  add (s, "eq_3_8", eq_3_8);
+  tu_add (s, "eq_3_1", eq_3_1);
+  tu_add (s, "eq_3_3", eq_3_3);
+  tu_add (s, "eq_3_4", eq_3_4);
+  tu_add (s, "eq_3_6", eq_3_6);
+  tu_add (s, "eq_3_7", eq_3_7);
+  tu_add (s, "eq_3_8", eq_3_8);
   return tu_run (s);
 }

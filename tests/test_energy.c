@@ -695,24 +695,14 @@ START_TEST (eq_B_13)
 }
 END_TEST
 
-/* One TCase per equation, named after it (doc/concordance.tsv). */
-static void
-add (Suite *s, const char *name, const TTest *test)
-{
-  TCase *t = tcase_create (name);
-  tcase_set_timeout (t, 60);
-  tcase_add_test (t, test);
-  suite_add_tcase (s, t);
-}
-
 int
 main (void)
 {
   Suite *s = suite_create ("energy");
-  add (s, "eq_B_9", eq_B_9);
-  add (s, "eq_B_10", eq_B_10);
-  add (s, "eq_B_11", eq_B_11);
-  add (s, "eq_B_12", eq_B_12);
-  add (s, "eq_B_13", eq_B_13);
+  tu_add (s, "eq_B_9", eq_B_9);
+  tu_add (s, "eq_B_10", eq_B_10);
+  tu_add (s, "eq_B_11", eq_B_11);
+  tu_add (s, "eq_B_12", eq_B_12);
+  tu_add (s, "eq_B_13", eq_B_13);
   return tu_run (s);
 }

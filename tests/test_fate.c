@@ -1253,32 +1253,23 @@ START_TEST (basins_errors)
 }
 END_TEST
 
-static void
-add (Suite *s, const char *name, const TTest *test)
-{
-  TCase *t = tcase_create (name);
-  tcase_set_timeout (t, 60);
-  tcase_add_test (t, test);
-  suite_add_tcase (s, t);
-}
-
 int
 main (void)
 {
   Suite *s = suite_create ("fate");
-  add (s, "fate_vs_plain_step", fate_vs_plain_step);
-  add (s, "fate_b10", fate_b10);
-  add (s, "fate_b12", fate_b12);
-  add (s, "fate_multiple_reversals", fate_multiple_reversals);
-  add (s, "fate_one_direction", fate_one_direction);
-  add (s, "fate_rest_boundary", fate_rest_boundary);
-  add (s, "fate_spin", fate_spin);
-  add (s, "fate_special", fate_special);
-  add (s, "fate_scaling", fate_scaling);
-  add (s, "fate_errors", fate_errors);
-  add (s, "basins_figure3", basins_figure3);
-  add (s, "basins_boundaries_figure3", basins_boundaries_figure3);
-  add (s, "basins_nonsymmetric", basins_nonsymmetric);
-  add (s, "basins_errors", basins_errors);
+  tu_add (s, "fate_vs_plain_step", fate_vs_plain_step);
+  tu_add (s, "fate_b10", fate_b10);
+  tu_add (s, "fate_b12", fate_b12);
+  tu_add (s, "fate_multiple_reversals", fate_multiple_reversals);
+  tu_add (s, "fate_one_direction", fate_one_direction);
+  tu_add (s, "fate_rest_boundary", fate_rest_boundary);
+  tu_add (s, "fate_spin", fate_spin);
+  tu_add (s, "fate_special", fate_special);
+  tu_add (s, "fate_scaling", fate_scaling);
+  tu_add (s, "fate_errors", fate_errors);
+  tu_add (s, "basins_figure3", basins_figure3);
+  tu_add (s, "basins_boundaries_figure3", basins_boundaries_figure3);
+  tu_add (s, "basins_nonsymmetric", basins_nonsymmetric);
+  tu_add (s, "basins_errors", basins_errors);
   return tu_run (s);
 }

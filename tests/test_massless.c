@@ -1310,31 +1310,21 @@ START_TEST (test_edge_cases)
 }
 END_TEST
 
-/* One TCase per equation, named after it (doc/concordance.tsv). */
-static void
-add (Suite *s, const char *name, const TTest *test)
-{
-  TCase *t = tcase_create (name);
-  tcase_set_timeout (t, 60);
-  tcase_add_test (t, test);
-  suite_add_tcase (s, t);
-}
-
 int
 main (void)
 {
   gsl_set_error_handler_off ();
   Suite *s = suite_create ("massless");
-  add (s, "eq_B_15", eq_B_15);
-  add (s, "eq_B_16", eq_B_16);
-  add (s, "eq_B_17", eq_B_17);
-  add (s, "massless_invariants", test_invariants);
-  add (s, "massless_rho_limit", test_rho_limit);
-  add (s, "massless_period2", test_period2);
-  add (s, "massless_period2_long", test_period2_long);
-  add (s, "massless_jacobian", test_jacobian);
-  add (s, "massless_straight_line", test_straight_line);
-  add (s, "massless_edge_cases", test_edge_cases);
+  tu_add (s, "eq_B_15", eq_B_15);
+  tu_add (s, "eq_B_16", eq_B_16);
+  tu_add (s, "eq_B_17", eq_B_17);
+  tu_add (s, "massless_invariants", test_invariants);
+  tu_add (s, "massless_rho_limit", test_rho_limit);
+  tu_add (s, "massless_period2", test_period2);
+  tu_add (s, "massless_period2_long", test_period2_long);
+  tu_add (s, "massless_jacobian", test_jacobian);
+  tu_add (s, "massless_straight_line", test_straight_line);
+  tu_add (s, "massless_edge_cases", test_edge_cases);
   return tu_run (s);
 }
 

@@ -877,25 +877,15 @@ START_TEST (eq_B_8)
 }
 END_TEST
 
-/* One TCase per equation, named after it (doc/concordance.tsv). */
-static void
-add (Suite *s, const char *name, const TTest *test)
-{
-  TCase *t = tcase_create (name);
-  tcase_set_timeout (t, 60);
-  tcase_add_test (t, test);
-  suite_add_tcase (s, t);
-}
-
 int
 main (void)
 {
   Suite *s = suite_create ("reversal");
-  add (s, "eq_3_13", eq_3_13);
-  add (s, "eq_3_14", eq_3_14);
-  add (s, "eq_3_15", eq_3_15);
-  add (s, "eq_B_6", eq_B_6);
-  add (s, "eq_B_7", eq_B_7);
-  add (s, "eq_B_8", eq_B_8);
+  tu_add (s, "eq_3_13", eq_3_13);
+  tu_add (s, "eq_3_14", eq_3_14);
+  tu_add (s, "eq_3_15", eq_3_15);
+  tu_add (s, "eq_B_6", eq_B_6);
+  tu_add (s, "eq_B_7", eq_B_7);
+  tu_add (s, "eq_B_8", eq_B_8);
   return tu_run (s);
 }

@@ -780,17 +780,6 @@ START_TEST (fig_2)
 }
 END_TEST
 
-static void
-add (Suite *s, const char *name, const TTest *t1, const TTest *t2)
-{
-  TCase *tc = tcase_create (name);
-  tcase_add_test (tc, t1);
-  if (t2)
-    tcase_add_test (tc, t2);
-  tcase_set_timeout (tc, 120);
-  suite_add_tcase (s, tc);
-}
-
 int
 main (void)
 {
@@ -803,12 +792,12 @@ main (void)
   tcase_add_test (tc, eq_3_9_errors);
   tcase_set_timeout (tc, 120);
   suite_add_tcase (s, tc);
-  add (s, "eq_3_10", eq_3_10, NULL);
-  add (s, "eq_3_11", eq_3_11, NULL);
-  add (s, "eq_3_12", eq_3_12, NULL);
-  add (s, "eq_4_1", eq_4_1, NULL);
-  add (s, "eq_B_14", eq_B_14, NULL);
-  add (s, "spin_equilibrium", spin_equilibrium, NULL);
-  add (s, "fig_2", fig_2, NULL);
+  tu_add (s, "eq_3_10", eq_3_10);
+  tu_add (s, "eq_3_11", eq_3_11);
+  tu_add (s, "eq_3_12", eq_3_12);
+  tu_add (s, "eq_4_1", eq_4_1);
+  tu_add (s, "eq_B_14", eq_B_14);
+  tu_add (s, "spin_equilibrium", spin_equilibrium);
+  tu_add (s, "fig_2", fig_2);
   return tu_run (s);
 }

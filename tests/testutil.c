@@ -47,3 +47,12 @@ tu_uniform (tu_rng *r, double a, double b)
   double u = (double) (x >> 11) * 0x1p-53;
   return a + (b - a) * u;
 }
+
+void
+tu_add (Suite *s, const char *name, const TTest *test)
+{
+  TCase *t = tcase_create (name);
+  tcase_set_timeout (t, 60);
+  tcase_add_test (t, test);
+  suite_add_tcase (s, t);
+}

@@ -44,6 +44,10 @@ int tu_close (double got, double want, double tol);
 
 #define ck_assert_ok(expr) ck_assert_status (expr, CHAPLYGIN_SUCCESS)
 
+/* A TCase named NAME (an equation label such as "eq_3_10", which
+   tests/concordance.sh looks for) holding TEST, timeout 60 s, added to S. */
+void tu_add (Suite *s, const char *name, const TTest *test);
+
 /* Run suite S, return EXIT_SUCCESS or EXIT_FAILURE. */
 int tu_run (Suite *s);
 
