@@ -134,7 +134,8 @@ check_params (double L0, double Delta, int dir)
    r > rmin.  As printed.
    Method: 1 + l_s^2 with the rounding error of L0 + Delta included.
    Accuracy: within 2 ulps.
-   Domain: finite; Delta > 0; dir = +-1; |l_s| <= 2^500.
+   Domain: finite; Delta > 0; dir = +-1; |L0|, |L0 + Delta| <= 2^500
+   (both ends, as everywhere in the library).
    Errors: CHAPLYGIN_EINVAL (NULL, dir), CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE. */
 int
 chaplygin_discrete_ratio_lower_bound (double L0, double Delta, int dir,
