@@ -57,7 +57,8 @@ chaplygin_discrete_energy (double L0, double D, double V, double Omega,
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (L0, D, V, Omega))
     return CHAPLYGIN_EDOM;
-  double r = 0.5 * (V * V + chp_one_plus_sq (L0 + D) * Omega * Omega);
+  /* halved before squaring: E may be representable where V^2 is not */
+  double r = (0.5 * V) * V + (0.5 * chp_one_plus_sq (L0 + D) * Omega) * Omega;
   if (!isfinite (r))
     return CHAPLYGIN_ERANGE;
   *E = r;

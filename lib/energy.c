@@ -44,43 +44,45 @@ chp_run_state (const chp_run *run, double E, double H, double k, double *Ek,
     }
   int eh, j = 0;
   const double m = frexp (H, &eh);
-  double a = 1.0, T;            /* |C2|^k (times 2^-j); C1 H^2 S_k 2^-2(eh+j) */
+  int jt = 0;                   /* the exponent T carries: 2^-2(eh+jt) */
+  double a = 1.0, T;            /* |C2|^k (times 2^-j); C1 H^2 S_k 2^-2(eh+jt) */
   if (run->omq == 0.0)
     T = run->C1 * m * m * k;    /* |C2| = 1: S_k = k */
   else
     {
       const double L = k * run->logq;
-      if (L <= 0.0)
+      double hl = 0.5 * L;
+      if (fabs (hl) > 300.0)
         {
-          a = exp (0.5 * L);
-          T = run->C1 * m * m * (expm1 (L) / -run->omq);
+          /* exp(hl) = 2^j exp(hl - j ln 2), ln 2 split as in fdlibm (the
+             low 21 bits of ln2_hi are zero: j ln2_hi is exact for
+             |j| < 2^21); for hl < 0 too, so that |C2|^k does not
+             underflow before the exponent of H is put back */
+          const double ln2 = 0x1.62e42fefa39efp-1;   /* log 2 rounded */
+          const double ln2_hi = 6.93147180369123816490e-01;
+          const double ln2_lo = 1.90821492927058770002e-10;
+          double jj = floor (hl / ln2);
+          if (jj > 4096.0)
+            return CHAPLYGIN_ERANGE;
+          if (jj < -4096.0)
+            jj = -4096.0;       /* H_k underflows to 0 whatever H is */
+          j = (int) jj;
+          hl = (hl - jj * ln2_hi) - jj * ln2_lo;
         }
+      a = exp (hl);
+      if (L <= 0.0)
+        T = run->C1 * m * m * (expm1 (L) / -run->omq);
       else
         {
-          double hl = 0.5 * L;
-          if (hl > 300.0)
-            {
-              /* exp(hl) = 2^j exp(hl - j ln 2), ln 2 split as in fdlibm
-                 (the low 21 bits of ln2_hi are zero: j ln2_hi is exact
-                 for j < 2^21) */
-              const double ln2 = 0x1.62e42fefa39efp-1;   /* log 2 rounded */
-              const double ln2_hi = 6.93147180369123816490e-01;
-              const double ln2_lo = 1.90821492927058770002e-10;
-              double jj = floor (hl / ln2);
-              if (jj > 4096.0)
-                return CHAPLYGIN_ERANGE;
-              j = (int) jj;
-              hl = (hl - jj * ln2_hi) - jj * ln2_lo;
-            }
-          a = exp (hl);
           double ma = m * a;
+          jt = j;
           T = run->C1 * ma * ma * (-expm1 (-L) / -run->omq);
         }
     }
   if (run->C2 < 0.0 && fmod (k, 2.0) == 1.0)
     a = -a;
   double h = ldexp (m * a, eh + j);
-  double e = E + ldexp (T, 2 * (eh + j));
+  double e = E + ldexp (T, 2 * (eh + jt));
   if (!isfinite (e) || !isfinite (h))
     return CHAPLYGIN_ERANGE;
   *Ek = e;
@@ -411,15 +413,18 @@ chaplygin_discrete_spin_sequence (double Delta, unsigned long n,
         : log (ac);
       e2 = 2.0 * (double) n * lc;
     }
-  /* a^2 (1 + a^2) C2^2n; through logarithms where a product would leave
-     the range of double though the result does not */
-  double v;
-  if (a <= 0x1p250)
-    v = a * a * na * exp (e2);
-  else
-    v = exp (2.0 * log (a) + log (na) + e2);
-  if (!(v > 0.0) && e2 > -HUGE_VAL)
-    v = exp (2.0 * log (a) + log (na) + e2);
+  /* a^2 (1 + a^2) C2^2n with the exponents kept apart (frexp, and
+     e2 = jj ln 2 + r with ln 2 split as in fdlibm): no factor leaves the
+     range of double unless the result does */
+  const double ln2_hi = 6.93147180369123816490e-01;
+  const double ln2_lo = 1.90821492927058770002e-10;
+  int ea, en;
+  const double ma = frexp (a, &ea), mn = frexp (na, &en);
+  double jj = floor (e2 / 0x1.62e42fefa39efp-1);
+  if (jj < -4096.0)
+    jj = -4096.0;               /* the result underflows whatever a is */
+  const double r = (e2 - jj * ln2_hi) - jj * ln2_lo;
+  double v = ldexp (ma * ma * mn * exp (r), 2 * ea + en + (int) jj);
   if (!(v > 0.0) || !isfinite (v))
     return CHAPLYGIN_ERANGE;
   *v2_over_omega2 = v;

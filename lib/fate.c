@@ -55,6 +55,7 @@
    intermediate overflows or underflows, and the results scaled back.  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -218,22 +219,43 @@ fate_run (const fate_coef *c, int dir, double u, double H, int scale,
    end the sign of V+ implies.  V and H are scaled by 2^-k so that
    max(|V+|, |Omega+| sqrt(1 + l0^2)) is O(1). */
 static int
+phase_scale (const fate_coef *c, double V, double Omega, double *u,
+             double *Hs, int *k)
+{
+  const int dir = V > 0.0 ? 1 : -1;
+  const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
+  int kk = ilogb (V);
+  if (Omega != 0.0)
+    {
+      int kO = ilogb (Omega) + ilogb (n0) / 2;
+      if (kO > kk)
+        kk = kO;
+    }
+  const double Vs = ldexp (V, -kk);
+  const double H = n0 * ldexp (Omega, -kk);
+  const double uu = Vs * Vs;
+  /* V+^2 below the normal range beside (1 + l0^2) Omega+^2 (|V+| under
+     ~1e-154 of it) would be lost, and an energy beyond the double range
+     has no final energy: both are refused before anything is written */
+  if (!(uu >= DBL_MIN)
+      || !isfinite (ldexp (0.5 * (uu + H * (H / n0)), 2 * kk)))
+    return CHAPLYGIN_ERANGE;
+  *u = uu;
+  *Hs = H;
+  *k = kk;
+  return CHAPLYGIN_SUCCESS;
+}
+
+static int
 fate_from_phase (const fate_coef *c, double V, double Omega,
                  unsigned long max, unsigned long *reversal_at, size_t cap,
                  chaplygin_fate *out)
 {
-  const int dir = V > 0.0 ? 1 : -1;
-  const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
-  int k = ilogb (V);
-  if (Omega != 0.0)
-    {
-      int kO = ilogb (Omega) + ilogb (n0) / 2;
-      if (kO > k)
-        k = kO;
-    }
-  const double Vs = ldexp (V, -k);
-  const double Hs = n0 * ldexp (Omega, -k);
-  return fate_run (c, dir, Vs * Vs, Hs, k, max, reversal_at, cap, out);
+  double u, Hs;
+  int k;
+  CHP_TRY (phase_scale (c, V, Omega, &u, &Hs, &k));
+  return fate_run (c, V > 0.0 ? 1 : -1, u, Hs, k, max, reversal_at, cap,
+                   out);
 }
 
 /* chaplygin_discrete_fate: Section 3.1.3, the fate of the motion from the
@@ -253,6 +275,11 @@ fate_from_phase (const fate_coef *c, double V, double Omega,
    (u, H) round differently).
    Cost: a few flops per collision, no square root or division: ~6 ns
    (1.7e8 collisions/s, ~20 times chaplygin_discrete_step with request 0).
+   The collisions are iterated one by one: where |L0| >> Delta a run
+   before a reversal lasts ~(|L0|/Delta) log(2E/H^2) collisions
+   (L0 = -2^30, Delta = 1: 1.5e10 collisions, 91 s in review), and
+   max_collisions is what bounds the time; skipping such runs by (B.6) and
+   (B.9) (chaplygin_discrete_collisions_before_reversal) is not done yet.
    Accuracy: |E_final - (B.10)| <= 8 eps (sum_j E_j + T) + (4k + 8) eps T,
    T = |C1| H^2/(1 - C2^2), with (B.10) evaluated in binary128 at the
    state after the k collisions and sum_j E_j over them (the rounding of
@@ -318,8 +345,9 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
    Domain: finite; V+ != 0; D+ = 0 for V+ > 0, Delta for V+ < 0 exactly.
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, Delta <= 0),
    CHAPLYGIN_ESTATE (V+ = 0 or D+ not the matching end), CHAPLYGIN_ERANGE
-   (|L0 + D| above 2^500, the final energy beyond the double range:
-   |V+| above ~1e154). */
+   (|L0 + D| above 2^500; the energy beyond the double range, |V+| above
+   ~1e154; |V+| below ~1e-154 of (1 + l0^2)^(1/2) |Omega+|, where V+^2
+   would leave the normal range). */
 int
 chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
                                const double qplus[4],
@@ -363,6 +391,14 @@ check_grid (const chaplygin_discrete *sys, double Omega0, double V_lo,
   for (size_t i = 0; i < n; i++)
     if (grid_point (V_lo, V_hi, n, i) == 0.0)
       return CHAPLYGIN_ESTATE;
+  /* every point representable before any fate is written */
+  for (size_t i = 0; i < n; i++)
+    {
+      double u, H;
+      int k;
+      CHP_TRY (phase_scale (c, grid_point (V_lo, V_hi, n, i), Omega0, &u,
+                            &H, &k));
+    }
   return CHAPLYGIN_SUCCESS;
 }
 

@@ -8,6 +8,7 @@
    a = 1 + l^2, g = a - h^2 = a V^2/(2E).  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 
@@ -101,7 +102,7 @@ chaplygin_discrete_sigma4 (double L0, double Delta, int dir, double *sigma4,
    the boundary are classified correctly down to ~1e-30 relative.
    Domain: finite L0, 0 < Delta finite.
    Errors: CHAPLYGIN_EINVAL (NULL, dir), CHAPLYGIN_EDOM,
-   CHAPLYGIN_ERANGE (|L0| or Delta above 2^500). */
+   CHAPLYGIN_ERANGE (|L0| or |L0 + Delta| above 2^500, as for sigma4). */
 int
 chaplygin_discrete_stable (double L0, double Delta, int dir, int *stable)
 {
@@ -109,7 +110,7 @@ chaplygin_discrete_stable (double L0, double Delta, int dir, int *stable)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
-  if (fabs (L0) > CHP_L_MAX || Delta > CHP_L_MAX)
+  if (fabs (L0) > CHP_L_MAX || fabs (L0 + Delta) > CHP_L_MAX)
     return CHAPLYGIN_ERANGE;
   int first = dir > 0 ? L0 > -Delta : L0 < 0.0;
   *stable = first && criterion_value (L0, Delta, dir) > 0.0;
@@ -189,7 +190,8 @@ dphi_integrand (double t, void *p)
    the slot, a short or a long slot, h^2 near 1 away from l = 0) Phi' is
    integrated directly over D in [0, Delta] instead
    (chp_integrate, relative tolerance 64 eps; the integrand is smooth on a
-   segment without a turning point).  At H = 0 exactly,
+   segment without a turning point).  At H = 0, and for |h| < 2^-500
+   where Phi'(h) - Phi'(0) = O(h^2) is below an ulp,
    Phi'(0) = atan2(Delta, 1 + L0 (L0 + Delta)).
    Accuracy: df3/dE, df3/dH within 7 eps of mpmath references on 12
    states (16 eps asserted); Richardson-extrapolated central differences
@@ -215,7 +217,9 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
   const double C1 = sys->C1[far], C2 = sys->C2[far];
   const double E = st->E, H = st->H, s2E = sqrt (2.0 * E);
   double dphi;
-  if (H == 0.0)
+  /* Phi'(h) = Phi'(0) + O(h^2): at |h| < 2^-500 the H = 0 value is exact
+     in double (and Theta = |dtheta|/|h| would divide subnormals) */
+  if (fabs (H) < 0x1p-500 * sqrt (2.0 * E))
     dphi = atan2 (sys->Delta, chp_one_plus_L0_L0D (sys->L0, sys->Delta));
   else
     {
@@ -266,7 +270,8 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
    C1 H*^2 = 0 (B.14); for I != 0 and Delta > 0, C1 < 0 and only H* = 0
    remains (see chaplygin_discrete_collision_loss).
    Errors: CHAPLYGIN_EINVAL (NULL sys or st), CHAPLYGIN_EDOM (non-finite),
-   CHAPLYGIN_ESTATE (V* = 0), CHAPLYGIN_ERANGE (V*^2 overflows). */
+   CHAPLYGIN_ESTATE (V* = 0), CHAPLYGIN_ERANGE (V*^2/2 overflows or is
+   below the normal range, |V*| < ~1.5e-154, or Delta/|V*| overflows). */
 int
 chaplygin_discrete_fixed_point (const chaplygin_discrete *sys, double Vstar,
                                 double theta, double tau, const double peg[2],
@@ -280,8 +285,10 @@ chaplygin_discrete_fixed_point (const chaplygin_discrete *sys, double Vstar,
     return CHAPLYGIN_EDOM;
   if (Vstar == 0.0)
     return CHAPLYGIN_ESTATE;
-  double E = 0.5 * Vstar * Vstar, ts = sys->Delta / fabs (Vstar);
-  if (!isfinite (E) || !isfinite (ts))
+  double E = (0.5 * Vstar) * Vstar, ts = sys->Delta / fabs (Vstar);
+  /* E must be a normal number: a subnormal or zero E is a state the map
+     rejects or resolves only to a few digits */
+  if (!isfinite (E) || !(E >= DBL_MIN) || !isfinite (ts))
     return CHAPLYGIN_ERANGE;
   chaplygin_discrete_state s;
   s.dir = Vstar > 0.0 ? 1 : -1;
@@ -300,7 +307,8 @@ chaplygin_discrete_fixed_point (const chaplygin_discrete *sys, double Vstar,
 /* chaplygin_discrete_collision_loss: (B.14) the energy a collision takes,
    -C1 H^2 >= 0, for a post-collision state with direction dir whose
    segment does (reversal = 1) or does not (0) reverse; C1 of (B.3)/(B.4).
-   It vanishes iff H = 0 (Delta > 0, rho > 0): the period-1 condition.
+   It vanishes iff H = 0 (Delta > 0, rho > 0): the period-1 condition (in
+   floating point it also underflows to 0 for very small |H|).
    Errors: CHAPLYGIN_EINVAL (NULL, dir, reversal), CHAPLYGIN_EDOM,
    CHAPLYGIN_ERANGE (overflow). */
 int
@@ -330,7 +338,10 @@ chaplygin_discrete_collision_loss (const chaplygin_discrete *sys, int dir,
    Method: without cancellation for small Delta:
        sigma4 - 1 = -Delta b/(1 + b^2),  b = L0 + Delta   (V* > 0),
        sigma4 - 1 =  Delta L0/(1 + L0^2)                 (V* < 0),
-   b/(1 + b^2) formed without overflow, then log1p.
+   b/(1 + b^2) formed without overflow, then log1p; below 2^-500,
+   xi4 = -|V*| b/(1 + b^2) (resp. |V*| L0/(1 + L0^2)) directly; for
+   sigma4 < 1/2, log of sigma4 itself (chaplygin_discrete_sigma4), since
+   sigma4 - 1 has then cancelled.
    Accuracy: within ~4 ulps (tests: series and 40-digit references),
    down to Delta = 1e-300.
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite,
@@ -345,15 +356,30 @@ chaplygin_discrete_xi4 (double L0, double Delta, double Vstar, double *xi4)
     return CHAPLYGIN_EDOM;
   if (Vstar == 0.0)
     return CHAPLYGIN_ESTATE;
-  double u;
-  if (Vstar > 0.0)
-    /* L0 + Delta rounded once: within half an ulp of itself */
-    u = -Delta * chp_L_over_one_plus_sq (L0 + Delta);
+  const int dir = Vstar > 0.0 ? 1 : -1;
+  /* u = sigma4 - 1 = -Delta b/(1 + b^2), b = L0 + Delta (V* > 0), or
+     Delta L0/(1 + L0^2) (V* < 0); b rounded once, within half an ulp */
+  const double f = dir > 0 ? chp_L_over_one_plus_sq (L0 + Delta)
+    : -chp_L_over_one_plus_sq (L0);
+  const double u = -Delta * f;
+  double q;                     /* log(sigma4)/Delta */
+  if (fabs (u) < 0x1p-500)
+    /* log1p(u)/Delta = -f (1 - u/2 + ...): exact to below an ulp, and
+       u itself may be subnormal */
+    q = -f;
+  else if (u < -0.5)
+    {
+      /* sigma4 near 0: u has cancelled; log of sigma4 itself, whose
+         numerator 1 + L0 (L0 + Delta) is formed without cancellation */
+      double s4;
+      CHP_TRY (chaplygin_discrete_sigma4 (L0, Delta, dir, &s4, NULL));
+      if (!(s4 > 0.0))
+        return CHAPLYGIN_EDOM;
+      q = log (s4) / Delta;
+    }
   else
-    u = Delta * chp_L_over_one_plus_sq (L0);
-  if (!(u > -1.0))
-    return CHAPLYGIN_EDOM;
-  double r = fabs (Vstar) * (log1p (u) / Delta);
+    q = log1p (u) / Delta;
+  double r = fabs (Vstar) * q;
   if (!isfinite (r))
     return CHAPLYGIN_ERANGE;
   *xi4 = r;
@@ -438,8 +464,9 @@ chaplygin_discrete_field_jacobian (double L0, const double q[4],
    on the peg, which exists iff it lies within the slot, -Delta < L0 < 0
    (D_eq = -L0 in (0, Delta)).  Its energy and momentum satisfy (3.8),
    2E/H^2 = 1.  Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM
-   (non-finite, Delta <= 0, L0 outside (-Delta, 0), Omega = 0: the skate
-   at rest), CHAPLYGIN_ERANGE. */
+   (non-finite, Delta <= 0, L0 outside (-Delta, 0)), CHAPLYGIN_ESTATE
+   (Omega = 0: the skate at rest, as for V* = 0 elsewhere),
+   CHAPLYGIN_ERANGE. */
 int
 chaplygin_discrete_spin_equilibrium (double L0, double Delta, double Omega,
                                      double theta0, double tau, double q[4])
@@ -447,8 +474,10 @@ chaplygin_discrete_spin_equilibrium (double L0, double Delta, double Omega,
   if (!q)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (L0, Delta, Omega, theta0) || !isfinite (tau)
-      || !(Delta > 0.0) || !(L0 < 0.0 && L0 > -Delta) || Omega == 0.0)
+      || !(Delta > 0.0) || !(L0 < 0.0 && L0 > -Delta))
     return CHAPLYGIN_EDOM;
+  if (Omega == 0.0)
+    return CHAPLYGIN_ESTATE;
   double th = fma (Omega, tau, theta0);
   if (!isfinite (th))
     return CHAPLYGIN_ERANGE;

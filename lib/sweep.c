@@ -23,6 +23,16 @@ sigma4_xy (int dir, double x, double y, double *s)
   double xp = x + 1.0;
   double num = fma (x, xp, y);
   double den = dir > 0 ? fma (xp, xp, y) : fma (x, x, y);
+  if (!isfinite (num) || !isfinite (den))
+    {
+      /* |x| or y near the top of the range: numerator and denominator
+         divided by t^2, t = 2^k ~ max(|x|, sqrt(y)), exactly */
+      int k = ilogb (fmax (fabs (x), sqrt (y))) + 1;
+      double xs = ldexp (x, -k), one = ldexp (1.0, -k), ys = ldexp (y, -2 * k);
+      double xps = xs + one;
+      num = fma (xs, xps, ys);
+      den = dir > 0 ? fma (xps, xps, ys) : fma (xs, xs, ys);
+    }
   if (den == 0.0)
     return CHAPLYGIN_ERANGE;
   double r = num / den;
@@ -40,7 +50,8 @@ sigma4_xy (int dir, double x, double y, double *s)
    Returns CHAPLYGIN_SUCCESS if every point succeeded, else the first
    failing point's status.  Method: the rational form above, numerator and
    denominator by one fma each (a few ulps, except where y + x (x + 1)
-   cancels, near a zero of sigma4).
+   cancels, near a zero of sigma4), both scaled by an exact power of 2 when
+   |x| or y is near the top of the double range.
    Errors: CHAPLYGIN_EINVAL (NULL x or sigma4 with n > 0, dir),
    CHAPLYGIN_EDOM (y < 0 or non-finite, x[i] non-finite),
    CHAPLYGIN_ERANGE. */

@@ -134,6 +134,25 @@ stable_case (tu_rng *g, double *L0, double *Delta, int *dir, double *E,
 
 START_TEST (eq_B_9)
 {
+  /* H_n far below the range H itself is in (found in review): L0 = 1e100,
+     Delta = 1e110, H = 1e99, C2 ~ 1e-10; reference: the binary128 series
+     (exponent range 1e+-4932).  Tolerance: the documented
+     (4 + 1.5 |n log q|) eps, doubled. */
+  {
+    chaplygin_discrete sb;
+    ck_assert_ok (chaplygin_discrete_init (&sb, 1e100, 1e110));
+    for (unsigned long n = 30; n <= 40; n += 5)
+      {
+        double En, Hn;
+        q128 qE, qH;
+        ck_assert_ok (chaplygin_discrete_energy_after (&sb, 1, 1.0, 1e99, n, &En, &Hn));
+        q_series (1e100, 1e110, 1, 1.0, 1e99, n, &qE, &qH);
+        double tol = 2 * (4 + 1.5 * n * 2 * 23.03) * DBL_EPSILON;
+        ck_assert_rel (Hn, (double) qH, tol);
+        ck_assert_rel (En, (double) qE, tol);
+      }
+  }
+
   tu_rng g;
   tu_rng_seed (&g, 509);
   /* n = 1 is (B.3) itself: one step of the library's map.  The printed sum
@@ -593,6 +612,20 @@ symmetric_fate (const chaplygin_discrete *sys, int dir, double E, double H)
 
 START_TEST (eq_B_13)
 {
+  /* large slots (found in review: hundreds of ulps for Delta/2 in
+     (2^250, 2^256)); reference: a^2 (1 + a^2) C2^2n in binary128 */
+  {
+    double Ds[] = { 0x1.3p252, 0x1p255, 0x1.8p251, 1e75 };
+    for (size_t i = 0; i < sizeof Ds / sizeof Ds[0]; i++)
+      for (unsigned long n = 0; n <= 3; n++)
+        {
+          double v;
+          ck_assert_ok (chaplygin_discrete_spin_sequence (Ds[i], n, &v));
+          q128 a = (q128) Ds[i] / 2, na = 1 + a * a, c2 = (1 - a * a) / na;
+          ck_assert_eps (v, (double) (a * a * na * q_pow (c2 * c2, n)), 8);
+        }
+  }
+
   /* Figure 3: L0 = -1/2, Delta = 1, H = 1 (Omega+ = 4/5): the spinning
      state is reached from V+ = 1/sqrt(5) without collision (n = 0). */
   double v2;

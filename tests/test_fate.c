@@ -796,6 +796,44 @@ START_TEST (fate_errors)
   ck_assert (f.kind == 7 && f.E_final == 7.0);
   ck_assert_status (chaplygin_discrete_basins (&sys, 0.5, 1e200, 2e200, 2, 10, &f),
                     CHAPLYGIN_ERANGE);
+  /* nothing written on that failure (review): reversal_at, and the first
+     fates of a grid whose last point fails */
+  {
+    chaplygin_discrete s2;
+    ck_assert_ok (chaplygin_discrete_init (&s2, -2.0, 1.0));
+    double qr[4] = { 0, 1.9e154, 0, 1e154 };
+    unsigned long at1[1] = { 777 };
+    ck_assert_status (chaplygin_discrete_fate_phase (&s2, qr, 100, at1, 1, &f),
+                      CHAPLYGIN_ERANGE);
+    ck_assert (at1[0] == 777);
+    chaplygin_fate g[2] = { keep, keep };
+    ck_assert_status (chaplygin_discrete_basins (&s2, 1.0, 1.0, 1.9e154, 2, 10, g),
+                      CHAPLYGIN_ERANGE);
+    ck_assert (g[0].kind == 7 && g[1].kind == 7);
+  }
+  /* V+ tiny beside Omega+ (review): V+ = 1e-150 still resolved (L0 = 1,
+     Delta = 1, Omega+ = 1: forward, E_final by (B.12) in binary128); at
+     1e-160 V+^2 leaves the normal range and the fate is refused rather
+     than guessed (at 1e-170 it was once called a reversal) */
+  {
+    chaplygin_discrete s3;
+    ck_assert_ok (chaplygin_discrete_init (&s3, 1.0, 1.0));
+    double qt[4] = { 0, 1e-150, 0, 1.0 };
+    ck_assert_ok (chaplygin_discrete_fate_phase (&s3, qt, 1000, NULL, 0, &f));
+    ck_assert_int_eq (f.kind, CHAPLYGIN_FATE_FORWARD);
+    /* (B.12): V_f^2 = V^2 + (1 + L0^2)[1 - Delta/((L0 + Delta)(2 + (L0 +
+       Delta)(2 L0 + Delta)))] Omega^2 = 2 (1 - 1/16); V+^2 = 1e-300 is
+     below an ulp of it */
+    ck_assert_eps (f.E_final, 0.9375, 8);
+    qt[1] = 1e-160;
+    f = keep;
+    ck_assert_status (chaplygin_discrete_fate_phase (&s3, qt, 1000, NULL, 0, &f),
+                      CHAPLYGIN_ERANGE);
+    qt[1] = 1e-170;
+    ck_assert_status (chaplygin_discrete_fate_phase (&s3, qt, 1000, NULL, 0, &f),
+                      CHAPLYGIN_ERANGE);
+    ck_assert (f.kind == 7);
+  }
   ck_assert_status (chaplygin_discrete_fate (NULL, &s, 10, NULL, 0, &f), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_fate (&sys, NULL, 10, NULL, 0, &f), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_fate (&sys, &s, 10, NULL, 0, NULL), CHAPLYGIN_EINVAL);

@@ -210,6 +210,18 @@ START_TEST (eq_3_9_errors)
   ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 1.0 / 3));
   chaplygin_discrete_state s = { 1, 0.5, 0.0, 0.0, 0.0, { 0, 0 } };
   double J[16];
+  /* subnormal H (found in review): df3/dH is its H = 0 value to O(h^2) */
+  {
+    chaplygin_discrete sy;
+    ck_assert_ok (chaplygin_discrete_init (&sy, 0.3, 1.0));
+    __float128 a = atanq ((__float128) 1.3) - atanq ((__float128) 0.3);
+    for (double Hs = 1e-322; Hs < 1e-150; Hs *= 1e17)
+      {
+        chaplygin_discrete_state ts = { 1, 0.5, Hs, 0, 0, { 0, 0 } };
+        ck_assert_ok (chaplygin_discrete_jacobian (&sy, &ts, J));
+        ck_assert_eps (J[11], (double) a, 4);
+      }
+  }
   ck_assert_status (chaplygin_discrete_jacobian (NULL, &s, J),
                     CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_jacobian (&sys, NULL, J),
@@ -412,6 +424,9 @@ START_TEST (eq_3_11)
   ck_assert_status (chaplygin_discrete_stable (1, -1, 1, &st), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_stable (1e300, 1, 1, &st),
                     CHAPLYGIN_ERANGE);
+  /* the same range test as sigma4: |L0 + Delta| > 2^500 */
+  ck_assert_status (chaplygin_discrete_stable (0x1p500, 0x1p500, 1, &st),
+                    CHAPLYGIN_ERANGE);
   ck_assert_status (chaplygin_discrete_stability_boundary (1, NAN, &ok, &ymin),
                     CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_stability_boundary (0, 1, &ok, &ymin),
@@ -526,6 +541,23 @@ START_TEST (eq_4_1)
                     CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_xi4_taylor (1e200, 1, c),
                     CHAPLYGIN_ERANGE);
+  /* found in review: sigma4 near 0 (u = sigma4 - 1 cancels) and u in
+     the subnormal range; references: binary128 log of the exact sigma4
+     (quadmath), and -L0/(1 + L0^2) (to O(Delta)) */
+  {
+    double L0 = -0.5, D = 2.5 - 1e-12;
+    __float128 l = L0, d = D, s4 = (1 + l * (l + d)) / (1 + (l + d) * (l + d));
+    ck_assert_ok (chaplygin_discrete_xi4 (L0, D, 1.0, &xi));
+    ck_assert_eps (xi, (double) (logq (s4) / d), 8);
+    D = 2.4999999999999996;
+    d = D;
+    s4 = (1 + l * (l + d)) / (1 + (l + d) * (l + d));
+    ck_assert (s4 > 0);
+    ck_assert_ok (chaplygin_discrete_xi4 (L0, D, 1.0, &xi));
+    ck_assert_eps (xi, (double) (logq (s4) / d), 8);
+    ck_assert_ok (chaplygin_discrete_xi4 (1e-5, 1e-315, 1.0, &xi));
+    ck_assert_eps (xi, -1e-5 / (1 + 1e-10), 2);
+  }
   /* huge L0: no overflow in b/(1 + b^2) */
   ck_assert_ok (chaplygin_discrete_xi4 (1e200, 1.0, 1.0, &xi));
   ck_assert_rel (xi, -1e-200, 1e-15);
@@ -595,6 +627,11 @@ START_TEST (eq_B_14)
                                                     NULL), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_fixed_point (&sys, 1e300, 0, 0, NULL,
                                                     &s, NULL), CHAPLYGIN_ERANGE);
+  /* E = V*^2/2 below the normal range: a state the map rejects */
+  ck_assert_status (chaplygin_discrete_fixed_point (&sys, 1e-170, 0, 0, NULL,
+                                                    &s, NULL), CHAPLYGIN_ERANGE);
+  ck_assert_ok (chaplygin_discrete_fixed_point (&sys, 1e-150, 0, 0, NULL, &s,
+                                                NULL));
   ck_assert_status (chaplygin_discrete_fixed_point (NULL, 1, 0, 0, NULL, &s,
                                                     NULL), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_collision_loss (&sys, 1, 2, 1, &loss),
@@ -670,7 +707,7 @@ START_TEST (spin_equilibrium)
   ck_assert_status (chaplygin_discrete_spin_equilibrium (-1.0, 1, 1, 0, 0, q),
                     CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_spin_equilibrium (-0.5, 1, 0, 0, 0, q),
-                    CHAPLYGIN_EDOM);
+                    CHAPLYGIN_ESTATE);
   ck_assert_status (chaplygin_discrete_spin_equilibrium (-0.5, 1, 1, 0, 0, NULL),
                     CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_spin_equilibrium (-0.5, 1, 1e300, 0,
@@ -739,6 +776,21 @@ START_TEST (fig_2)
   ck_assert_status (chaplygin_sweep_sigma4 (1, 1.0, 3, NULL, ss, sst),
                     CHAPLYGIN_EINVAL);
   ck_assert_ok (chaplygin_sweep_sigma4 (1, 1.0, 0, NULL, NULL, NULL));
+  /* near the top of the range (found in review): sigma4 -> 1 as |x| grows
+     at fixed y, and (y + x(x+1))/(y + x^2) at x = 1e154, y = 1.7e308, both
+     in binary128 */
+  {
+    double bx[2] = { 1e160, -3e200 }, bs[2];
+    ck_assert_ok (chaplygin_sweep_sigma4 (1, 1.0, 2, bx, bs, NULL));
+    __float128 X = 1e160, Y = 1;
+    ck_assert_eps (bs[0], (double) ((Y + X * (X + 1)) / (Y + (X + 1) * (X + 1))), 4);
+    ck_assert_eps (bs[1], 1.0, 4);
+    double cx = 1e154, cs;
+    ck_assert_ok (chaplygin_sweep_sigma4 (-1, 1.7e308, 1, &cx, &cs, NULL));
+    X = 1e154;
+    Y = 1.7e308;
+    ck_assert_eps (cs, (double) ((Y + X * (X + 1)) / (Y + X * X)), 4);
+  }
 
   /* Fig. 2(b): on a dyadic grid (Delta = 2^-k, so y and L0 = x Delta are
      exact) the regions agree with chaplygin_discrete_stable exactly */
