@@ -1,5 +1,7 @@
-## verification/local.mk -- checks of invariants by routes independent of
-## the library's formulas (issue 4 extends this).  Run by `make check'.
+## verification/local.mk -- checks of the library by routes independent of
+## its formulas.  `make check' runs them at level 1 (fast); `make
+## verify-long' runs them again at level 2 (more samples, longer runs),
+## through the environment variable CHAPLYGIN_VERIFY_LEVEL.
 VERIFICATION_CHECKS = verification/conservation verification/reflection
 check_PROGRAMS += $(VERIFICATION_CHECKS)
 TESTS += $(VERIFICATION_CHECKS)
@@ -10,3 +12,11 @@ verification_conservation_LDADD = $(VERIFICATION_LDADD)
 verification_reflection_SOURCES = verification/reflection.c verification/tap.h
 verification_reflection_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 verification_reflection_LDADD = $(VERIFICATION_LDADD)
+
+# The deep tier: the same programs with more samples.
+verify-long: $(VERIFICATION_CHECKS)
+	@fail=0; for p in $(VERIFICATION_CHECKS); do \
+	  echo "== $$p (level 2)"; \
+	  CHAPLYGIN_VERIFY_LEVEL=2 ./$$p || fail=1; \
+	done; test $$fail = 0
+.PHONY: verify-long

@@ -5,6 +5,7 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 static int tap_n = 0, tap_failed = 0;
 
@@ -32,6 +33,15 @@ tap_uniform (unsigned long long *s, double a, double b)
 {
   *s ^= *s >> 12, *s ^= *s << 25, *s ^= *s >> 27;
   return a + (b - a) * (double) ((*s * 0x2545F4914F6CDD1DULL) >> 11) * 0x1p-53;
+}
+
+/* The tier: 1 (make check, the default) or 2 (make verify-long), from
+   CHAPLYGIN_VERIFY_LEVEL.  Programs scale their sample counts by it. */
+static inline int
+tap_level (void)
+{
+  const char *e = getenv ("CHAPLYGIN_VERIFY_LEVEL");
+  return e && e[0] == '2' ? 2 : 1;
 }
 
 static int
