@@ -20,3 +20,12 @@ verify-long: $(VERIFICATION_CHECKS)
 	  CHAPLYGIN_VERIFY_LEVEL=2 ./$$p || fail=1; \
 	done; test $$fail = 0
 .PHONY: verify-long
+
+# Independent routes (each program's header comment says which).
+VERIFICATION_CHECKS += verification/hybrid verification/rigid_body
+verification_hybrid_SOURCES = verification/hybrid.c verification/tap.h
+verification_hybrid_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+verification_hybrid_LDADD = $(VERIFICATION_LDADD)
+verification_rigid_body_SOURCES = verification/rigid_body.c verification/tap.h
+verification_rigid_body_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+verification_rigid_body_LDADD = $(VERIFICATION_LDADD)
