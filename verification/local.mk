@@ -36,3 +36,7 @@ verification_smooth_LDADD = $(VERIFICATION_LDADD)
 verification_limits_SOURCES = verification/limits.c verification/tap.h
 verification_limits_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 verification_limits_LDADD = $(VERIFICATION_LDADD)
+VERIFICATION_CHECKS += verification/stability
+verification_stability_SOURCES = verification/stability.c verification/tap.h
+verification_stability_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+verification_stability_LDADD = $(VERIFICATION_LDADD)
