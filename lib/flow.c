@@ -85,6 +85,51 @@ chp_motion_init (double E, double H, chp_motion *m)
   return CHAPLYGIN_SUCCESS;
 }
 
+/* chp_motion_set_omh2: replace 1 - h^2 by a more accurate value and
+   derive sp, sq, pmq and theta_factor from it as chp_motion_init does. */
+void
+chp_motion_set_omh2 (chp_motion *m, double omh2)
+{
+  if (!isfinite (omh2))
+    return;
+  m->omh2 = omh2;
+  if (omh2 >= 0.0)
+    {
+      m->sp = 1.0;
+      m->sq = sqrt (omh2);
+      m->pmq = m->h * m->h;
+      m->theta_factor = m->h;
+    }
+  else
+    {
+      m->sp = fabs (m->h);
+      m->sq = sqrt (-omh2);
+      m->pmq = 1.0;
+      m->theta_factor = chp_sign (m->H);
+    }
+}
+
+/* chp_phase_omh2: 1 - h^2 = (2E - H^2)/(2E) of the phase state (l0, V0,
+   Omega0), 2E - H^2 = V0^2 - l0^2 (1 + l0^2) Omega0^2 = V0^2 - w^2 -
+   (w l0)^2 with w = l0 Omega0, by error-free products and sums: accurate
+   relative to the exact inputs however much the terms cancel.  twoE is
+   2E (rounded).  Non-finite (NaN or Inf) where a term overflows. */
+double
+chp_phase_omh2 (double l0, double V0, double Omega0, double twoE)
+{
+  double wh, wl, a, ea, uh, eu, b, eb, c, ec, s1, e1, s2, e2;
+  chp_two_prod (l0, Omega0, &wh, &wl);
+  chp_two_prod (wh, wh, &a, &ea);
+  chp_two_prod (wh, l0, &uh, &eu);
+  double ul = eu + wl * l0;
+  chp_two_prod (uh, uh, &b, &eb);
+  chp_two_prod (V0, V0, &c, &ec);
+  chp_two_sum (c, -a, &s1, &e1);
+  chp_two_sum (s1, -b, &s2, &e2);
+  double N = s2 + ((e1 + e2) + ((ec - ea - eb) - 2.0 * (wh * wl + uh * ul)));
+  return N / twoE;
+}
+
 double
 chp_motion_g (const chp_motion *m, double l)
 {
@@ -422,6 +467,10 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
 
   chp_motion m;
   CHP_TRY (chp_motion_init (E, H, &m));
+  /* 1 - h^2 from the phase inputs themselves, not from the rounded E and
+     H, whose roundings it would amplify by 1/|1 - h^2| near the spinning
+     ratio 2E = H^2 (found by the Arb oracle: 282 ulps) */
+  chp_motion_set_omh2 (&m, chp_phase_omh2 (l0, V0, Omega0, 2.0 * E));
   /* g = (1 + l^2) V^2/(2E) at both ends, from V0 and the factored (B.1):
      g(l) = g(l0) + (D - D0)(2 L0 + D + D0), with no cancellation but that
      of V^2 itself near a turning point (g from 1 - h^2 would lose

@@ -148,6 +148,14 @@ typedef struct
 
 int chp_motion_init (double E, double H, chp_motion *m);
 
+/* Replace m->omh2 by a more accurate value (ignored if not finite) and
+   re-derive the fields that depend on it. */
+void chp_motion_set_omh2 (chp_motion *m, double omh2);
+
+/* 1 - h^2 of the phase state (l0, V0, Omega0) with 2E = twoE, by
+   error-free arithmetic from the phase inputs (NaN/Inf on overflow). */
+double chp_phase_omh2 (double l0, double V0, double Omega0, double twoE);
+
 /* 1 - h^2 = (2E - H^2)/(2E), E > 0, with its sign exact (0 iff 2E = H^2);
    -Inf on overflow. */
 double chp_one_minus_h2 (double E, double H);

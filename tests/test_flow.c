@@ -142,6 +142,31 @@ START_TEST (eq_B_2_reference)
 }
 END_TEST
 
+/* Near the spinning ratio from a phase state (found by the Arb oracle of
+   the verification suite): 1 - h^2 = 1.1e-15 must come from V0, Omega0
+   themselves, not from the rounded E and H.  References: the Arb oracle
+   (first case) and mpmath quadrature at 50 digits of the paper's
+   integrands split at l = 0 (second case, tests/ref/make_refs.py's route;
+   the script is quoted in the commit that added this test). */
+START_TEST (eq_B_2_near_spin_phase)
+{
+  double th, ta;
+  ck_assert_ok (chaplygin_discrete_heading (-0.01646172035504323, 0,
+                                            1.644067473535257e-05,
+                                            -1.4742266877150858,
+                                            1.1648795079942598e-09, NULL,
+                                            &th, &ta));
+  ck_assert_eps (th, -1.1405521640207168e-4, 4);
+  ck_assert_ok (chaplygin_discrete_heading (-0.087982750936442783, 0,
+                                            0.15135127131653292,
+                                            -1.7136182549485519,
+                                            0.47604231828350185, NULL, &th,
+                                            &ta));
+  ck_assert_eps (th, -32.408550112482780787, 4);
+  ck_assert_eps (ta, 18.811386142146229933, 4);
+}
+END_TEST
+
 START_TEST (eq_B_2_signs)
 {
   /* The heading advances with the sign of Omega whatever the sign of V
@@ -296,6 +321,7 @@ main (void)
   tcase_set_timeout (t, 120);
   tcase_add_loop_test (t, eq_B_2_reference, 0, NREF);
   tcase_add_test (t, eq_B_2_signs);
+  tcase_add_test (t, eq_B_2_near_spin_phase);
   tcase_add_test (t, eq_B_2_special);
   tcase_add_test (t, eq_B_2_errors);
   suite_add_tcase (s, t);
