@@ -40,3 +40,17 @@ VERIFICATION_CHECKS += verification/stability
 verification_stability_SOURCES = verification/stability.c verification/tap.h
 verification_stability_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 verification_stability_LDADD = $(VERIFICATION_LDADD)
+
+# The Arb oracle (route 3), built where configure found Arb.  It also
+# writes the manual's accuracy tables: `make accuracy-tables'.
+if HAVE_ARB
+VERIFICATION_CHECKS += verification/oracle
+endif
+EXTRA_PROGRAMS = verification/oracle
+verification_oracle_SOURCES = verification/oracle.c verification/tap.h
+verification_oracle_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+verification_oracle_LDADD = $(VERIFICATION_LDADD) $(ARB_LIBS)
+
+accuracy-tables: verification/oracle
+	CHAPLYGIN_VERIFY_LEVEL=2 ./verification/oracle --table $(srcdir)/doc/accuracy.texi
+.PHONY: accuracy-tables

@@ -1,0 +1,1888 @@
+/* oracle.c -- route 3: a high-precision oracle (Arb ball arithmetic) for
+   the motion between collisions and the return map, and the library's
+   errors in ulps over named data sets.
+
+   What is computed here, from the model alone (Section 3 of the paper,
+   written out below; no formula of lib/ is used):
+
+   - Between collisions the peg is fixed and (3.1) conserves the energy
+     E (3.3) and the angular momentum about the peg H (3.4).  With
+     l = L0 + D (the signed distance from the peg to the mass centre),
+         V^2 = 2E - H^2/(1 + l^2),   Omega = H/(1 + l^2),
+     and since dD/dtau = V, dtheta/dtau = Omega,
+         |dtheta| = Int |Omega/V| |dD|,   dtau = Int |dD|/|V|
+     over the leg, the heading advancing with the sign of Omega (= sign
+     of H).  These integrals of (B.2) are evaluated by acb_calc_integrate
+     (rigorous Gauss-Legendre with error bounds), after a substitution
+     that leaves a smooth integrand:
+       * no turning point (2E > H^2) and the leg near l = 0: l = sqrt(q)
+         sinh t, q = 1 - H^2/(2E), which flattens the peak of width
+         sqrt(q) at l = 0 (the near-spinning motions);
+       * no turning point, |l| >= 1 on the whole leg: D itself;
+       * turning points (2E < H^2) at |l| = c = sqrt(H^2/(2E) - 1):
+         |l| = c + u^2, which removes the inverse-square-root endpoint
+         singularity at the turning point (the integrand becomes
+         2 sqrt(1 + l^2)/(sqrt(2E) sqrt(2c + u^2)) for the time).
+     A reversal (V changes sign) is the leg out to the turning point and
+     back, twice the leg.  Whether the path reverses is decided exactly
+     (in exact arithmetic on the double inputs): it does iff
+     2E (1 + m^2) <= H^2, m = min |l| over the slot (a turning point
+     exactly at the far end counts as a reversal, doc/conventions.texi).
+   - Collisions: the impulse at the new peg is normal to the slot, so V
+     is continuous and the angular momentum about the NEW peg is
+     conserved.  With the mass centre G = P + l e (e the slot axis), the
+     velocity of G before the collision is V e + Omega- l- e_n, and about
+     the new peg P' = G - l+ e:
+         H+ = (1 + l+ l-) Omega-,   E+ = [V^2 + H+^2/(1 + l+^2)]/2,
+     l- the end the peg leaves, l+ the end of the new peg.  The next state
+     of the return map (B.3)/(B.4) is this collision after the leg; the
+     coefficients C1 = (E+ - E-)/H-^2, C2 = H+/H- of (3.7)/(B.3) come from
+     the same collision applied to a test state.
+   - sigma4 (3.10) is dH'/dH at a fixed point, i.e. C2 of a collision
+     after a segment without reversal in the direction of V*; xi4 (4.1) is
+     log(sigma4)/tau* with tau* = Delta/|V*| the time between collisions
+     of the steady motion.
+
+   All set-up arithmetic (sums of doubles, the regime and reversal
+   decisions) is done at 8 times the working precision, exactly for the
+   data used here; the integrals are evaluated at 256 bits with a 128-bit
+   goal, and every reference value must carry at least 64 correct bits
+   (arb_rel_accuracy_bits), else it is recomputed at twice the precision
+   (up to 2048 bits).  A second route checks the integration on every
+   leg: Legendre's incomplete integrals F and E in Arb (acb_elliptic_f,
+   acb_elliptic_e_inc) of the reduced quartic (t = |l| or
+   w = sqrt(l^2 - c^2)).
+
+   Data sets (gen_params, gen_state; fixed seeds): ordinary,
+   near-reversal (a turning point within 1e-15..1e-6 Delta of the far end,
+   either side), near-spinning (|2E/H^2 - 1| in 1e-15..1e-8, the mass
+   centre in the slot), tiny Delta (1e-12..1e-6), huge Delta (1e3..1e6),
+   large |L0| (1e3..1e12 or ..1e100).  Quantities: the heading and time of
+   a leg (chaplygin_discrete_heading), the next E, H, theta, tau of the
+   return map and the turning point D_c of a reversing segment
+   (chaplygin_discrete_step, 4 collisions per start, each compared from
+   the library's own input state), sigma4, xi4, C1, C2; the closed form,
+   and the quadrature and ODE methods on the legs and first steps.
+
+   Checks (TAP): the oracle reached its accuracy everywhere; its two
+   routes agree; the library succeeded wherever the motion is defined
+   (two documented refusals are counted instead: see run_legs); reversal
+   flags and CHAPLYGIN_ESPIN exactly as the oracle decides them; then one
+   check per method, quantity and data set: every error within its
+   tolerance (the rule is stated above tol_ulps: max(16, 8 kappa) ulps
+   for the closed form, kappa the condition number computed by the oracle).
+   The errors are reported in ulps, |lib - ref|/ulp(ref), max and mean per
+   quantity and data set; with --table FILE the program also writes them
+   as the Texinfo chapter "Accuracy tables" (doc/accuracy.texi).  Level 1
+   (make check): 40 legs, 10 orbits (20 single steps on the two state
+   sets) and 400 parameter points per set; level 2: 40 times as many. */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <acb.h>
+#include <acb_calc.h>
+#include <acb_elliptic.h>
+#include <arb.h>
+
+#include "chaplygin.h"
+#include "tap.h"
+
+/* ------------------------------------------------------------------ */
+/* Precision policy                                                    */
+/* ------------------------------------------------------------------ */
+
+#define PREC0 256               /* working precision of the integrations */
+#define PREC_MAX 2048           /* escalation limit */
+#define GOAL 128                /* relative goal of acb_calc_integrate (bits) */
+#define MIN_BITS 64             /* accuracy demanded of a reference value:
+                                   its error is below 2^-64 relative, i.e.
+                                   below 1/1000 ulp */
+#define HP(prec) (8 * (prec))   /* set-up arithmetic */
+
+enum
+{
+  ORC_OK = 0,
+  ORC_SPIN = 1,                 /* 2E = H^2 and the leg reaches l = 0 */
+  ORC_BAD = 2,                  /* the leg goes beyond a turning point */
+  ORC_INACC = 3                 /* not accurate enough: raise precision */
+};
+
+/* The sign of x, if x is exact or excludes zero: 0 and *s, else -1. */
+static int
+sgn_exact (const arb_t x, int *s)
+{
+  if (arb_is_zero (x))
+    *s = 0;
+  else if (arb_is_positive (x))
+    *s = 1;
+  else if (arb_is_negative (x))
+    *s = -1;
+  else
+    return -1;
+  return 0;
+}
+
+static double
+mid_d (const arb_t x)
+{
+  return arf_get_d (arb_midref (x), ARF_RND_NEAR);
+}
+
+static int
+accurate (const arb_t x)
+{
+  return arb_is_zero (x) || arb_rel_accuracy_bits (x) >= MIN_BITS;
+}
+
+/* ------------------------------------------------------------------ */
+/* The integrands of (B.2) after substitution                          */
+/* ------------------------------------------------------------------ */
+
+enum
+{ MODE_L, MODE_T, MODE_U };
+
+typedef struct
+{
+  int mode, heading, s;
+  arb_t E2, H2, ls, q, c, c2, ulo;
+} iparam;
+
+static void
+iparam_init (iparam *p)
+{
+  arb_init (p->E2), arb_init (p->H2), arb_init (p->ls), arb_init (p->q);
+  arb_init (p->c), arb_init (p->c2), arb_init (p->ulo);
+}
+
+static void
+iparam_clear (iparam *p)
+{
+  arb_clear (p->E2), arb_clear (p->H2), arb_clear (p->ls), arb_clear (p->q);
+  arb_clear (p->c), arb_clear (p->c2), arb_clear (p->ulo);
+}
+
+/* With a = 1 + l^2 and a second factor d:
+     MODE_L (variable x, l = ls + s x):      d = 2E a - H^2 = a V^2;
+     MODE_T (variable t, l = sqrt(q) sinh t): d = 1;
+     MODE_U (variable x, |l| = c + u^2, u = ulo + x): d = 2c + u^2;
+   the time core is sqrt(a/d), the heading core 1/sqrt(a d); the constant
+   factors (|H|, 1/sqrt(2E), 2) are applied by the caller.  For order 1
+   the square roots are checked for analyticity (acb_calc_integrate's
+   contract); the real segment never meets their branch cut. */
+static int
+integrand (acb_ptr res, const acb_t z, void *vp, slong order, slong prec)
+{
+  const iparam *p = vp;
+  const int an = order != 0;
+  acb_t l, a, d;
+  if (order > 1)
+    flint_abort ();
+  acb_init (l), acb_init (a), acb_init (d);
+  switch (p->mode)
+    {
+    case MODE_L:
+      acb_mul_si (l, z, p->s, prec);
+      acb_add_arb (l, l, p->ls, prec);
+      acb_sqr (a, l, prec);
+      acb_add_ui (a, a, 1, prec);
+      acb_mul_arb (d, a, p->E2, prec);
+      acb_sub_arb (d, d, p->H2, prec);
+      break;
+    case MODE_T:
+      acb_sinh (l, z, prec);
+      acb_sqr (a, l, prec);
+      acb_mul_arb (a, a, p->q, prec);
+      acb_add_ui (a, a, 1, prec);
+      acb_one (d);
+      break;
+    default:
+      acb_add_arb (l, z, p->ulo, prec);
+      acb_sqr (l, l, prec);
+      acb_add_arb (d, l, p->c2, prec);
+      acb_add_arb (a, l, p->c, prec);
+      acb_sqr (a, a, prec);
+      acb_add_ui (a, a, 1, prec);
+      break;
+    }
+  acb_sqrt_analytic (a, a, an, prec);
+  acb_sqrt_analytic (d, d, an, prec);
+  if (p->heading)
+    {
+      acb_mul (l, a, d, prec);
+      acb_inv (res, l, prec);
+    }
+  else
+    acb_div (res, a, d, prec);
+  acb_clear (l), acb_clear (a), acb_clear (d);
+  return 0;
+}
+
+static long n_integrals;
+
+/* Int_lo^hi of the core; ORC_INACC if the enclosure is too wide. */
+static int
+integrate (arb_t res, iparam *p, const arb_t lo, const arb_t hi, slong prec)
+{
+  acb_t a, b, r, z;
+  arb_t w;
+  mag_t tol;
+  acb_calc_integrate_opt_t opt;
+  double est = 0;
+  acb_init (a), acb_init (b), acb_init (r), acb_init (z);
+  arb_init (w);
+  mag_init (tol);
+  acb_set_arb (a, lo);
+  acb_set_arb (b, hi);
+  arb_sub (w, hi, lo, prec);
+  /* a magnitude for the absolute tolerance: the largest of three samples
+     times the width (the effort only; the enclosure is checked below) */
+  for (int k = 0; k <= 2; k++)
+    {
+      acb_set_arb (z, w);
+      acb_mul_si (z, z, k, prec);
+      acb_mul_2exp_si (z, z, -1);
+      acb_add_arb (z, z, lo, prec);
+      integrand (r, z, p, 0, prec);
+      est = fmax (est, fabs (mid_d (acb_realref (r))));
+    }
+  est *= fabs (mid_d (w));
+  if (est > 0 && isfinite (est))
+    {
+      mag_set_d (tol, est);
+      mag_mul_2exp_si (tol, tol, -(GOAL + 10));
+    }
+  else
+    mag_set_ui_2exp_si (tol, 1, -prec);
+  acb_calc_integrate_opt_init (opt);
+  acb_calc_integrate (r, integrand, p, a, b, GOAL, tol, opt, prec);
+  n_integrals++;
+  arb_set (res, acb_realref (r));
+  int ok = accurate (res) && arb_is_finite (res);
+  acb_clear (a), acb_clear (b), acb_clear (r), acb_clear (z);
+  arb_clear (w);
+  mag_clear (tol);
+  return ok ? ORC_OK : ORC_INACC;
+}
+
+/* ------------------------------------------------------------------ */
+/* One leg: |dtheta| and dtau                                          */
+/* ------------------------------------------------------------------ */
+
+/* A leg starts at l = ls and moves with dl/dx = s (s = sign of V) over the
+   width W >= 0, or (W = NULL) out to the turning point.  E2 = 2E, H exact.
+   th = |dtheta|, ta = dtau.  *mode (may be NULL) receives the substitution
+   used. */
+static int
+leg_oracle (const arb_t E2, const arb_t H, const arb_t ls, int s,
+            const arb_t W, arb_t th, arb_t ta, int *mode, slong prec)
+{
+  const slong hp = HP (prec);
+  iparam p;
+  arb_t H2, qn, le, t, u, lo, hi, fth, fta, us, ue;
+  int rc = ORC_OK, sq, s0, s1 = 0;
+  iparam_init (&p);
+  arb_init (H2), arb_init (qn), arb_init (le), arb_init (t), arb_init (u);
+  arb_init (lo), arb_init (hi), arb_init (fth), arb_init (fta);
+  arb_init (us), arb_init (ue);
+  arb_sqr (H2, H, hp);
+  arb_sub (qn, E2, H2, hp);     /* 2E - H^2: the regime */
+  if (W)
+    {
+      arb_mul_si (le, W, s, hp);
+      arb_add (le, le, ls, hp);
+    }
+  if (sgn_exact (qn, &sq) || sgn_exact (ls, &s0) || (W && sgn_exact (le, &s1)))
+    {
+      rc = ORC_INACC;
+      goto done;
+    }
+  if (sq >= 0)
+    {
+      /* no turning point: V^2 = 2E (l^2 + q)/(1 + l^2) > 0 */
+      if (!W)
+        {
+          rc = ORC_BAD;
+          goto done;
+        }
+      int crossing = s0 * s1 <= 0;
+      arb_abs (t, ls);
+      arb_abs (u, le);
+      arb_min (t, t, u, hp);     /* min |l| if not crossing */
+      if (sq == 0 && crossing)
+        {
+          rc = ORC_SPIN;
+          goto done;
+        }
+      if (sq > 0 && (crossing || arf_cmp_si (arb_midref (t), 1) < 0))
+        {
+          p.mode = MODE_T;
+          arb_div (p.q, qn, E2, hp);
+          arb_sqrt (u, p.q, hp);
+          arb_div (lo, ls, u, hp);
+          arb_asinh (lo, lo, hp);
+          arb_div (hi, le, u, hp);
+          arb_asinh (hi, hi, hp);
+          if (s < 0)
+            arb_swap (lo, hi);
+          arb_rsqrt (fta, E2, hp);
+          arb_abs (fth, H);
+          arb_mul (fth, fth, fta, hp);
+        }
+      else
+        {
+          p.mode = MODE_L;
+          p.s = s;
+          arb_set (p.ls, ls);
+          arb_zero (lo);
+          arb_set (hi, W);
+          arb_one (fta);
+          arb_abs (fth, H);
+        }
+    }
+  else
+    {
+      /* turning points at |l| = c; the motion keeps |l| >= c */
+      p.mode = MODE_U;
+      arb_div (t, H2, E2, hp);
+      arb_sub_ui (t, t, 1, hp);
+      arb_sqrt (p.c, t, hp);
+      arb_mul_2exp_si (p.c2, p.c, 1);
+      /* u = sqrt(|l| - c), |l| - c = (2E (1 + l^2) - H^2)/(2E (|l| + c)) */
+      arb_sqr (t, ls, hp);
+      arb_add_ui (t, t, 1, hp);
+      arb_mul (t, t, E2, hp);
+      arb_sub (t, t, H2, hp);
+      if (sgn_exact (t, &s1) || s1 < 0)
+        {
+          rc = s1 < 0 ? ORC_BAD : ORC_INACC;
+          goto done;
+        }
+      arb_abs (u, ls);
+      arb_add (u, u, p.c, hp);
+      arb_mul (u, u, E2, hp);
+      arb_div (t, t, u, hp);
+      arb_sqrt (us, t, hp);
+      if (W)
+        {
+          int sg;
+          arb_sqr (t, le, hp);
+          arb_add_ui (t, t, 1, hp);
+          arb_mul (t, t, E2, hp);
+          arb_sub (t, t, H2, hp);
+          if (sgn_exact (t, &sg) || sgn_exact (le, &s1))
+            {
+              rc = ORC_INACC;
+              goto done;
+            }
+          if (sg < 0 || s1 != s0)
+            {
+              rc = ORC_BAD;
+              goto done;
+            }
+          arb_abs (u, le);
+          arb_add (u, u, p.c, hp);
+          arb_mul (u, u, E2, hp);
+          arb_div (t, t, u, hp);
+          arb_sqrt (ue, t, hp);
+          arb_min (p.ulo, us, ue, hp);
+          arb_add (t, us, ue, hp);
+          arb_div (hi, W, t, hp);  /* u_e - u_s = (|l_e| - |l_s|)/(u_e + u_s) */
+        }
+      else
+        {
+          arb_zero (p.ulo);
+          arb_set (hi, us);
+        }
+      arb_zero (lo);
+      arb_rsqrt (fta, E2, hp);
+      arb_mul_2exp_si (fta, fta, 1);
+      arb_abs (fth, H);
+      arb_mul (fth, fth, fta, hp);
+    }
+  if (mode)
+    *mode = p.mode;
+  arb_set_round (p.E2, E2, prec);
+  arb_set_round (p.H2, H2, prec);
+  arb_set_round (p.ls, p.ls, prec);
+  arb_set_round (p.q, p.q, prec);
+  arb_set_round (p.c, p.c, prec);
+  arb_set_round (p.c2, p.c2, prec);
+  arb_set_round (p.ulo, p.ulo, prec);
+  arb_set_round (lo, lo, prec);
+  arb_set_round (hi, hi, prec);
+  p.heading = 1;
+  rc = integrate (th, &p, lo, hi, prec);
+  if (rc == ORC_OK)
+    {
+      p.heading = 0;
+      rc = integrate (ta, &p, lo, hi, prec);
+    }
+  arb_mul (th, th, fth, prec);
+  arb_mul (ta, ta, fta, prec);
+  if (rc == ORC_OK && !(accurate (th) && accurate (ta)))
+    rc = ORC_INACC;
+done:
+  iparam_clear (&p);
+  arb_clear (H2), arb_clear (qn), arb_clear (le), arb_clear (t), arb_clear (u);
+  arb_clear (lo), arb_clear (hi), arb_clear (fth), arb_clear (fta);
+  arb_clear (us), arb_clear (ue);
+  return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* Second route for a leg: Legendre's integrals (checks the above)     */
+/* ------------------------------------------------------------------ */
+
+/* With P(x) = (x^2 + p)(x^2 + q), p > q > 0, tan phi = t/sqrt(q),
+   m = 1 - q/p:
+     I(t) = Int_0^t dx/sqrt(P)              = F(phi|m)/sqrt(p),
+     T(t) = Int_0^t sqrt((x^2+p)/(x^2+q)) dx = p I(t) + t sqrt((t^2+p)/(t^2+q))
+                                               - sqrt(p) E(phi|m)
+   (differentiate: d/dt [t sqrt((t^2+p)/(t^2+q)) - sqrt(p) E] = t^2/sqrt(P)). */
+static void
+legendre_IT (arb_t I, arb_t T, const arb_t t, const arb_t p, const arb_t q,
+             slong prec)
+{
+  acb_t phi, m, r;
+  arb_t sp, x, y;
+  acb_init (phi), acb_init (m), acb_init (r);
+  arb_init (sp), arb_init (x), arb_init (y);
+  arb_sqrt (x, q, prec);
+  arb_div (x, t, x, prec);
+  arb_atan (x, x, prec);
+  acb_set_arb (phi, x);
+  arb_div (x, q, p, prec);
+  arb_sub_ui (x, x, 1, prec);
+  arb_neg (x, x);
+  acb_set_arb (m, x);
+  arb_sqrt (sp, p, prec);
+  acb_elliptic_f (r, phi, m, 0, prec);
+  arb_div (I, acb_realref (r), sp, prec);
+  acb_elliptic_e_inc (r, phi, m, 0, prec);
+  arb_mul (y, acb_realref (r), sp, prec);
+  arb_sqr (x, t, prec);
+  arb_add (T, x, p, prec);
+  arb_add (x, x, q, prec);
+  arb_div (T, T, x, prec);
+  arb_sqrt (T, T, prec);
+  arb_mul (T, T, t, prec);
+  arb_sub (T, T, y, prec);
+  arb_addmul (T, p, I, prec);
+  acb_clear (phi), acb_clear (m), acb_clear (r);
+  arb_clear (sp), arb_clear (x), arb_clear (y);
+}
+
+/* The leg of leg_oracle by the reduction t = |l| (no turning point: p = 1,
+   q = 1 - H^2/(2E)) or w = sqrt(l^2 - c^2) (turning points: p = H^2/(2E),
+   q = c^2): |dtheta| = |H|/sqrt(2E) [I], dtau = [T]/sqrt(2E). */
+static int
+leg_legendre (const arb_t E2, const arb_t H, const arb_t ls, int s,
+              const arb_t W, arb_t th, arb_t ta, slong prec)
+{
+  const slong hp = HP (prec);
+  arb_t H2, p, q, le, a, b, Ia, Ta, Ib, Tb, f;
+  int rc = ORC_OK, sq, s0, s1 = 0;
+  arb_init (H2), arb_init (p), arb_init (q), arb_init (le), arb_init (a);
+  arb_init (b), arb_init (Ia), arb_init (Ta), arb_init (Ib), arb_init (Tb);
+  arb_init (f);
+  arb_sqr (H2, H, hp);
+  arb_sub (q, E2, H2, hp);
+  if (W)
+    {
+      arb_mul_si (le, W, s, hp);
+      arb_add (le, le, ls, hp);
+    }
+  if (sgn_exact (q, &sq) || sgn_exact (ls, &s0) || (W && sgn_exact (le, &s1)))
+    {
+      rc = ORC_INACC;
+      goto done;
+    }
+  if (sq == 0 || (sq > 0 && !W))
+    {
+      rc = ORC_BAD;
+      goto done;
+    }
+  if (sq > 0)
+    {
+      arb_one (p);
+      arb_div (q, q, E2, hp);
+      arb_abs (a, ls);
+      arb_abs (b, le);
+    }
+  else
+    {
+      arb_div (p, H2, E2, hp);
+      arb_sub_ui (q, p, 1, hp);
+      /* w = sqrt(l^2 - c^2) = sqrt((2E (1 + l^2) - H^2)/(2E)) */
+      arb_sqr (a, ls, hp);
+      arb_add_ui (a, a, 1, hp);
+      arb_mul (a, a, E2, hp);
+      arb_sub (a, a, H2, hp);
+      arb_div (a, a, E2, hp);
+      arb_sqrt (a, a, hp);
+      if (W)
+        {
+          arb_sqr (b, le, hp);
+          arb_add_ui (b, b, 1, hp);
+          arb_mul (b, b, E2, hp);
+          arb_sub (b, b, H2, hp);
+          arb_div (b, b, E2, hp);
+          arb_sqrt (b, b, hp);
+        }
+      else
+        arb_zero (b);
+    }
+  legendre_IT (Ia, Ta, a, p, q, hp);
+  legendre_IT (Ib, Tb, b, p, q, hp);
+  if (sq > 0 && s0 * s1 <= 0)
+    {
+      arb_add (Ia, Ia, Ib, hp);
+      arb_add (Ta, Ta, Tb, hp);
+    }
+  else
+    {
+      arb_sub (Ia, Ia, Ib, hp);
+      arb_abs (Ia, Ia);
+      arb_sub (Ta, Ta, Tb, hp);
+      arb_abs (Ta, Ta);
+    }
+  arb_rsqrt (f, E2, hp);
+  arb_mul (ta, Ta, f, prec);
+  arb_abs (b, H);
+  arb_mul (f, f, b, hp);
+  arb_mul (th, Ia, f, prec);
+  if (!(accurate (th) && accurate (ta)))
+    rc = ORC_INACC;
+done:
+  arb_clear (H2), arb_clear (p), arb_clear (q), arb_clear (le), arb_clear (a);
+  arb_clear (b), arb_clear (Ia), arb_clear (Ta), arb_clear (Ib), arb_clear (Tb);
+  arb_clear (f);
+  return rc;
+}
+
+static long n_legendre;
+static double worst_legendre;
+
+/* Compares a leg of leg_oracle (th = |dtheta|, ta) with leg_legendre;
+   1 if the latter needs more precision. */
+static int
+legendre_check (const arb_t E2, const arb_t H, const arb_t ls, int s,
+                const arb_t W, const arb_t th, const arb_t ta, slong prec)
+{
+  arb_t th2, ta2, t;
+  int r2;
+  arb_init (th2), arb_init (ta2), arb_init (t);
+  r2 = leg_legendre (E2, H, ls, s, W, th2, ta2, prec);
+  if (r2 == ORC_OK)
+    {
+      arb_abs (t, th);
+      arb_sub (t, t, th2, HP (prec));
+      arb_div (t, t, th2, HP (prec));
+      worst_legendre = fmax (worst_legendre, fabs (mid_d (t)));
+      arb_sub (t, ta, ta2, HP (prec));
+      arb_div (t, t, ta2, HP (prec));
+      worst_legendre = fmax (worst_legendre, fabs (mid_d (t)));
+      n_legendre++;
+    }
+  else if (r2 != ORC_INACC || prec >= PREC_MAX)
+    worst_legendre = INFINITY;
+  arb_clear (th2), arb_clear (ta2), arb_clear (t);
+  return r2 == ORC_INACC && prec < PREC_MAX;
+}
+
+/* ------------------------------------------------------------------ */
+/* Collisions, the return map, C1, C2, sigma4, xi4                     */
+/* ------------------------------------------------------------------ */
+
+/* The peg leaves at l = lm (l = L0 + D-) and the new one goes in at
+   l = lp: V continuous, angular momentum about the new peg conserved:
+     Omega- = H/(1 + lm^2),  V^2 = 2E - (1 + lm^2) Omega-^2,
+     H+ = (lp lm + 1) Omega-   [(G - P') x v_G + I omega, G - P' = lp e,
+                               v_G = V e + Omega- lm e_n, I = 1],
+     E+ = [V^2 + H+^2/(1 + lp^2)]/2. */
+static void
+collide (const arb_t lm, const arb_t lp, const arb_t E, const arb_t H,
+         arb_t Ep, arb_t Hp, slong prec)
+{
+  arb_t am, Om, V2, t;
+  arb_init (am), arb_init (Om), arb_init (V2), arb_init (t);
+  arb_sqr (am, lm, prec);
+  arb_add_ui (am, am, 1, prec);
+  arb_div (Om, H, am, prec);
+  arb_mul_2exp_si (V2, E, 1);
+  arb_submul (V2, H, Om, prec);          /* 2E - (1 + lm^2) Omega^2 */
+  arb_mul (t, lp, lm, prec);
+  arb_add_ui (t, t, 1, prec);
+  arb_mul (Hp, t, Om, prec);
+  arb_sqr (t, lp, prec);
+  arb_add_ui (t, t, 1, prec);
+  arb_sqr (Om, Hp, prec);
+  arb_div (t, Om, t, prec);
+  arb_add (Ep, V2, t, prec);
+  arb_mul_2exp_si (Ep, Ep, -1);
+  arb_clear (am), arb_clear (Om), arb_clear (V2), arb_clear (t);
+}
+
+typedef struct
+{
+  int reversal;
+  arb_t E, H, dth, dta, Dc;     /* Dc: the turning point, if reversal */
+} sref;
+
+/* One step of the return map from the post-collision state (dir, E, H). */
+static int
+step_oracle (double L0, double Delta, int dir, const arb_t E, const arb_t H,
+             sref *r, int with_legendre, slong prec)
+{
+  const slong hp = HP (prec);
+  arb_t ls, lf, W, E2, m, t, th, ta, Ep, Hp;
+  int rc, s0, s1, sv, sg;
+  arb_init (ls), arb_init (lf), arb_init (W), arb_init (E2), arb_init (m);
+  arb_init (t), arb_init (th), arb_init (ta), arb_init (Ep), arb_init (Hp);
+  arb_set_d (W, Delta);
+  arb_set_d (ls, L0);
+  arb_set (lf, ls);
+  arb_add (dir > 0 ? lf : ls, ls, W, hp);
+  arb_mul_2exp_si (E2, E, 1);
+  /* the start must move: V^2 > 0 there */
+  arb_sqr (t, ls, hp);
+  arb_add_ui (t, t, 1, hp);
+  arb_mul (t, t, E2, hp);
+  arb_submul (t, H, H, hp);
+  if (sgn_exact (ls, &s0) || sgn_exact (lf, &s1) || sgn_exact (t, &sg))
+    {
+      rc = ORC_INACC;
+      goto done;
+    }
+  if (sg <= 0)
+    {
+      rc = ORC_BAD;
+      goto done;
+    }
+  /* reversal iff 2E (1 + m^2) <= H^2, m = min |l| over the slot */
+  if (s0 * s1 <= 0)
+    arb_zero (m);
+  else
+    {
+      arb_abs (t, ls);
+      arb_abs (m, lf);
+      arb_min (m, m, t, hp);
+    }
+  arb_sqr (t, m, hp);
+  arb_add_ui (t, t, 1, hp);
+  arb_mul (t, t, E2, hp);
+  arb_submul (t, H, H, hp);
+  if (sgn_exact (t, &sv))
+    {
+      rc = ORC_INACC;
+      goto done;
+    }
+  if (sv == 0 && arb_is_zero (m))
+    {
+      rc = ORC_SPIN;
+      goto done;
+    }
+  r->reversal = sv <= 0;
+  rc = leg_oracle (E2, H, ls, dir, r->reversal ? NULL : W, th, ta, NULL, prec);
+  if (rc != ORC_OK)
+    goto done;
+  if (with_legendre
+      && legendre_check (E2, H, ls, dir, r->reversal ? NULL : W, th, ta, prec))
+    {
+      rc = ORC_INACC;
+      goto done;
+    }
+  if (r->reversal)
+    {
+      arb_mul_2exp_si (th, th, 1);
+      arb_mul_2exp_si (ta, ta, 1);
+    }
+  if (arb_is_negative (H))
+    arb_neg (th, th);
+  arb_set (r->dth, th);
+  arb_set (r->dta, ta);
+  if (r->reversal)
+    {
+      /* V = 0 where 1 + l^2 = H^2/(2E), on the side of the start:
+         D_c = sgn(l_s) c - L0 */
+      arb_sqr (t, H, hp);
+      arb_div (t, t, E2, hp);
+      arb_sub_ui (t, t, 1, hp);
+      arb_sqrt (t, t, hp);
+      if (s0 < 0)
+        arb_neg (t, t);
+      arb_set_d (m, L0);
+      arb_sub (r->Dc, t, m, prec);
+      collide (ls, lf, E, H, Ep, Hp, hp);
+    }
+  else
+    collide (lf, ls, E, H, Ep, Hp, hp);
+  arb_set_round (r->E, Ep, prec);
+  arb_set_round (r->H, Hp, prec);
+  if (!(accurate (r->E) && accurate (r->H))
+      || (r->reversal && !accurate (r->Dc)))
+    rc = ORC_INACC;
+done:
+  arb_clear (ls), arb_clear (lf), arb_clear (W), arb_clear (E2), arb_clear (m);
+  arb_clear (t), arb_clear (th), arb_clear (ta), arb_clear (Ep), arb_clear (Hp);
+  return rc;
+}
+
+/* C1, C2 for a post-collision state with peg at D+ = 0 (e = 0) or Delta
+   (e = 1) whose segment does (rev = 1) or does not reverse: the collision
+   at the end the peg leaves (the far end without reversal, D+ with one)
+   applied to the test state Omega- = 1, V = 0 (V drops out).  L0 and Delta
+   are balls so that they can be perturbed. */
+static int
+coef_oracle (const arb_t L0, const arb_t Delta, int e, int rev, arb_t C1,
+             arb_t C2, slong prec)
+{
+  const slong hp = HP (prec);
+  arb_t la, lb, E, H, Ep, Hp;
+  arb_init (la), arb_init (lb), arb_init (E), arb_init (H), arb_init (Ep);
+  arb_init (Hp);
+  arb_set (la, L0);
+  arb_add (lb, Delta, L0, hp);  /* L0 + Delta */
+  if (e)
+    arb_swap (la, lb);          /* la = L0 + D+, lb = L0 + Delta - D+ */
+  const arb_struct *lm = rev ? la : lb, *lp = rev ? lb : la;
+  arb_sqr (H, lm, hp);
+  arb_add_ui (H, H, 1, hp);
+  arb_mul_2exp_si (E, H, -1);
+  collide (lm, lp, E, H, Ep, Hp, hp);
+  arb_sub (Ep, Ep, E, hp);
+  arb_sqr (E, H, hp);
+  arb_div (C1, Ep, E, prec);
+  arb_div (C2, Hp, H, prec);
+  int ok = accurate (C1) && accurate (C2);
+  arb_clear (la), arb_clear (lb), arb_clear (E), arb_clear (H), arb_clear (Ep);
+  arb_clear (Hp);
+  return ok ? ORC_OK : ORC_INACC;
+}
+
+/* C1, C2 and xi4 = (|V*|/Delta) log C2 (meaningful for rev = 0, C2 > 0),
+   with precision escalation. */
+static int
+param_eval (const arb_t L0, const arb_t Delta, int e, int rev, double Vs,
+            arb_t C1, arb_t C2, arb_t xi)
+{
+  int rc = ORC_INACC;
+  for (slong prec = PREC0; prec <= PREC_MAX && rc == ORC_INACC; prec *= 2)
+    {
+      /* 140 bits, not 64: the finite differences of relative size 2^-100
+         need them (cheap here) */
+      rc = coef_oracle (L0, Delta, e, rev, C1, C2, prec);
+      if (rc == ORC_OK && (arb_rel_accuracy_bits (C1) < 140
+                           || arb_rel_accuracy_bits (C2) < 140))
+        rc = ORC_INACC;
+      if (rc != ORC_OK || rev || !arb_is_positive (C2))
+        continue;
+      arb_log (xi, C2, HP (prec));
+      arb_t v;
+      arb_init (v);
+      arb_set_d (v, fabs (Vs));
+      arb_mul (xi, xi, v, HP (prec));
+      arb_div (xi, xi, Delta, prec);
+      arb_clear (v);
+      rc = arb_rel_accuracy_bits (xi) >= 140 ? ORC_OK : ORC_INACC;
+    }
+  return rc;
+}
+
+/* ------------------------------------------------------------------ */
+/* Errors in ulps, and their statistics                                */
+/* ------------------------------------------------------------------ */
+
+/* |lib - ref|/ulp(ref), ulp(x) = 2^(e - 52) for 2^e <= |x| < 2^(e+1)
+   (2^-1074 at the bottom of the subnormal range). */
+static double
+ulp_err (double lib, const arb_t ref)
+{
+  double r = mid_d (ref), u = 0x1p-1074, e;
+  int k;
+  arb_t d;
+  if (!isfinite (lib))
+    return INFINITY;
+  if (r != 0)
+    {
+      frexp (r, &k);
+      u = fmax (ldexp (1.0, k - 53), 0x1p-1074);
+    }
+  arb_init (d);
+  arb_set_d (d, lib);
+  arb_sub (d, d, ref, 2 * PREC_MAX);
+  e = fabs (mid_d (d)) / u;
+  arb_clear (d);
+  return e;
+}
+
+enum
+{ Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2, NQ };
+enum
+{ S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, NS };
+enum
+{ M_CF, M_QUAD, M_ODE, NM };
+
+static const char *const qname[NQ] = {
+  "(B.2) heading increment of a leg",
+  "(B.2) elapsed time of a leg",
+  "(B.3)/(B.4) next energy E'",
+  "(B.3)/(B.4) next momentum H'",
+  "(B.3)/(B.4) next heading theta'",
+  "(B.3)/(B.4) next time tau'",
+  "(B.4)/(B.5) turning point Dc",
+  "(3.10) sigma4",
+  "(4.1) xi4",
+  "(3.7)/(B.3) C1",
+  "(3.7)/(B.3) C2"
+};
+
+static const char *const qtexi[NQ] = {
+  "(B.2): heading increment of a leg, @code{chaplygin_discrete_heading}",
+  "(B.2): elapsed time of a leg, @code{chaplygin_discrete_heading}",
+  "(B.3)/(B.4): next energy @math{E'}, @code{chaplygin_discrete_step}",
+  "(B.3)/(B.4): next momentum @math{H'}, @code{chaplygin_discrete_step}",
+  "(B.3)/(B.4): next heading @math{theta'}, @code{chaplygin_discrete_step}",
+  "(B.3)/(B.4): next time @math{tau'}, @code{chaplygin_discrete_step}",
+  "(B.4)/(B.5): turning point @math{D_c} of a reversing segment, "
+    "@code{chaplygin_discrete_step}",
+  "(3.10): @math{sigma_4}, @code{chaplygin_discrete_sigma4}",
+  "(4.1): @math{xi_4}, @code{chaplygin_discrete_xi4}",
+  "(3.7)/(B.3)/(B.4): @math{C_1}, @code{chaplygin_discrete_coefficients}",
+  "(3.7)/(B.3)/(B.4): @math{C_2}, @code{chaplygin_discrete_coefficients}"
+};
+
+static const char *const sname[NS] = {
+  "ordinary", "near-reversal", "near-spinning", "tiny Delta", "huge Delta",
+  "large |L0|"
+};
+
+static const char *const stexi[NS] = {
+  "ordinary", "near-reversal", "near-spinning", "tiny @math{Delta}",
+  "huge @math{Delta}", "large @math{|L_0|}"
+};
+
+static const char *const mname[NM] = {
+  "closed form", "quadrature", "ODE"
+};
+
+static int
+ill (int set)
+{
+  return set == S_REV || set == S_SPIN;
+}
+
+typedef struct
+{
+  long n, nill;                 /* points, points with kappa > 2 */
+  double max, sum, ratio, kmax; /* ulps: max, sum; max err/tol; max kappa */
+  char worst[240];              /* the point of the largest err/tol */
+} stat_t;
+
+/* The arguments of the call being compared (for the report). */
+static char point[200];
+
+static stat_t st[NM][NQ][NS];
+
+/* One comparison: error ERR (ulps) against its tolerance TOL (ulps). */
+static void
+record (int m, int q, int set, double err, double tol, double kappa)
+{
+  stat_t *x = &st[m][q][set];
+  if (!(err >= 0))
+    err = INFINITY;
+  x->n++;
+  x->max = fmax (x->max, err);
+  x->sum += err;
+  if (!(err / tol <= x->ratio))
+    {
+      x->ratio = err / tol;
+      snprintf (x->worst, sizeof x->worst, "%s: %.3g ulps, kappa %.3g",
+                point, err, kappa);
+    }
+  x->kmax = fmax (x->kmax, kappa);
+  x->nill += kappa > 2;
+}
+
+/* ------------------------------------------------------------------ */
+/* Tolerances                                                          */
+/* ------------------------------------------------------------------ */
+
+/* The rule.  kappa is the condition number of the quantity with respect
+   to the double inputs of the call: sum over inputs x of |x dQ/dx|/|Q|,
+   computed by the oracle by finite differences of relative size 2^-100
+   (E and H for the return map, whose L0 + Delta the library carries
+   exactly; L0, D0, V0, Omega0 and D for a leg of chaplygin_discrete_heading;
+   for theta' = theta + dtheta also theta itself:
+   kappa = (|theta| + |dtheta| kappa_dtheta)/|theta'|, and likewise tau').
+   An evaluation that is stable in the backward sense, with a backward
+   error of at most 2 eps per input, errs by at most 2 kappa eps relative,
+   i.e. 4 kappa ulps (an ulp is between eps/2 and eps relative); allowed:
+   twice that, 8 kappa ulps, and never less than 16 ulps, the rung of the
+   GSL ladder above the few ulps that the library's reduction and GSL's
+   Carlson integrals (7.9 eps measured, TOOLCHAIN.md) can add.  So a
+   well-conditioned quantity (kappa <= 2) must be within 16 ulps, and the
+   near-reversal and near-spinning sets, where kappa reaches 1e18, within
+   8 kappa ulps.  Random states of the other sets are sometimes
+   ill-conditioned too (a state with 2E/H^2 near 1 by chance); the same
+   rule applies to them, and the report counts them.
+
+   Quadrature and ODE at tolerance METHOD_TOL: the library's quadrature
+   certifies max(tol, 64 eps) on its error estimate, and its ODE method's
+   error is about 5 tol per segment (doc/methods.texi).  Allowed: a relative
+   error of 10 tol (1 + kappa), i.e. 20 (tol/eps)(1 + kappa) ulps: an
+   integration to tolerance tol perturbs the state by about tol, which the
+   condition number amplifies. */
+#define TOL_CF 16.0
+#define TOL_KAPPA 8.0
+#define METHOD_TOL 1e-13
+#define METHOD_FACTOR 10.0
+
+/* The tolerance in ulps of a quantity with condition number kappa. */
+static double
+tol_ulps (int me, double kappa)
+{
+  if (me == M_CF)
+    return fmax (TOL_CF, TOL_KAPPA * kappa);
+  return 2 * METHOD_FACTOR * METHOD_TOL / DBL_EPSILON * (1 + kappa);
+}
+
+/* ------------------------------------------------------------------ */
+/* Data sets                                                           */
+/* ------------------------------------------------------------------ */
+
+static double
+log_uniform (unsigned long long *seed, double lo, double hi)
+{
+  return pow (10.0, tap_uniform (seed, lo, hi));
+}
+
+static double
+rsign (unsigned long long *seed)
+{
+  return tap_uniform (seed, 0, 1) < 0.5 ? -1.0 : 1.0;
+}
+
+/* Parameters (L0, Delta) of a data set. */
+static void
+gen_params (int set, unsigned long long *seed, double *L0, double *Delta)
+{
+  switch (set)
+    {
+    case S_REV:                 /* a segment that moves towards l = 0 on
+                                   one side of it: L0 > 0 or L0 < -Delta */
+      *Delta = tap_uniform (seed, 0.2, 3);
+      *L0 = tap_uniform (seed, 0.1, 3);
+      if (rsign (seed) < 0)
+        *L0 = -(*L0 + *Delta);
+      break;
+    case S_SPIN:                /* the mass centre inside the slot */
+      *Delta = tap_uniform (seed, 0.3, 3);
+      *L0 = -tap_uniform (seed, 0.1, 0.9) * *Delta;
+      break;
+    case S_TINY:
+      *Delta = log_uniform (seed, -12, -6);
+      *L0 = tap_uniform (seed, -3, 2);
+      break;
+    case S_HUGE:
+      *Delta = log_uniform (seed, 3, 6);
+      *L0 = tap_uniform (seed, 0, 1) < 0.5 ? tap_uniform (seed, -3, 2)
+        : tap_uniform (seed, -1.5, 0.5) * *Delta;
+      break;
+    case S_LARGE:
+      /* half of them below 1e12, where a turning point can still be put
+         inside the slot by doubles E, H (the resolution of c is ~eps |L0|) */
+      *L0 = rsign (seed) * log_uniform (seed, 3,
+                                        tap_uniform (seed, 0, 1) < 0.5 ? 12 : 100);
+      *Delta = tap_uniform (seed, 0.1, 3);
+      break;
+    default:
+      *L0 = tap_uniform (seed, -3, 2);
+      *Delta = tap_uniform (seed, 0.1, 3);
+      break;
+    }
+}
+
+/* A post-collision state (dir, E, H) of a data set. */
+static void
+gen_state (int set, unsigned long long *seed, double L0, double Delta,
+           int *dir, double *E, double *H)
+{
+  double ls, lf, m, c;
+  switch (set)
+    {
+    case S_REV:
+      /* a turning point within 1e-6 Delta of the far end, on either side:
+         c = |l_far| +- delta Delta, H^2 = 2E (1 + c^2) */
+      *dir = L0 > 0 ? -1 : 1;
+      lf = *dir > 0 ? L0 + Delta : L0;
+      c = fabs (lf) + rsign (seed) * log_uniform (seed, -15, -6) * Delta;
+      *E = tap_uniform (seed, 0.2, 2);
+      *H = rsign (seed) * sqrt (2 * *E * (1 + c * c));
+      return;
+    case S_SPIN:
+      /* 2E/H^2 = 1 + epsilon, 1e-15 <= |epsilon| <= 1e-8; one in ten
+         exactly 1 (H = k/8, E = H^2/2 exact): the spinning equilibrium is
+         reached, CHAPLYGIN_ESPIN */
+      *dir = (int) rsign (seed);
+      if (tap_uniform (seed, 0, 1) < 0.1)
+        {
+          *H = rsign (seed) * floor (tap_uniform (seed, 3, 16)) / 8;
+          *E = 0.5 * *H * *H;
+          return;
+        }
+      *H = rsign (seed) * tap_uniform (seed, 0.3, 2);
+      *E = 0.5 * (1 + rsign (seed) * log_uniform (seed, -15, -8)) * *H * *H;
+      return;
+    default:
+      break;
+    }
+  if (tap_uniform (seed, 0, 1) < (set == S_LARGE ? 0.6 : 0.3)
+      && (set != S_LARGE || fabs (L0) < 1e12))
+    {
+      /* a turning point inside the slot: move towards l = 0 */
+      if (L0 >= 0)
+        *dir = -1;
+      else if (L0 + Delta <= 0)
+        *dir = 1;
+      else
+        *dir = (int) rsign (seed);
+      ls = *dir > 0 ? L0 : L0 + Delta;
+      lf = *dir > 0 ? L0 + Delta : L0;
+      m = ls * lf <= 0 ? 0 : fmin (fabs (ls), fabs (lf));
+      c = m + tap_uniform (seed, 0.02, 0.98) * (fabs (ls) - m);
+      *E = tap_uniform (seed, 0.2, 2);
+      *H = rsign (seed) * sqrt (2 * *E * (1 + c * c));
+      return;
+    }
+  double V = rsign (seed) * tap_uniform (seed, 0.05, 2);
+  *dir = V > 0 ? 1 : -1;
+  ls = *dir > 0 ? L0 : L0 + Delta;
+  double a = 1 + ls * ls;
+  double Om = rsign (seed) * tap_uniform (seed, 0.05, 2) / sqrt (a);
+  *E = 0.5 * (V * V + a * Om * Om);
+  *H = a * Om;
+}
+
+/* ------------------------------------------------------------------ */
+/* Runs                                                                */
+/* ------------------------------------------------------------------ */
+
+static long n_oracle_fail, n_lib_fail, n_mismatch, n_spin_ok, n_spin_bad;
+static long n_legs, n_steps, n_params, n_reversals, n_turning_legs;
+static long n_ode_declined, n_reject_rounding[NM];
+static double kappa_max[NS];
+
+static const double FD_STEP = 0x1p-100;
+
+/* The leg of chaplygin_discrete_heading's arguments x = {L0, D0, V0,
+   Omega0, D}, given as balls so that they can be perturbed. */
+static int
+leg_eval (arb_srcptr x, arb_t th, arb_t ta, int with_legendre)
+{
+  int rc = ORC_INACC;
+  const int s = arb_is_positive (x + 2) ? 1 : -1;
+  arb_t l0, E2, H, W, t;
+  arb_init (l0), arb_init (E2), arb_init (H), arb_init (W), arb_init (t);
+  for (slong prec = PREC0; prec <= PREC_MAX && rc == ORC_INACC; prec *= 2)
+    {
+      const slong hp = HP (prec);
+      arb_add (l0, x + 0, x + 1, hp);
+      arb_sqr (H, l0, hp);
+      arb_add_ui (H, H, 1, hp);
+      arb_sqr (t, x + 3, hp);
+      arb_mul (E2, H, t, hp);
+      arb_addmul (E2, x + 2, x + 2, hp);
+      arb_mul (H, H, x + 3, hp);
+      arb_sub (W, x + 4, x + 1, hp);
+      arb_abs (W, W);
+      rc = leg_oracle (E2, H, l0, s, W, th, ta, NULL, prec);
+      if (rc == ORC_OK && arb_is_negative (x + 3))
+        arb_neg (th, th);
+      if (rc == ORC_OK && with_legendre
+          && legendre_check (E2, H, l0, s, W, th, ta, prec))
+        rc = ORC_INACC;
+    }
+  arb_clear (l0), arb_clear (E2), arb_clear (H), arb_clear (W), arb_clear (t);
+  return rc;
+}
+
+/* The largest double not beyond Dc in the direction s. */
+static double
+double_before (const arb_t Dc, int s)
+{
+  double d = mid_d (Dc);
+  arb_t t;
+  arb_init (t);
+  for (;;)
+    {
+      arb_set_d (t, d);
+      arb_sub (t, t, Dc, 4 * PREC_MAX);
+      if (s > 0 ? !arb_is_positive (t) : !arb_is_negative (t))
+        break;
+      d = nextafter (d, s > 0 ? -INFINITY : INFINITY);
+    }
+  arb_clear (t);
+  return d;
+}
+
+/* y = x (1 + d) */
+static void
+perturbed (arb_t y, const arb_t x, double d)
+{
+  arb_t t;
+  arb_init (t);
+  arb_set_d (t, d);
+  arb_mul (t, t, x, 4 * PREC_MAX);
+  arb_add (y, x, t, 4 * PREC_MAX);
+  arb_clear (t);
+}
+
+/* |Q(x (1 + d)) - Q(x)|/(|Q| |d|).  The difference must be known to
+   0.01 |d| relative (the references carry ~128 bits, d = 2^-100), else the
+   oracle has failed. */
+static long n_fd_inaccurate;
+
+static double
+kappa_fd (const arb_t Q1, const arb_t Q0, double d)
+{
+  arb_t t;
+  double k;
+  arb_init (t);
+  arb_sub (t, Q1, Q0, 4 * PREC_MAX);
+  arb_div (t, t, Q0, 4 * PREC_MAX);
+  k = fabs (mid_d (t) / d);
+  arb_get_rad_arb (t, t);
+  if (!(fabs (mid_d (t)) <= 0.01 * fabs (d)))
+    {
+      if (n_fd_inaccurate++ < 5)
+        printf ("# oracle: finite difference too inaccurate at %s (radius "
+                "%.3g)\n", point, mid_d (t));
+    }
+  arb_clear (t);
+  return k;
+}
+
+static const chaplygin_options opt_of[NM] = {
+  { CHAPLYGIN_CLOSED_FORM, 1e-13, CHAPLYGIN_PREC_DOUBLE },
+  { CHAPLYGIN_QUADRATURE, METHOD_TOL, CHAPLYGIN_PREC_DOUBLE },
+  { CHAPLYGIN_ODE, METHOD_TOL, CHAPLYGIN_PREC_DOUBLE }
+};
+
+static int use_method[NM] = { 1, 1, 1 };
+
+/* Legs of (B.2) through chaplygin_discrete_heading. */
+static void
+run_legs (int set, int n, unsigned long long *seed)
+{
+  arb_ptr x = _arb_vec_init (5), y = _arb_vec_init (5);
+  arb_t th, ta, th1, ta1, E2, H, l0, lf, t, m, Dc, v2, qrel;
+  arb_init (th), arb_init (ta), arb_init (th1), arb_init (ta1);
+  arb_init (E2), arb_init (H), arb_init (l0), arb_init (lf), arb_init (t);
+  arb_init (m), arb_init (Dc), arb_init (v2), arb_init (qrel);
+  const slong hp = HP (PREC_MAX);
+  for (int i = 0; i < n; i++)
+    {
+      double L0, Delta, E, Hd, D0, V0, Om0, D;
+      int dir;
+      gen_params (set, seed, &L0, &Delta);
+      gen_state (set, seed, L0, Delta, &dir, &E, &Hd);
+      if (set == S_ORD && tap_uniform (seed, 0, 1) < 0.3)
+        {
+          /* a leg from inside the slot */
+          D0 = tap_uniform (seed, 0, Delta);
+          V0 = rsign (seed) * tap_uniform (seed, 0.05, 2);
+          Om0 = rsign (seed) * tap_uniform (seed, 0.05, 2)
+            / sqrt (1 + (L0 + D0) * (L0 + D0));
+        }
+      else
+        {
+          D0 = dir > 0 ? 0.0 : Delta;
+          double a = 1 + (L0 + D0) * (L0 + D0);
+          Om0 = Hd / a;
+          V0 = 2 * E - Hd * Om0;
+          if (!(V0 > 0))
+            continue;
+          V0 = dir * sqrt (V0);
+        }
+      int s = V0 > 0 ? 1 : -1;
+      double Dfar = s > 0 ? Delta : 0.0;
+      /* where the leg can go: the far end, or a turning point before it
+         (exact decision as in step_oracle) */
+      arb_set_d (l0, L0);
+      arb_set_d (t, D0);
+      arb_add (l0, l0, t, hp);
+      arb_set_d (lf, L0);
+      arb_set_d (t, Dfar);
+      arb_add (lf, lf, t, hp);
+      arb_sqr (H, l0, hp);
+      arb_add_ui (H, H, 1, hp);
+      arb_set_d (t, Om0);
+      arb_mul (H, H, t, hp);      /* H = (1 + l0^2) Omega0 */
+      arb_mul (E2, H, t, hp);
+      arb_set_d (t, V0);
+      arb_addmul (E2, t, t, hp);  /* 2E = V0^2 + (1 + l0^2) Omega0^2 */
+      int s0 = arf_sgn (arb_midref (l0)), s1 = arf_sgn (arb_midref (lf));
+      if (s0 * s1 <= 0)
+        arb_zero (m);
+      else
+        {
+          arb_abs (t, l0);
+          arb_abs (m, lf);
+          arb_min (m, m, t, hp);
+        }
+      arb_sqr (t, m, hp);
+      arb_add_ui (t, t, 1, hp);
+      arb_mul (t, t, E2, hp);
+      arb_submul (t, H, H, hp);
+      if (arb_is_zero (t) && arb_is_zero (m))
+        continue;               /* the spinning point: no leg */
+      int turn = !arb_is_positive (t);
+      if (turn)
+        {
+          /* Dc = sgn(l0) c - L0, c = sqrt(H^2/(2E) - 1) */
+          arb_sqr (t, H, hp);
+          arb_div (t, t, E2, hp);
+          arb_sub_ui (t, t, 1, hp);
+          arb_sqrt (Dc, t, hp);
+          if (s0 < 0)
+            arb_neg (Dc, Dc);
+          arb_set_d (t, L0);
+          arb_sub (Dc, Dc, t, hp);
+          n_turning_legs++;
+        }
+      else
+        arb_set_d (Dc, Dfar);
+      /* The end: on the ill-conditioned sets the far end (the turning
+         point just beyond it) or the last double before the turning point;
+         on the others the far end, or a point 5% to 95% of the way to the
+         far end, or 5% to 75% of the way to a turning point (the closer a
+         leg ends to a turning point, the worse its conditioning: those
+         legs belong to near-reversal). */
+      if (ill (set) || (!turn && tap_uniform (seed, 0, 1) < 0.5))
+        D = turn ? double_before (Dc, s) : Dfar;
+      else
+        D = D0 + tap_uniform (seed, 0.05, turn ? 0.75 : 0.95) * (mid_d (Dc) - D0);
+      if (!(s * (D - D0) > 0))
+        continue;
+      arb_set_d (x + 0, L0), arb_set_d (x + 1, D0), arb_set_d (x + 2, V0);
+      arb_set_d (x + 3, Om0), arb_set_d (x + 4, D);
+      int rc = leg_eval (x, th, ta, 1);
+      if (rc != ORC_OK)
+        {
+          n_oracle_fail++;
+          printf ("# oracle: leg failed (%d): L0=%a D0=%a V0=%a Omega0=%a "
+                  "D=%a\n", rc, L0, D0, V0, Om0, D);
+          continue;
+        }
+      n_legs++;
+      /* 1 - H^2/(2E): how close the motion is to the spinning condition,
+         for a leg through l = 0 (from l0 to l(D) = L0 + D) */
+      arb_add (t, x + 0, x + 4, hp);
+      int crossing = s0 * arf_sgn (arb_midref (t)) <= 0;
+      arb_sqr (qrel, H, hp);
+      arb_div (qrel, qrel, E2, hp);
+      arb_sub_ui (qrel, qrel, 1, hp);
+      arb_neg (qrel, qrel);
+      /* V(D)^2/(2E), exactly: how close the end is to a turning point */
+      arb_add (t, x + 0, x + 4, hp);
+      arb_sqr (t, t, hp);
+      arb_add_ui (t, t, 1, hp);
+      arb_sqr (v2, H, hp);
+      arb_div (v2, v2, t, hp);
+      arb_sub (v2, E2, v2, hp);
+      arb_div (v2, v2, E2, hp);
+      /* condition number with respect to the five inputs */
+      double kth = 0, kta = 0;
+      for (int j = 0; j < 5; j++)
+        {
+          /* a step that crosses the turning point is retried the other
+             way, then smaller */
+          double d = FD_STEP;
+          int rk = ORC_BAD;
+          for (int tries = 0; tries < 4 && rk != ORC_OK; tries++)
+            {
+              d = tries == 0 ? FD_STEP : tries == 1 ? -FD_STEP
+                : tries == 2 ? FD_STEP * 0x1p-60 : -FD_STEP * 0x1p-60;
+              _arb_vec_set (y, x, 5);
+              perturbed (y + j, x + j, d);
+              rk = leg_eval (y, th1, ta1, 0);
+            }
+          if (rk == ORC_OK)
+            kth += kappa_fd (th1, th, d), kta += kappa_fd (ta1, ta, d);
+          else
+            {
+              n_oracle_fail++;
+              printf ("# oracle: perturbed leg (input %d) failed: L0=%a "
+                      "D0=%a V0=%a Omega0=%a D=%a\n", j, L0, D0, V0, Om0, D);
+            }
+        }
+      kappa_max[set] = fmax (kappa_max[set], fmax (kth, kta));
+      for (int me = 0; me < NM; me++)
+        {
+          double dth, dta;
+          if (!use_method[me])
+            continue;
+          snprintf (point, sizeof point, "heading (%a, %a, %a, %a, %a)", L0,
+                    D0, V0, Om0, D);
+          int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D, &opt_of[me],
+                                              &dth, &dta);
+          if (r == CHAPLYGIN_ESTATE
+              && (mid_d (v2) < 16 * DBL_EPSILON
+                  || (crossing && fabs (mid_d (qrel)) < 16 * DBL_EPSILON)))
+            {
+              /* D within rounding (16 eps in V^2/2E) of the turning point,
+                 or a leg through l = 0 within rounding (16 eps in
+                 1 - H^2/(2E)) of the spinning condition 2E = H^2:
+                 rejecting it is the decision for inputs perturbed by a
+                 few eps (backward stable); counted, not an error */
+              n_reject_rounding[me]++;
+              continue;
+            }
+          if (r == CHAPLYGIN_ENOCONV && me == M_ODE)
+            {
+              n_ode_declined++;   /* documented: see the ODE method */
+              continue;
+            }
+          if (r != CHAPLYGIN_SUCCESS)
+            {
+              n_lib_fail++;
+              printf ("# %s leg failed (%s): L0=%a Delta=%a D0=%a V0=%a "
+                      "Omega0=%a D=%a\n", mname[me], chaplygin_strerror (r),
+                      L0, Delta, D0, V0, Om0, D);
+              continue;
+            }
+          record (me, Q_LTH, set, ulp_err (dth, th), tol_ulps (me, kth), kth);
+          record (me, Q_LTAU, set, ulp_err (dta, ta), tol_ulps (me, kta), kta);
+        }
+    }
+  _arb_vec_clear (x, 5), _arb_vec_clear (y, 5);
+  arb_clear (th), arb_clear (ta), arb_clear (th1), arb_clear (ta1);
+  arb_clear (E2), arb_clear (H), arb_clear (l0), arb_clear (lf), arb_clear (t);
+  arb_clear (m), arb_clear (Dc), arb_clear (v2), arb_clear (qrel);
+}
+
+static void
+sref_init (sref *r)
+{
+  arb_init (r->E), arb_init (r->H), arb_init (r->dth), arb_init (r->dta);
+  arb_init (r->Dc);
+}
+
+static void
+sref_clear (sref *r)
+{
+  arb_clear (r->E), arb_clear (r->H), arb_clear (r->dth), arb_clear (r->dta);
+  arb_clear (r->Dc);
+}
+
+static int
+step_eval (double L0, double Delta, int dir, const arb_t E, const arb_t H,
+           sref *r, int with_legendre)
+{
+  int rc = ORC_INACC;
+  for (slong prec = PREC0; prec <= PREC_MAX && rc == ORC_INACC; prec *= 2)
+    rc = step_oracle (L0, Delta, dir, E, H, r, with_legendre, prec);
+  return rc;
+}
+
+/* theta' or tau' = x + dx: the reference y, and its condition number
+   (|x| + |dx| kappa_dx)/|y| with respect to x and the state. */
+static double
+sum_ref (arb_t y, double x, const arb_t dx, double kappa_dx)
+{
+  arb_t t;
+  arb_init (t);
+  arb_set_d (t, x);
+  arb_add (y, t, dx, 4 * PREC_MAX);
+  double k = (fabs (x) + fabs (mid_d (dx)) * kappa_dx) / fabs (mid_d (y));
+  arb_clear (t);
+  return k;
+}
+
+/* Orbits of the return map through chaplygin_discrete_step: each step is
+   compared with the oracle started from the library's own input state. */
+static void
+run_steps (int set, int n, int nsteps, unsigned long long *seed)
+{
+  sref r, r1;
+  arb_t Ea, Ha, t, y;
+  sref_init (&r), sref_init (&r1);
+  arb_init (Ea), arb_init (Ha), arb_init (t), arb_init (y);
+  for (int i = 0; i < n; i++)
+    {
+      double L0, Delta, E, H;
+      int dir;
+      chaplygin_discrete sys;
+      gen_params (set, seed, &L0, &Delta);
+      gen_state (set, seed, L0, Delta, &dir, &E, &H);
+      if (chaplygin_discrete_init (&sys, L0, Delta) != CHAPLYGIN_SUCCESS)
+        {
+          n_lib_fail++;
+          continue;
+        }
+      chaplygin_discrete_state in[NM];
+      for (int me = 0; me < NM; me++)
+        in[me] = (chaplygin_discrete_state) { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } };
+      int alive[NM] = { 1, 1, 1 };
+      for (int k = 0; k < nsteps; k++)
+        for (int me = 0; me < NM; me++)
+          {
+            chaplygin_discrete_state out;
+            chaplygin_discrete_event ev;
+            if (!use_method[me] || !alive[me])
+              continue;
+            /* later steps follow the closed form's orbit only */
+            if (me != M_CF && k > 0)
+              continue;
+            const chaplygin_discrete_state *s = &in[me];
+            arb_set_d (Ea, s->E);
+            arb_set_d (Ha, s->H);
+            int rc = step_eval (L0, Delta, s->dir, Ea, Ha, &r, me == M_CF);
+            int rl = chaplygin_discrete_step (&sys, s, CHAPLYGIN_WANT_ALL,
+                                              &opt_of[me], &out, &ev);
+            if (rc == ORC_SPIN || rl == CHAPLYGIN_ESPIN)
+              {
+                if (rc == ORC_SPIN && rl == CHAPLYGIN_ESPIN)
+                  n_spin_ok++;
+                else
+                  n_spin_bad++;
+                alive[me] = 0;
+                continue;
+              }
+            if (rc != ORC_OK)
+              {
+                n_oracle_fail++;
+                printf ("# oracle: step failed (%d): L0=%a Delta=%a dir=%d "
+                        "E=%a H=%a\n", rc, L0, Delta, s->dir, s->E, s->H);
+                alive[me] = 0;
+                continue;
+              }
+            if (rl == CHAPLYGIN_ENOCONV && me == M_ODE)
+              {
+                n_ode_declined++;
+                alive[me] = 0;
+                continue;
+              }
+            if (rl != CHAPLYGIN_SUCCESS)
+              {
+                n_lib_fail++;
+                printf ("# %s step failed (%s): L0=%a Delta=%a dir=%d E=%a "
+                        "H=%a\n", mname[me], chaplygin_strerror (rl), L0,
+                        Delta, s->dir, s->E, s->H);
+                alive[me] = 0;
+                continue;
+              }
+            if (ev.reversal != r.reversal
+                || out.dir != (r.reversal ? -s->dir : s->dir))
+              {
+                n_mismatch++;
+                printf ("# %s step: reversal %d, oracle %d: L0=%a Delta=%a "
+                        "dir=%d E=%a H=%a\n", mname[me], ev.reversal,
+                        r.reversal, L0, Delta, s->dir, s->E, s->H);
+                alive[me] = 0;
+                continue;
+              }
+            if (me == M_CF)
+              n_steps++, n_reversals += r.reversal;
+            snprintf (point, sizeof point, "step (L0 %a, Delta %a, dir %d, "
+                      "E %a, H %a, theta %a, tau %a)", L0, Delta, s->dir, s->E,
+                      s->H, s->theta, s->tau);
+            /* condition numbers with respect to E and H */
+            double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0;
+            for (int j = 0; j < 2; j++)
+              {
+                perturbed (t, j ? Ha : Ea, FD_STEP);
+                if (step_eval (L0, Delta, s->dir, j ? Ea : t, j ? t : Ha,
+                               &r1, 0) != ORC_OK || r1.reversal != r.reversal)
+                  {
+                    n_oracle_fail++;
+                    printf ("# oracle: perturbed step (input %d) failed\n",
+                            j);
+                    continue;
+                  }
+                kE += kappa_fd (r1.E, r.E, FD_STEP);
+                kH += kappa_fd (r1.H, r.H, FD_STEP);
+                kth += kappa_fd (r1.dth, r.dth, FD_STEP);
+                kta += kappa_fd (r1.dta, r.dta, FD_STEP);
+                if (r.reversal)
+                  kDc += kappa_fd (r1.Dc, r.Dc, FD_STEP);
+              }
+            record (me, Q_E, set, ulp_err (out.E, r.E), tol_ulps (me, kE), kE);
+            record (me, Q_H, set, ulp_err (out.H, r.H), tol_ulps (me, kH), kH);
+            double kq = sum_ref (y, s->theta, r.dth, kth);
+            record (me, Q_THETA, set, ulp_err (out.theta, y), tol_ulps (me, kq),
+                    kq);
+            kq = sum_ref (y, s->tau, r.dta, kta);
+            record (me, Q_TAU, set, ulp_err (out.tau, y), tol_ulps (me, kq), kq);
+            if (r.reversal)
+              record (me, Q_DC, set, ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc),
+                      kDc);
+            kappa_max[set] = fmax (kappa_max[set],
+                                   fmax (fmax (kE, kH), fmax (kth, kta)));
+            in[me] = out;
+          }
+    }
+  sref_clear (&r), sref_clear (&r1);
+  arb_clear (Ea), arb_clear (Ha), arb_clear (t), arb_clear (y);
+}
+
+/* sigma4, xi4, C1, C2 on the parameter sets, with their condition
+   numbers with respect to L0 and Delta. */
+static void
+run_params (int set, int n, unsigned long long *seed)
+{
+  arb_ptr x = _arb_vec_init (2), y = _arb_vec_init (2);
+  arb_t C1, C2, xi, C1b, C2b, xib;
+  arb_init (C1), arb_init (C2), arb_init (xi);
+  arb_init (C1b), arb_init (C2b), arb_init (xib);
+  for (int i = 0; i < n; i++)
+    {
+      double L0, Delta, c1, c2, s4, xil;
+      gen_params (set, seed, &L0, &Delta);
+      double Vs = rsign (seed) * tap_uniform (seed, 0.1, 3);
+      arb_set_d (x + 0, L0);
+      arb_set_d (x + 1, Delta);
+      n_params++;
+      for (int rev = 0; rev < 2; rev++)
+        for (int e = 0; e < 2; e++)
+          {
+            double Dp = e ? Delta : 0.0;
+            snprintf (point, sizeof point, "(L0 %a, Delta %a, D+ %a, reversal "
+                      "%d, V* %a)", L0, Delta, Dp, rev, Vs);
+            if (param_eval (x + 0, x + 1, e, rev, Vs, C1, C2, xi) != ORC_OK)
+              {
+                n_oracle_fail++;
+                continue;
+              }
+            double k1 = 0, k2 = 0, kx = 0;
+            for (int j = 0; j < 2; j++)
+              {
+                _arb_vec_set (y, x, 2);
+                perturbed (y + j, x + j, FD_STEP);
+                if (param_eval (y + 0, y + 1, e, rev, Vs, C1b, C2b, xib)
+                    != ORC_OK)
+                  {
+                    n_oracle_fail++;
+                    continue;
+                  }
+                k1 += kappa_fd (C1b, C1, FD_STEP);
+                k2 += kappa_fd (C2b, C2, FD_STEP);
+                if (!rev && arb_is_positive (C2))
+                  kx += kappa_fd (xib, xi, FD_STEP);
+              }
+            if (chaplygin_discrete_coefficients (L0, Delta, Dp, rev, &c1, &c2)
+                != CHAPLYGIN_SUCCESS)
+              {
+                n_lib_fail++;
+                continue;
+              }
+            record (M_CF, Q_C1, set, ulp_err (c1, C1), tol_ulps (M_CF, k1), k1);
+            record (M_CF, Q_C2, set, ulp_err (c2, C2), tol_ulps (M_CF, k2), k2);
+            if (rev)
+              continue;
+            /* sigma4 = C2 of the segment without reversal in the direction
+               of V*: D+ = 0 for V* > 0, Delta for V* < 0 */
+            int dir = e ? -1 : 1;
+            if (chaplygin_discrete_sigma4 (L0, Delta, dir, &s4, NULL)
+                != CHAPLYGIN_SUCCESS)
+              {
+                n_lib_fail++;
+                continue;
+              }
+            record (M_CF, Q_SIG, set, ulp_err (s4, C2), tol_ulps (M_CF, k2), k2);
+            if ((Vs > 0) != (dir > 0))
+              continue;
+            /* xi4 = log(sigma4)/tau*, tau* = Delta/|V*|: not real for
+               sigma4 <= 0 (CHAPLYGIN_EDOM) */
+            int rx = chaplygin_discrete_xi4 (L0, Delta, Vs, &xil);
+            if (!arb_is_positive (C2))
+              {
+                if (rx != CHAPLYGIN_EDOM)
+                  n_lib_fail++;
+                continue;
+              }
+            if (rx != CHAPLYGIN_SUCCESS)
+              {
+                n_lib_fail++;
+                continue;
+              }
+            record (M_CF, Q_XI, set, ulp_err (xil, xi), tol_ulps (M_CF, kx), kx);
+          }
+    }
+  _arb_vec_clear (x, 2), _arb_vec_clear (y, 2);
+  arb_clear (C1), arb_clear (C2), arb_clear (xi);
+  arb_clear (C1b), arb_clear (C2b), arb_clear (xib);
+}
+
+/* ------------------------------------------------------------------ */
+/* Report                                                              */
+/* ------------------------------------------------------------------ */
+
+static int
+quantity_sets (int q, int set)
+{
+  /* parameter quantities have no state: the state sets do not apply */
+  return !(q >= Q_SIG && ill (set));
+}
+
+static void
+tap_report (int me)
+{
+  for (int q = 0; q < NQ; q++)
+    for (int s = 0; s < NS; s++)
+      {
+        const stat_t *x = &st[me][q][s];
+        if (!quantity_sets (q, s) || (me != M_CF && x->n == 0))
+          continue;
+        /* every closed-form table entry must have points, except D_c where
+           a set may happen to have no reversal */
+        tap_check ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio, 1.0,
+                   "%s, %s, %s: %ld points (%ld with kappa > 2, max kappa "
+                   "%.3g), max %.3g ulps, mean %.2f; error / %s ulps",
+                   mname[me], qname[q], sname[s], x->n, x->nill, x->kmax,
+                   x->max, x->n ? x->sum / x->n : 0.0,
+                   me == M_CF ? "max(16, 8 kappa)" : "(20 tol/eps (1 + kappa))");
+        if (!((x->n > 0 || q == Q_DC) && x->ratio <= 1))
+          printf ("# worst: %s\n", x->worst);
+      }
+}
+
+static void
+texi_row (FILE *f, const char *what, const stat_t *x)
+{
+  fprintf (f, "@item %s @tab %ld @tab %.3g @tab %.3g @tab %.3g\n", what, x->n,
+           x->max, x->sum / x->n, x->kmax);
+}
+
+static int
+write_table (const char *path, int level)
+{
+  FILE *f = fopen (path, "w");
+  if (!f)
+    return 1;
+  fprintf (f,
+"@c accuracy.texi -- chapter \"Accuracy tables\".\n"
+"@c Generated by verification/oracle --table (level %d): do not edit.\n"
+"@c Part of the chaplygin manual; see chaplygin.texi for copying conditions.\n"
+"\n"
+"@node Accuracy tables\n"
+"@chapter Accuracy tables\n"
+"@cindex accuracy tables\n"
+"@cindex ulps, errors in\n"
+"@cindex oracle, Arb\n"
+"\n"
+"This chapter was generated by the verification program\n"
+"@file{verification/oracle.c}, run from the build directory as\n"
+"\n"
+"@example\n"
+"%sverification/oracle --table doc/accuracy.texi\n"
+"@end example\n"
+"\n"
+"@noindent\n"
+"(@code{make check} runs the same program at level 1, with fewer points,\n"
+"and checks the same bounds).  It compares the library with reference\n"
+"values computed in Arb ball arithmetic from the model alone, sharing no\n"
+"formula with the library: the heading and time between collisions as\n"
+"the integrals @math{Int |Omega/V| |dD|} and @math{Int |dD|/|V|}, with\n"
+"@math{V} and @math{Omega} from the conserved @math{E} (3.3) and @math{H}\n"
+"(3.4), evaluated by rigorous Gauss--Legendre quadrature\n"
+"(@code{acb_calc_integrate}) after a substitution that removes the\n"
+"inverse-square-root singularity at a turning point, and checked against\n"
+"Legendre's integrals in Arb; the collisions by conservation of angular\n"
+"momentum about the new peg; @math{sigma_4} as @math{dH'/dH} of the\n"
+"collision at a fixed point, and @math{xi_4 = log(sigma_4)/tau^*} with\n"
+"@math{tau^* = Delta/|V^*|}.  Every reference value carries at least 64\n"
+"correct bits.\n"
+"\n"
+"The error of a result @math{x} is @math{|x - x_ref|/ulp(x_ref)}, with\n"
+"@math{ulp(y) = 2^(e-52)} for @math{2^e <= |y| < 2^(e+1)}, for the exact\n"
+"double inputs of the call: a correctly rounded result has an error of\n"
+"at most 0.5.  @math{kappa} is the condition number of the quantity with\n"
+"respect to those inputs (@math{E} and @math{H} for the return map;\n"
+"@math{L_0}, @math{D_0}, @math{V_0}, @math{Omega_0} and @math{D} for a\n"
+"leg; @math{theta} or @math{tau} as well for @math{theta'} and\n"
+"@math{tau'}), computed by the oracle: where it is large the exact result\n"
+"for the double inputs moves by @math{kappa eps} relative when they move\n"
+"by an ulp, and no double-precision algorithm can be expected to do much\n"
+"better than that.  The checks of the program require an error of at most\n"
+"@math{max(16, 8 kappa)} ulps for the closed form.  The return map is\n"
+"followed for 4 collisions from each start on the sets other than\n"
+"near-reversal and near-spinning, each step compared from the library's\n"
+"own input state; for one collision on those two.  The parameter\n"
+"quantities (@math{sigma_4}, @math{xi_4}, @math{C_1}, @math{C_2}) have no\n"
+"state, and the two state sets do not apply to them.  The data sets (fixed\n"
+"seeds):\n"
+"\n"
+"@table @asis\n"
+"@item ordinary\n"
+"@math{L_0} in @math{[-3, 2]}, @math{Delta} in @math{[0.1, 3]},\n"
+"@math{|V|} in @math{[0.05, 2]}, @math{|Omega| sqrt(1 + l^2)} in\n"
+"@math{[0.05, 2]}, and 30%% of the states built with a turning point inside\n"
+"the slot; for legs also starts inside the slot, and ends 5%% to 95%% of the\n"
+"way to the far end or 5%% to 75%% of the way to a turning point.\n"
+"@item near-reversal\n"
+"a turning point within @math{10^(-15)} to @math{10^(-6)} @math{Delta}\n"
+"of the far end of the slot, on either side: the segment reverses just\n"
+"before the far end, or just fails to; legs end at the far end or at\n"
+"the last double before the turning point.\n"
+"@item near-spinning\n"
+"@math{2E/H^2 = 1 + epsilon}, @math{10^(-15) <= |epsilon| <= 10^(-8)},\n"
+"the mass centre inside the slot: the motion passes the spinning point\n"
+"@math{l = 0} of (3.8) at a tiny speed, or turns just before it; one\n"
+"state in ten has @math{epsilon = 0} exactly and must be reported as\n"
+"spinning (@code{CHAPLYGIN_ESPIN}), which is not in the tables.\n"
+"@item tiny @math{Delta}\n"
+"@math{Delta} in @math{[10^(-12), 10^(-6)]} (log-uniform), otherwise\n"
+"ordinary.\n"
+"@item huge @math{Delta}\n"
+"@math{Delta} in @math{[10^3, 10^6]} (log-uniform), @math{L_0} in\n"
+"@math{[-3, 2]} or @math{L_0/Delta} in @math{[-1.5, 0.5]}.\n"
+"@item large @math{|L_0|}\n"
+"@math{|L_0|} in @math{[10^3, 10^12]} or @math{[10^3, 10^100]}\n"
+"(log-uniform, either sign), @math{Delta} in @math{[0.1, 3]}, 30%% of the\n"
+"states with a turning point in the slot (only possible for\n"
+"@math{|L_0|} below about @math{10^12}: @math{E} and @math{H} are\n"
+"doubles).\n"
+"@end table\n"
+"\n", level, level == 2 ? "CHAPLYGIN_VERIFY_LEVEL=2 " : "");
+  for (int q = 0; q < NQ; q++)
+    {
+      fprintf (f, "@subheading %s\n\n", qtexi[q]);
+      fprintf (f, "@multitable @columnfractions .28 .14 .2 .18 .2\n"
+               "@headitem Data set @tab Points @tab Max ulps @tab Mean ulps "
+               "@tab Max @math{kappa}\n");
+      for (int s = 0; s < NS; s++)
+        if (quantity_sets (q, s) && st[M_CF][q][s].n > 0)
+          texi_row (f, stexi[s], &st[M_CF][q][s]);
+      fprintf (f, "@end multitable\n\n");
+    }
+  for (int me = 1; me < NM; me++)
+    {
+      int any = 0;
+      for (int q = 0; q < NQ; q++)
+        for (int s = 0; s < NS; s++)
+          any += st[me][q][s].n > 0;
+      if (!any)
+        continue;
+      fprintf (f, "@subheading Method @code{%s}\n\n"
+               "The same legs, and the first step of each orbit, with the\n"
+               "method @code{%s} at @math{tol = 10^(-13)} (the checks allow\n"
+               "@math{20 (tol/eps)(1 + kappa)} ulps).\n\n",
+               me == M_QUAD ? "CHAPLYGIN_QUADRATURE" : "CHAPLYGIN_ODE",
+               me == M_QUAD ? "CHAPLYGIN_QUADRATURE" : "CHAPLYGIN_ODE");
+      for (int q = 0; q < NQ; q++)
+        {
+          int rows = 0;
+          for (int s = 0; s < NS; s++)
+            rows += st[me][q][s].n > 0;
+          if (!rows)
+            continue;
+          fprintf (f, "@noindent\n%s:\n\n"
+                   "@multitable @columnfractions .28 .14 .2 .18 .2\n"
+                   "@headitem Data set @tab Points @tab Max ulps @tab Mean "
+                   "ulps @tab Max @math{kappa}\n", qtexi[q]);
+          for (int s = 0; s < NS; s++)
+            if (st[me][q][s].n > 0)
+              texi_row (f, stexi[s], &st[me][q][s]);
+          fprintf (f, "@end multitable\n\n");
+        }
+    }
+  if (n_ode_declined || n_reject_rounding[M_CF])
+    fprintf (f, "@noindent\n"
+             "Not in the tables: %ld legs or steps that the ODE method\n"
+             "declined with @code{CHAPLYGIN_ENOCONV} (legs ending within its\n"
+             "integration error of a turning point, or needing more than\n"
+             "@math{10^5} steps), and %ld legs ending within rounding of a\n"
+             "turning point (@math{V(D)^2 < 16 eps 2E}), or through\n"
+             "@math{l = 0} within rounding of the spinning condition\n"
+             "(@math{|1 - H^2/(2E)| < 16 eps}), that\n"
+             "@code{chaplygin_discrete_heading} rejected with\n"
+             "@code{CHAPLYGIN_ESTATE} (closed form; %ld with quadrature).\n",
+             n_ode_declined, n_reject_rounding[M_CF], n_reject_rounding[M_QUAD]);
+  return fclose (f) != 0;
+}
+
+static double
+now (void)
+{
+  struct timespec ts;
+  clock_gettime (CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+int
+main (int argc, char **argv)
+{
+  const char *table = NULL;
+  for (int i = 1; i < argc; i++)
+    if (!strcmp (argv[i], "--table") && i + 1 < argc)
+      table = argv[++i];
+    else
+      {
+        fprintf (stderr, "usage: %s [--table FILE]\n", argv[0]);
+        return 2;
+      }
+  const int level = tap_level ();
+  /* points per data set: legs, orbits, parameter points */
+  const int nl = level == 2 ? 1600 : 40, no = level == 2 ? 400 : 10;
+  const int np = level == 2 ? 16000 : 400;
+  double t0 = now (), tl = 0, ts = 0, tp = 0;
+  for (int set = 0; set < NS; set++)
+    {
+      unsigned long long seed = 0x5eed0ac1eULL + 7919ULL * (unsigned) set;
+      double a = now ();
+      run_legs (set, nl, &seed);
+      double b = now ();
+      run_steps (set, ill (set) ? 2 * no : no, ill (set) ? 1 : 4, &seed);
+      double c = now ();
+      if (!ill (set))
+        run_params (set, np, &seed);
+      double d = now ();
+      tl += b - a, ts += c - b, tp += d - c;
+      printf ("# %-14s legs %.2f s, steps %.2f s, parameters %.2f s\n",
+              sname[set], b - a, c - b, d - c);
+    }
+  double total = now () - t0;
+  printf ("# level %d: %ld legs (%ld to turning points), %ld steps (%ld "
+          "reversals), %ld parameter points, %ld integrals, %.1f s\n", level,
+          n_legs, n_turning_legs, n_steps, n_reversals, n_params, n_integrals,
+          total);
+
+  n_oracle_fail += n_fd_inaccurate;
+  tap_check (n_oracle_fail == 0, n_oracle_fail, 0,
+             "oracle: every reference value reached %d correct bits "
+             "(at most %d bits of working precision)", MIN_BITS, PREC_MAX);
+  /* The two routes of the oracle share only the integrand's derivation;
+     both carry rigorous error bounds of 2^-64 relative at worst, so they
+     must agree to about 2^-63. */
+  tap_check (n_legendre > 0 && worst_legendre <= 0x1p-63, worst_legendre,
+             0x1p-63, "oracle: integration against Legendre's F and E "
+             "(%ld legs and segments, relative)", n_legendre);
+  tap_check (n_lib_fail == 0, n_lib_fail, 0,
+             "library calls succeeded wherever the motion is defined (not "
+             "counted as errors: %ld/%ld/%ld legs within rounding of a "
+             "turning point or of the spinning condition refused with "
+             "CHAPLYGIN_ESTATE by closed form/quadrature/ODE, %ld ODE legs "
+             "or steps declined with CHAPLYGIN_ENOCONV)", n_reject_rounding[M_CF],
+             n_reject_rounding[M_QUAD], n_reject_rounding[M_ODE],
+             n_ode_declined);
+  tap_check (n_mismatch == 0 && n_spin_bad == 0, n_mismatch + n_spin_bad, 0,
+             "reversal flags and directions as the oracle decides them exactly; "
+             "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
+             n_spin_ok);
+  for (int me = 0; me < NM; me++)
+    if (use_method[me])
+      tap_report (me);
+  if (table && write_table (table, level))
+    {
+      tap_check (0, 1, 0, "writing %s", table);
+    }
+  return tap_done ();
+}
