@@ -67,26 +67,13 @@ chp_motion_init (double E, double H, chp_motion *m)
   m->H = H;
   m->sqrt2E = sqrt (twoE);
   m->h = H / m->sqrt2E;
-  m->omh2 = omh2;
-  if (omh2 >= 0.0)
-    {
-      m->sp = 1.0;
-      m->sq = sqrt (omh2);
-      m->pmq = m->h * m->h;
-      m->theta_factor = m->h;
-    }
-  else
-    {
-      m->sp = fabs (m->h);
-      m->sq = sqrt (-omh2);
-      m->pmq = 1.0;
-      m->theta_factor = chp_sign (H);
-    }
+  chp_motion_set_omh2 (m, omh2);
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_motion_set_omh2: replace 1 - h^2 by a more accurate value and
-   derive sp, sq, pmq and theta_factor from it as chp_motion_init does. */
+/* chp_motion_set_omh2: set 1 - h^2 (finite: a non-finite value is
+   ignored) and derive sp, sq, pmq and theta_factor from it; used by
+   chp_motion_init and to replace its value by a more accurate one. */
 void
 chp_motion_set_omh2 (chp_motion *m, double omh2)
 {

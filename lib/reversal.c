@@ -116,15 +116,18 @@ chp_run_fate (const chp_run *run, const chp_motion *m)
   return CHP_FATE_PASS;
 }
 
-/* Validate the common arguments: L0, Delta, dir. */
+/* Validate the common arguments L0, Delta, dir and set up the run of
+   direction dir of that skate. */
 static int
-check_params (double L0, double Delta, int dir)
+run_from_params (double L0, double Delta, int dir, chp_run *run)
 {
   if (dir != 1 && dir != -1)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
-  return CHAPLYGIN_SUCCESS;
+  chaplygin_discrete sys;
+  CHP_TRY (chaplygin_discrete_init (&sys, L0, Delta));
+  return chp_run_init (&sys, dir, run);
 }
 
 /* chaplygin_discrete_ratio_lower_bound: (3.15)
@@ -143,11 +146,8 @@ chaplygin_discrete_ratio_lower_bound (double L0, double Delta, int dir,
 {
   if (!rmin)
     return CHAPLYGIN_EINVAL;
-  CHP_TRY (check_params (L0, Delta, dir));
-  chaplygin_discrete sys;
   chp_run run;
-  CHP_TRY (chaplygin_discrete_init (&sys, L0, Delta));
-  CHP_TRY (chp_run_init (&sys, dir, &run));
+  CHP_TRY (run_from_params (L0, Delta, dir, &run));
   *rmin = 1.0 / one_plus_sq_exact (run.ls, run.ls_err);
   return CHAPLYGIN_SUCCESS;
 }
@@ -176,11 +176,8 @@ chaplygin_discrete_reversal_range (double L0, double Delta, int dir,
 {
   if (!rlo || !rhi || !nonempty)
     return CHAPLYGIN_EINVAL;
-  CHP_TRY (check_params (L0, Delta, dir));
-  chaplygin_discrete sys;
   chp_run run;
-  CHP_TRY (chaplygin_discrete_init (&sys, L0, Delta));
-  CHP_TRY (chp_run_init (&sys, dir, &run));
+  CHP_TRY (run_from_params (L0, Delta, dir, &run));
   double lo = 1.0 / one_plus_sq_exact (run.ls, run.ls_err), hi = lo;
   if (run.toward)
     hi = run.crosses ? 1.0 : 1.0 / one_plus_sq_exact (run.lf, run.lf_err);
@@ -205,11 +202,8 @@ chaplygin_discrete_c3 (double L0, double Delta, int dir, double *C3)
 {
   if (!C3)
     return CHAPLYGIN_EINVAL;
-  CHP_TRY (check_params (L0, Delta, dir));
-  chaplygin_discrete sys;
   chp_run run;
-  CHP_TRY (chaplygin_discrete_init (&sys, L0, Delta));
-  CHP_TRY (chp_run_init (&sys, dir, &run));
+  CHP_TRY (run_from_params (L0, Delta, dir, &run));
   /* |Delta (2 L0 + Delta)| < 2^1003: finite */
   *C3 = dir * Delta * (run.s / one_plus_sq_exact (run.lf, run.lf_err));
   return CHAPLYGIN_SUCCESS;
