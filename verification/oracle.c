@@ -57,7 +57,7 @@
    near-reversal (a turning point within 1e-15..1e-6 Delta of the far end,
    either side), near-spinning (|2E/H^2 - 1| in 1e-15..1e-8, the mass
    centre in the slot), tiny Delta (1e-12..1e-6), huge Delta (1e3..1e6),
-   large |L0| (1e3..1e12 or ..1e100).  Quantities: the heading and time of
+   large |L0| (1e3..1e12 or ..1e100), tiny |L0| (1e-12..1e-3).  Quantities: the heading and time of
    a leg (chaplygin_discrete_heading), the next E, H, theta, tau of the
    return map and the turning point D_c of a reversing segment
    (chaplygin_discrete_step, 4 collisions per start, each compared from
@@ -825,7 +825,7 @@ ulp_err (double lib, const arb_t ref)
 enum
 { Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2, NQ };
 enum
-{ S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, NS };
+{ S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, S_SMALL, NS };
 enum
 { M_CF, M_QUAD, M_ODE, NM };
 
@@ -860,12 +860,12 @@ static const char *const qtexi[NQ] = {
 
 static const char *const sname[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny Delta", "huge Delta",
-  "large |L0|"
+  "large |L0|", "tiny |L0|"
 };
 
 static const char *const stexi[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny @math{Delta}",
-  "huge @math{Delta}", "large @math{|L_0|}"
+  "huge @math{Delta}", "large @math{|L_0|}", "tiny @math{|L_0|}"
 };
 
 static const char *const mname[NM] = {
@@ -1002,6 +1002,11 @@ gen_params (int set, unsigned long long *seed, double *L0, double *Delta)
                                         tap_uniform (seed, 0, 1) < 0.5 ? 12 : 100);
       *Delta = tap_uniform (seed, 0.1, 3);
       break;
+    case S_SMALL:               /* the front peg next to G: the leg starts
+                                   at (or turns near) l = 0 */
+      *L0 = rsign (seed) * log_uniform (seed, -12, -3);
+      *Delta = tap_uniform (seed, 0.1, 3);
+      break;
     default:
       *L0 = tap_uniform (seed, -3, 2);
       *Delta = tap_uniform (seed, 0.1, 3);
@@ -1057,9 +1062,15 @@ gen_state (int set, unsigned long long *seed, double L0, double Delta,
       lf = *dir > 0 ? L0 + Delta : L0;
       m = ls * lf <= 0 ? 0 : fmin (fabs (ls), fabs (lf));
       c = m + tap_uniform (seed, 0.02, 0.98) * (fabs (ls) - m);
-      *E = tap_uniform (seed, 0.2, 2);
-      *H = rsign (seed) * sqrt (2 * *E * (1 + c * c));
-      return;
+      /* doubles E, H place the turning point at c only to an absolute
+         ~eps/c: below c = 1e-6 (tiny |L0|) it could land beyond the start,
+         an impossible state; such starts get a speed instead */
+      if (c >= 1e-6)
+        {
+          *E = tap_uniform (seed, 0.2, 2);
+          *H = rsign (seed) * sqrt (2 * *E * (1 + c * c));
+          return;
+        }
     }
   double V = rsign (seed) * tap_uniform (seed, 0.05, 2);
   *dir = V > 0 ? 1 : -1;
@@ -1750,6 +1761,11 @@ write_table (const char *path, int level)
 "states with a turning point in the slot (only possible for\n"
 "@math{|L_0|} below about @math{10^12}: @math{E} and @math{H} are\n"
 "doubles).\n"
+"@item tiny @math{|L_0|}\n"
+"@math{|L_0|} in @math{[10^(-12), 10^(-3)]} (log-uniform, either sign),\n"
+"@math{Delta} in @math{[0.1, 3]}: the front peg next to the mass centre;\n"
+"turning points in the slot as for ordinary, where doubles @math{E} and\n"
+"@math{H} can place them (@math{c >= 10^(-6)}).\n"
 "@end table\n"
 "\n", level, level == 2 ? "CHAPLYGIN_VERIFY_LEVEL=2 " : "");
   for (int q = 0; q < NQ; q++)
@@ -1821,12 +1837,16 @@ int
 main (int argc, char **argv)
 {
   const char *table = NULL;
+  int only = -1;                /* --set K: data set K alone (diagnosis) */
   for (int i = 1; i < argc; i++)
     if (!strcmp (argv[i], "--table") && i + 1 < argc)
       table = argv[++i];
+    else if (!strcmp (argv[i], "--set") && i + 1 < argc)
+      only = atoi (argv[++i]);
     else
       {
-        fprintf (stderr, "usage: %s [--table FILE]\n", argv[0]);
+        fprintf (stderr, "usage: %s [--table FILE] [--set 0..%d]\n",
+                 argv[0], NS - 1);
         return 2;
       }
   const int level = tap_level ();
@@ -1836,6 +1856,8 @@ main (int argc, char **argv)
   double t0 = now (), tl = 0, ts = 0, tp = 0;
   for (int set = 0; set < NS; set++)
     {
+      if (only >= 0 && set != only)
+        continue;
       unsigned long long seed = 0x5eed0ac1eULL + 7919ULL * (unsigned) set;
       double a = now ();
       run_legs (set, nl, &seed);
