@@ -1,12 +1,16 @@
 /* chaplygin.c -- the command-line program of libchaplygin.
  *
+ *   chaplygin run SCENE.ini [-o FILE] [--compare] [--stats]
+ *                                 run a scene (scene.h, run.c)
+ *   chaplygin sweep SCENE.ini ... a parameter sweep (sweep.c)
  *   chaplygin skate [OPTION...]   iterate the discrete skate's return map
  *   chaplygin --help | -h         usage
  *   chaplygin --version           version
  *
- * Exit status: 0 success; 1 a library failure during the iteration (or a
- * write error); 2 a usage error (unknown option or subcommand, missing or
- * bad value).  Every message goes to stderr as "chaplygin: <what>".
+ * Exit status: 0 success; 1 a library failure during the run (or a write
+ * error); 2 a usage error (unknown option or subcommand, missing or bad
+ * value, an invalid scene).  Every message goes to stderr as
+ * "chaplygin: <what>".
  *
  * The options are parsed by hand (no getopt state): an option is given as
  * "--name value" or "--name=value"; the value may begin with '-' (so
@@ -22,6 +26,9 @@
 #include <string.h>
 
 #include "chaplygin.h"
+#include "run.h"
+#include "scene.h"
+#include "sweep.h"
 
 enum exit_code
 {
@@ -33,17 +40,92 @@ enum exit_code
 #define COLLISIONS_MAX 100000000L
 
 static const char usage_text[] =
-  "Usage: chaplygin skate [OPTION...]\n"
+  "Usage: chaplygin run SCENE.ini [-o FILE] [--compare] [--stats]\n"
+  "       chaplygin sweep SCENE.ini [--shard i/N] [--threads N] [-o FILE]\n"
+  "       chaplygin skate [OPTION...]\n"
   "       chaplygin --help | -h\n"
   "       chaplygin --version\n"
   "\n"
   "The discrete Chaplygin sleigh of M. J. Coleman and P. Holmes, Regular and\n"
-  "Chaotic Dynamics 4(2), 1999.  All quantities are nondimensional (lengths\n"
-  "in units of the radius of gyration, speeds in units of v0).\n"
+  "Chaotic Dynamics 4(2), 1999.  All quantities are nondimensional: lengths\n"
+  "in units of the radius of gyration rho (the massless skate: of the slot\n"
+  "length), speeds in units of v0, time in units of rho/v0.\n"
   "\n"
   "Subcommands:\n"
+  "  run        run a scene file: a discrete, smooth or massless sleigh from\n"
+  "             an initial state (or the scene's sweep), CSV on stdout\n"
+  "  sweep      the parameter sweep of a scene's [sweep] section (Figures 2,\n"
+  "             3), in parallel or in shards ('chaplygin sweep --help')\n"
   "  skate      iterate the discrete skate's return map (B.3)/(B.4) from a\n"
-  "             post-collision state and print one CSV row per collision\n"
+  "             post-collision state given by options (below)\n"
+  "\n"
+  "Options of run:\n"
+  "  -o FILE    write the CSV to FILE, created only once the scene is read\n"
+  "  --compare  run the scene's smooth companion (compare = smooth) instead\n"
+  "  --stats    print on stderr what was computed: return-map steps, heading\n"
+  "             and time evaluations, closed-form evaluations (smooth), path\n"
+  "             quadratures (smooth)\n"
+  "\n"
+  "Scene files ('man chaplygin' has the full reference), INI:\n"
+  "  [scene]       model = discrete | smooth | massless  (required)\n"
+  "                compare = smooth (discrete), title = TEXT\n"
+  "  [parameters]  L0 (discrete, massless), Delta > 0 (discrete),\n"
+  "                L (smooth, and the companion)\n"
+  "  [initial]     V (!= 0 for the skates: V > 0 peg at the slot front D = 0,\n"
+  "                V < 0 at the rear D = Delta), Omega, theta (default 0)\n"
+  "  [run]         collisions (discrete, massless), duration (smooth, the\n"
+  "                companion), samples, outputs, method (discrete:\n"
+  "                closed-form | quadrature | ode), tolerance\n"
+  "  [sweep]       kind = sigma4 | stability | basins, and its grid\n"
+  "The first peg (the smooth skate's contact point C) is at the origin at\n"
+  "tau = 0.  outputs is a comma-separated list of E, H, theta, tau, peg, V,\n"
+  "Omega, path, G (default E,H,theta,tau,peg for the skates,\n"
+  "V,Omega,theta,E,H,tau for smooth).  Only what it names is computed:\n"
+  "without theta, tau, peg, path, G the map runs on E and H alone (no\n"
+  "elliptic integral, quadrature or integration).\n"
+  "\n"
+  "Output of run: CSV, a header line, numbers with %.17g (they round-trip).\n"
+  "The fixed columns come first, then the requested outputs, always in the\n"
+  "order E,H,theta,tau,peg,V,Omega,path,G, whatever the order in the scene.\n"
+  "\n"
+  "Per collision (discrete, massless; no samples, or samples = 0):\n"
+  "  n,D,reversal[,E][,H][,theta][,tau][,peg_x,peg_y][,V][,Omega][,x,y][,G_x,G_y]\n"
+  "  one row per collision: row 0 the initial state, row n the state just\n"
+  "  after collision n (n = 0..collisions).\n"
+  "  n          collision number\n"
+  "  D          post-collision peg position in the slot: 0 (V > 0) or Delta\n"
+  "             (V < 0; massless: 1)\n"
+  "  reversal   1 if V changed sign in the segment ending at this collision\n"
+  "  E          energy (3.3) (massless: (3.3) at rho = 0)\n"
+  "  H          angular momentum about the peg (3.4)\n"
+  "  theta      heading: the slot points along (cos theta, sin theta)\n"
+  "  tau        time\n"
+  "  peg_x,peg_y  the current peg\n"
+  "  V, Omega   V+ and Omega+ just after the collision\n"
+  "  x,y        the slot front: peg + D (cos theta, sin theta)\n"
+  "  G_x,G_y    the mass centre: peg + (L0 + D) (cos theta, sin theta)\n"
+  "\n"
+  "Dense (discrete, massless; samples = N > 0):\n"
+  "  n,k,reversal,tau,D[,E][,H][,theta][,peg_x,peg_y][,V][,Omega][,x,y][,G_x,G_y]\n"
+  "  for each segment n = 1..collisions, from just after collision n-1 to\n"
+  "  just before collision n: k = 0 its start, then N samples equally spaced\n"
+  "  in D, then its end (the largest k); so V and Omega jump between two\n"
+  "  rows with the same tau.  A reversing segment (reversal = 1) has\n"
+  "  floor(N/2) samples on the way out, the turning point (V = 0), the same\n"
+  "  D values on the way back, and its end.  tau is always computed (the\n"
+  "  outputs' tau is the fixed column); E, H, peg are the segment's\n"
+  "  (constant); the other columns as above at each sample.  No rows for\n"
+  "  collisions = 0.\n"
+  "\n"
+  "Smooth (model = smooth, and run --compare):\n"
+  "  S,tau[,E][,H][,theta][,V][,Omega][,x,y][,G_x,G_y]\n"
+  "  samples + 1 rows equally spaced in time from tau = 0 to tau = duration\n"
+  "  (samples intervals, at least 1, default 200; the companion: max(samples,\n"
+  "  200)).  S is the arc length of the path of the contact point C; H is\n"
+  "  about C, (A.4); x,y is C (by quadrature of dC/dtau = V (cos theta,\n"
+  "  sin theta)); G = C + L (cos theta, sin theta).  peg is no output here.\n"
+  "\n"
+  "A scene with a [sweep] section prints the sweep's CSV (see sweep --help).\n"
   "\n"
   "Options of skate (NUMBER: a finite real accepted by strtod):\n"
   "  --L0 NUMBER        mass centre ahead of the slot front       [1]\n"
@@ -62,27 +144,14 @@ static const char usage_text[] =
   "  -h, --help         print this text and exit\n"
   "The defaults are the set-up of the paper's Figure 6.  The initial peg is\n"
   "at the origin of the plane and the initial time is 0.  A value may be\n"
-  "given as \"--name value\" or \"--name=value\".\n"
-  "\n"
-  "Output of skate: CSV on stdout, the header line\n"
+  "given as \"--name value\" or \"--name=value\".  The output of skate is that\n"
+  "of run per collision with outputs = E,H,theta,tau,peg:\n"
   "  n,D,reversal,E,H,theta,tau,peg_x,peg_y\n"
-  "then one row per collision, row 0 the initial state and row n >= 1 the\n"
-  "state just after collision n:\n"
-  "  n         collision number\n"
-  "  D         post-collision peg position in the slot: 0 (V > 0) or Delta\n"
-  "            (V < 0)\n"
-  "  reversal  1 if V changed sign in the segment ending at this collision,\n"
-  "            else 0 (always 0 in row 0)\n"
-  "  E         energy (3.3)\n"
-  "  H         angular momentum about the peg (3.4)\n"
-  "  theta     heading\n"
-  "  tau       time\n"
-  "  peg_x, peg_y  position of the current peg in the plane\n"
-  "Numbers are printed with %.17g and round-trip exactly.\n"
   "\n"
-  "Exit status: 0 success; 1 the map failed at some collision (e.g. the\n"
-  "motion ends in the spinning equilibrium; the rows before stay printed);\n"
-  "2 a usage error.\n";
+  "Exit status: 0 success; 1 the library failed during the run (e.g. the\n"
+  "motion ends in the spinning equilibrium; the rows before stay written),\n"
+  "or writing failed; 2 a usage error or an invalid scene (the message names\n"
+  "the file, the line, the [section] and key).\n";
 
 /* The settings of "skate".  The *_arg strings are the text given on the
    command line, for messages (NULL: the default). */
@@ -427,6 +496,134 @@ run_skate (int argc, char **argv)
   return finish_output ();
 }
 
+/* The arguments of "run". */
+typedef struct
+{
+  const char *scene_path;
+  const char *output;           /* NULL: stdout */
+  int compare, stats;
+} run_args;
+
+/* Parse the arguments of "run" (ARGV[0] is the first one after the
+   subcommand): one scene file, -o FILE (or --output FILE, --output=FILE,
+   -oFILE), --compare, --stats, in any order; "--" ends the options.
+   Returns -1 to go on, or an exit code (after --help or a message). */
+static int
+parse_run (int argc, char **argv, run_args *args)
+{
+  int options_done = 0;
+  for (int i = 0; i < argc; i++)
+    {
+      const char *arg = argv[i];
+      if (!options_done && arg[0] == '-' && arg[1] != '\0')
+        {
+          if (strcmp (arg, "--") == 0)
+            options_done = 1;
+          else if (strcmp (arg, "--help") == 0 || strcmp (arg, "-h") == 0)
+            return print_help ();
+          else if (strcmp (arg, "--compare") == 0)
+            args->compare = 1;
+          else if (strcmp (arg, "--stats") == 0)
+            args->stats = 1;
+          else if (strcmp (arg, "-o") == 0 || strcmp (arg, "--output") == 0)
+            {
+              if (i + 1 >= argc)
+                {
+                  fprintf (stderr, "chaplygin: run: option '%s' requires a "
+                           "file name\n", arg);
+                  usage_hint ();
+                  return EXIT_USAGE;
+                }
+              args->output = argv[++i];
+            }
+          else if (strncmp (arg, "--output=", 9) == 0)
+            args->output = arg + 9;
+          else if (strncmp (arg, "-o", 2) == 0)
+            args->output = arg + 2;
+          else
+            {
+              fprintf (stderr, "chaplygin: run: unknown option '%s'\n", arg);
+              usage_hint ();
+              return EXIT_USAGE;
+            }
+          if (args->output && *args->output == '\0')
+            {
+              fprintf (stderr, "chaplygin: run: empty output file name\n");
+              return EXIT_USAGE;
+            }
+          continue;
+        }
+      if (args->scene_path)
+        {
+          fprintf (stderr, "chaplygin: run: unexpected argument '%s' (one "
+                   "scene file only)\n", arg);
+          usage_hint ();
+          return EXIT_USAGE;
+        }
+      args->scene_path = arg;
+    }
+  if (!args->scene_path)
+    {
+      fputs ("chaplygin: run: missing scene file\n", stderr);
+      usage_hint ();
+      return EXIT_USAGE;
+    }
+  return -1;
+}
+
+/* "chaplygin run": load the scene, open the output, run. */
+static int
+run_scene (int argc, char **argv)
+{
+  run_args args = { NULL, NULL, 0, 0 };
+  int rc = parse_run (argc, argv, &args);
+  if (rc >= 0)
+    return rc;
+
+  static scene sc;              /* large: keep it off the stack */
+  char err[SCENE_ERRLEN];
+  if (scene_load (args.scene_path, &sc, err, sizeof err) != 0)
+    {
+      fprintf (stderr, "chaplygin: %s\n", err);
+      return EXIT_USAGE;
+    }
+
+  FILE *out = stdout;
+  if (args.output)
+    {
+      out = fopen (args.output, "w");
+      if (!out)
+        {
+          fprintf (stderr, "chaplygin: %s: %s\n", args.output,
+                   strerror (errno));
+          return EXIT_FAILURE_LIB;
+        }
+    }
+
+  run_stats stats;
+  memset (&stats, 0, sizeof stats);
+  rc = scene_run (&sc, args.scene_path, args.compare, out, &stats);
+
+  if (args.output)
+    {
+      if (fclose (out) != 0 && rc == EXIT_OK)
+        {
+          fprintf (stderr, "chaplygin: error writing to %s: %s\n",
+                   args.output, strerror (errno));
+          rc = EXIT_FAILURE_LIB;
+        }
+    }
+  else if (rc == EXIT_OK)
+    rc = finish_output ();
+
+  if (args.stats)
+    fprintf (stderr, "chaplygin: stats: steps=%lu, heading_evals=%lu, "
+             "closed_form_evals=%lu, path_quadratures=%lu\n", stats.steps,
+             stats.heading_evals, stats.closed_form_evals,
+             stats.path_quadratures);
+  return rc;
+}
+
 int
 main (int argc, char **argv)
 {
@@ -447,6 +644,10 @@ main (int argc, char **argv)
     }
   if (strcmp (cmd, "skate") == 0)
     return run_skate (argc - 2, argv + 2);
+  if (strcmp (cmd, "run") == 0)
+    return run_scene (argc - 2, argv + 2);
+  if (strcmp (cmd, "sweep") == 0)
+    return sweep_main (argc - 2, argv + 2);
 
   if (cmd[0] == '-')
     fprintf (stderr, "chaplygin: unknown option '%s'\n", cmd);

@@ -1,7 +1,79 @@
-## tools/local.mk -- the command-line program.
+## tools/local.mk -- the command-line program, its tests, the scene
+## fuzzer, the figures.
 bin_PROGRAMS = tools/chaplygin
-tools_chaplygin_SOURCES = tools/chaplygin.c
-tools_chaplygin_CFLAGS = $(AM_CFLAGS)
-tools_chaplygin_LDADD = lib/libchaplygin.la $(CODE_COVERAGE_LIBS) -lm
-TESTS += tools/test-cli.sh
-EXTRA_DIST += tools/test-cli.sh
+tools_chaplygin_SOURCES = tools/chaplygin.c tools/scene.c tools/scene.h \
+	tools/run.c tools/run.h tools/sweep.c tools/sweep.h tools/progress.c \
+	tools/progress.h
+tools_chaplygin_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS) $(INIH_CFLAGS) \
+	$(OPENMP_CFLAGS)
+tools_chaplygin_LDFLAGS = $(OPENMP_CFLAGS)
+tools_chaplygin_LDADD = lib/libchaplygin.la $(INIH_LIBS) $(GSL_LIBS) \
+	$(CODE_COVERAGE_LIBS) -lm
+dist_man1_MANS = tools/chaplygin.1
+
+# The scene parser's unit tests, and the fuzz target replaying its corpus
+# (the same source as the libFuzzer build of `make fuzz').
+check_PROGRAMS += tools/test-scene tools/fuzz-scene
+tools_test_scene_SOURCES = tools/test-scene.c tools/scene.c tools/scene.h
+tools_test_scene_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS) $(INIH_CFLAGS)
+tools_test_scene_LDADD = lib/libchaplygin-core.la $(CHECK_LIBS) \
+	$(INIH_LIBS) $(CODE_COVERAGE_LIBS) -lm
+tools_fuzz_scene_SOURCES = tools/fuzz-scene.c tools/scene.c tools/scene.h
+tools_fuzz_scene_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS)
+tools_fuzz_scene_LDADD = lib/libchaplygin-core.la $(INIH_LIBS) \
+	$(CODE_COVERAGE_LIBS) -lm
+
+CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
+	tools/test-scene tools/fuzz-replay.sh tools/test-scenes.sh
+TESTS += $(CLI_TESTS)
+EXTRA_DIST += tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
+	tools/fuzz-replay.sh tools/test-scenes.sh tools/fuzz-corpus \
+	tools/fuzz-scene.dict scenes doc/figures/figure.sh \
+	doc/figures/style.gp
+
+# `make check-sanitizers': the tests of the program (and the parser's
+# unit tests and fuzz corpus) in a build with AddressSanitizer and
+# UndefinedBehaviorSanitizer, any finding fatal.  Built from the
+# distribution directory, as `make distcheck' does, so that it works next
+# to an in-tree build.
+check-sanitizers: distdir
+	cd $(distdir) && ./configure --enable-sanitizers --disable-shared \
+	  --without-arb --enable-werror CFLAGS="-O1 -g" >/dev/null \
+	  && $(MAKE) $(AM_MAKEFLAGS) \
+	  && { nm tools/chaplygin | grep __asan_init >/dev/null \
+	       && nm tools/chaplygin | grep __ubsan_handle >/dev/null \
+	       || { echo "check-sanitizers: the build is not instrumented" >&2; \
+	            exit 1; }; } \
+	  && ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
+	     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	     $(MAKE) $(AM_MAKEFLAGS) check TESTS="$(CLI_TESTS)"
+	$(am__post_remove_distdir)
+.PHONY: check-sanitizers
+
+# `make fuzz': the libFuzzer build of the scene parser (clang), run for
+# FUZZ_SECONDS on a copy of the corpus; new inputs land in fuzz-work/.
+FUZZ_SECONDS = 60
+FUZZ_CC = clang
+fuzz: $(srcdir)/tools/fuzz-scene.c $(srcdir)/tools/scene.c
+	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined \
+	  -DCHAPLYGIN_LIBFUZZER -I$(builddir) -I$(srcdir)/lib -I$(srcdir)/tools \
+	  $(INIH_CFLAGS) -o fuzz-scene-libfuzzer $(srcdir)/tools/fuzz-scene.c \
+	  $(srcdir)/tools/scene.c $(INIH_LIBS)
+	mkdir -p fuzz-work && cp $(srcdir)/tools/fuzz-corpus/* fuzz-work/
+	./fuzz-scene-libfuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	  -dict=$(srcdir)/tools/fuzz-scene.dict fuzz-work
+.PHONY: fuzz
+CLEANFILES += fuzz-scene-libfuzzer
+
+# `make figures': every scene of scenes/ run and drawn with gnuplot
+# (pngcairo) into doc/figures/ of the source tree (committed, so that the
+# manual has them without gnuplot).
+FIGURES = fig2a fig2b fig3 fig4 fig5 fig6 fig7 fig8 fig9 fig10
+figures: tools/chaplygin
+	@for f in $(FIGURES); do \
+	  echo "  FIGURE   doc/figures/$$f.png"; \
+	  CHAPLYGIN=$(abs_builddir)/tools/chaplygin GNUPLOT=gnuplot \
+	    $(SHELL) $(srcdir)/doc/figures/figure.sh $$f $(srcdir)/scenes \
+	    $(srcdir)/doc/figures || exit 1; \
+	done
+.PHONY: figures

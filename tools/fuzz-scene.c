@@ -1,0 +1,219 @@
+/* fuzz-scene.c -- a libFuzzer target for scene_parse (tools/scene.c).
+
+   The target parses its input and checks what scene.h promises: a
+   message that begins with the name and is terminated, the same result
+   with no message buffer, and on success a scene within the documented
+   ranges; a broken promise aborts.
+
+   Built with -DCHAPLYGIN_LIBFUZZER and clang -fsanitize=fuzzer it is the
+   fuzzer; otherwise a main replays every file named on the command line,
+   and every file of a directory so named (make check replays the corpus
+   tools/fuzz-corpus/ this way).  It prints nothing; the exit status is 1
+   if a file or directory cannot be read, else 0. */
+#include <config.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene.h"
+
+#ifndef CHAPLYGIN_LIBFUZZER
+# include <dirent.h>
+# include <stdio.h>
+# include <sys/stat.h>
+#endif
+
+int LLVMFuzzerTestOneInput (const uint8_t *data, size_t size);
+
+/* Whether the scene SC, accepted, keeps the promises of scene.h. */
+static int
+scene_is_sound (const scene *sc)
+{
+  size_t i;
+
+  if (sc->model != SCENE_DISCRETE && sc->model != SCENE_SMOOTH
+      && sc->model != SCENE_MASSLESS)
+    return 0;
+  if (memchr (sc->title, '\0', sizeof sc->title) == NULL)
+    return 0;
+  if (sc->compare && sc->model != SCENE_DISCRETE)
+    return 0;
+  if (!isfinite (sc->theta))
+    return 0;
+  if (sc->tolerance < 1e-15 || !(sc->tolerance < 1))
+    return 0;
+  if (sc->samples < -1 || sc->samples > 1000000)
+    return 0;
+  if (sc->outputs == 0 || (sc->outputs & ~0x1ffu))
+    return 0;
+  if (sc->model != SCENE_DISCRETE && sc->method != CHAPLYGIN_CLOSED_FORM)
+    return 0;
+  switch (sc->sweep)
+    {
+    case SWEEP_NONE:
+      if (!isfinite (sc->V) || !isfinite (sc->Omega))
+        return 0;
+      if (sc->model == SCENE_SMOOTH)
+        return isfinite (sc->L) && sc->duration > 0
+               && sc->duration <= 1e9 && sc->samples >= 0
+               && !(sc->outputs & SCENE_OUT_PEG) && sc->collisions == -1;
+      if (sc->V == 0 || !isfinite (sc->L0)
+          || sc->collisions < 0 || sc->collisions > 1000000000L)
+        return 0;
+      if (sc->model == SCENE_DISCRETE
+          && !(sc->Delta > 0 && isfinite (sc->Delta)))
+        return 0;
+      if (sc->compare)
+        return isfinite (sc->L) && sc->duration > 0
+               && sc->duration <= 1e9;
+      return isnan (sc->L) && isnan (sc->duration);
+    case SWEEP_SIGMA4:
+      if (sc->n_y < 1 || sc->n_y > SCENE_SWEEP_YMAX
+          || (sc->dir != 1 && sc->dir != -1))
+        return 0;
+      for (i = 0; i < sc->n_y; i++)
+        if (!(sc->y[i] >= 0) || !isfinite (sc->y[i]))
+          return 0;
+      break;
+    case SWEEP_STABILITY:
+      if (!(sc->y_min >= 0 && sc->y_min <= sc->y_max)
+          || !isfinite (sc->y_max) || sc->ny < 1 || sc->ny > 10000000L
+          || (double) sc->nx * (double) sc->ny > 1e8)
+        return 0;
+      break;
+    case SWEEP_BASINS:
+      if (!isfinite (sc->L0) || !(sc->Delta > 0)
+          || !isfinite (sc->Omega) || sc->collisions < 0
+          || !isnan (sc->V))
+        return 0;
+      break;
+    default:
+      return 0;
+    }
+  return sc->model == SCENE_DISCRETE && !sc->compare
+         && isfinite (sc->x_min) && isfinite (sc->x_max)
+         && sc->x_min < sc->x_max && sc->nx >= 1 && sc->nx <= 10000000L;
+}
+
+int
+LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
+{
+  static const char name[] = "fuzz.ini";
+  const char *text = (const char *) data;
+  char err[SCENE_ERRLEN], small[8];
+  scene sc, again;
+  int r;
+
+  memset (err, 'x', sizeof err);
+  r = scene_parse (text, size, name, &sc, err, sizeof err);
+  if (r != 0 && r != -1)
+    abort ();
+  if (scene_parse (text, size, name, &again, NULL, 0) != r)
+    abort ();
+  if (r == 0)
+    {
+      if (!scene_is_sound (&sc) || sc.model != again.model
+          || sc.sweep != again.sweep || sc.outputs != again.outputs)
+        abort ();
+      return 0;
+    }
+  if (memchr (err, '\0', sizeof err) == NULL
+      || strncmp (err, name, sizeof name - 1) != 0
+      || (err[sizeof name - 1] != ':'))
+    abort ();
+  memset (small, 'x', sizeof small);
+  if (scene_parse (text, size, name, &sc, small, sizeof small) != -1
+      || small[sizeof small - 1] != '\0'
+      || strncmp (small, err, sizeof small - 1) != 0)
+    abort ();
+  return 0;
+}
+
+#ifndef CHAPLYGIN_LIBFUZZER
+int main (int argc, char **argv);
+
+/* Runs the target on the file PATH; 0, or -1 if it cannot be read. */
+static int
+replay_file (const char *path)
+{
+  FILE *f = fopen (path, "rb");
+  unsigned char *buf = NULL, *bigger;
+  size_t len = 0, cap = 0, got;
+  int ok = 1;
+
+  if (!f)
+    return -1;
+  do
+    {
+      if (len == cap)
+        {
+          cap = cap ? 2 * cap : 4096;
+          bigger = realloc (buf, cap);
+          if (!bigger)
+            {
+              ok = 0;
+              break;
+            }
+          buf = bigger;
+        }
+      got = fread (buf + len, 1, cap - len, f);
+      len += got;
+    }
+  while (got > 0);
+  if (ferror (f))
+    ok = 0;
+  fclose (f);
+  if (ok)
+    LLVMFuzzerTestOneInput (buf, len);
+  free (buf);
+  return ok ? 0 : -1;
+}
+
+/* Runs the target on PATH, or on each file of PATH if a directory. */
+static int
+replay (const char *path)
+{
+  struct stat st;
+  struct dirent *e;
+  DIR *dir;
+  int status = 0;
+
+  if (stat (path, &st) != 0)
+    return -1;
+  if (!S_ISDIR (st.st_mode))
+    return replay_file (path);
+  dir = opendir (path);
+  if (!dir)
+    return -1;
+  while ((e = readdir (dir)) != NULL)
+    {
+      size_t n = strlen (path) + strlen (e->d_name) + 2;
+      char *file = malloc (n);
+      if (!file)
+        {
+          status = -1;
+          break;
+        }
+      snprintf (file, n, "%s/%s", path, e->d_name);
+      if (stat (file, &st) == 0 && S_ISREG (st.st_mode)
+          && replay_file (file) != 0)
+        status = -1;
+      free (file);
+    }
+  closedir (dir);
+  return status;
+}
+
+int
+main (int argc, char **argv)
+{
+  int i, status = 0;
+
+  for (i = 1; i < argc; i++)
+    if (replay (argv[i]) != 0)
+      status = 1;
+  return status;
+}
+#endif

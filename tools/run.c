@@ -1,0 +1,1173 @@
+/* run.c -- running a scene: the return map of the discrete or massless
+   skate (one CSV row per collision, or dense rows along each segment),
+   and the smooth sleigh sampled uniformly in time.
+
+   Only what the scene's outputs require is computed: without theta, tau,
+   peg, path and G the map is iterated on (E, H) alone (request 0 of
+   chaplygin_discrete_step: no elliptic integral, quadrature or
+   integration), and the path of the smooth sleigh is integrated only for
+   path and G.  run_stats counts what was done.
+
+   Column sets (the fixed columns, then the requested outputs, always in
+   the order E, H, theta, tau, peg, V, Omega, path, G):
+     per collision  n,D,reversal[,E][,H][,theta][,tau][,peg_x,peg_y][,V]
+                    [,Omega][,x,y][,G_x,G_y]
+     dense          n,k,reversal,tau,D[,E][,H][,theta][,peg_x,peg_y][,V]
+                    [,Omega][,x,y][,G_x,G_y]
+     smooth         S,tau[,E][,H][,theta][,V][,Omega][,x,y][,G_x,G_y]
+   (tau is a fixed column of the dense and smooth sets.)  See the --help
+   text of tools/chaplygin.c and the manual page for their meaning. */
+#include <config.h>
+
+#include <errno.h>
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include "chaplygin.h"
+#include "progress.h"
+#include "run.h"
+#include "scene.h"
+#include "sweep.h"
+
+enum
+{
+  RUN_OK = 0,
+  RUN_FAILED = 1,               /* library failure or write error */
+  RUN_REJECTED = 2              /* a scene the model rejects */
+};
+
+#define SMOOTH_SAMPLES_DEFAULT 200
+#define PROGRESS_COLLISIONS 100000.0    /* longer per-collision runs, */
+#define PROGRESS_ROWS 1000000.0         /* more dense rows, and more smooth
+                                           samples get a progress bar */
+#define PROGRESS_SMOOTH 100000.0
+#define PROGRESS_EVERY 256              /* iterations between updates */
+#define ROW_MAX 1024                    /* holds any row (<= 16 numbers) */
+#define PATH_LIMIT 20000                /* subintervals of a path quadrature */
+#define PATH_EPSREL 1e-12
+#define PATH_EPSABS 1e-13               /* times the arc length covered */
+#define ROOT_ITER_MAX 200
+
+/* ------------------------------------------------------------------ */
+/* CSV rows                                                             */
+/* ------------------------------------------------------------------ */
+
+/* The output stream and the row being built. */
+typedef struct
+{
+  FILE *out;
+  char row[ROW_MAX];
+  size_t len;                   /* characters in row */
+  int failed;                   /* a write failed (message printed) */
+} sink;
+
+/* Start a row. */
+static void
+row_begin (sink *s)
+{
+  s->len = 0;
+  s->row[0] = '\0';
+}
+
+/* Append TEXT (printf-style) to the row, after a comma unless first.
+   Rows are far shorter than ROW_MAX; a longer one would be cut. */
+static void
+row_printf (sink *s, const char *fmt, ...)
+  __attribute__ ((format (printf, 2, 3)));
+
+static void
+row_printf (sink *s, const char *fmt, ...)
+{
+  va_list ap;
+  if (s->len > 0 && s->len < ROW_MAX - 1)
+    s->row[s->len++] = ',';
+  va_start (ap, fmt);
+  int n = vsnprintf (s->row + s->len, ROW_MAX - 1 - s->len, fmt, ap);
+  va_end (ap);
+  if (n > 0)
+    s->len += (size_t) n < ROW_MAX - 2 - s->len ? (size_t) n
+      : ROW_MAX - 2 - s->len;
+}
+
+/* Append the number X with %.17g (round-trips exactly). */
+static void
+row_num (sink *s, double x)
+{
+  row_printf (s, "%.17g", x);
+}
+
+/* Write the row and a newline.  Returns 0, or -1 after a message on a
+   write error (the run must stop). */
+static int
+row_end (sink *s)
+{
+  if (s->failed)
+    return -1;
+  s->row[s->len++] = '\n';
+  if (fwrite (s->row, 1, s->len, s->out) != s->len || ferror (s->out))
+    {
+      int e = errno;
+      fprintf (stderr, "chaplygin: error writing output: %s\n",
+               strerror (e));
+      s->failed = 1;
+      return -1;
+    }
+  return 0;
+}
+
+/* Flush the output.  Returns RUN_OK, or RUN_FAILED after a message. */
+static int
+sink_finish (sink *s)
+{
+  if (s->failed)
+    return RUN_FAILED;
+  if (fflush (s->out) != 0 || ferror (s->out))
+    {
+      int e = errno;
+      fprintf (stderr, "chaplygin: error writing output: %s\n",
+               strerror (e));
+      s->failed = 1;
+      return RUN_FAILED;
+    }
+  return RUN_OK;
+}
+
+/* Flush what is written (rows before a failure stay written), ignoring
+   errors: the caller reports the failure itself. */
+static void
+sink_flush_quietly (sink *s)
+{
+  if (!s->failed)
+    (void) fflush (s->out);
+}
+
+/* The output columns after the fixed ones, in canonical order; FIXED_TAU:
+   tau is a fixed column already. */
+static void
+header_outputs (sink *s, unsigned outputs, int fixed_tau)
+{
+  if (outputs & SCENE_OUT_E)
+    row_printf (s, "E");
+  if (outputs & SCENE_OUT_H)
+    row_printf (s, "H");
+  if (outputs & SCENE_OUT_THETA)
+    row_printf (s, "theta");
+  if ((outputs & SCENE_OUT_TAU) && !fixed_tau)
+    row_printf (s, "tau");
+  if (outputs & SCENE_OUT_PEG)
+    row_printf (s, "peg_x,peg_y");
+  if (outputs & SCENE_OUT_V)
+    row_printf (s, "V");
+  if (outputs & SCENE_OUT_OMEGA)
+    row_printf (s, "Omega");
+  if (outputs & SCENE_OUT_PATH)
+    row_printf (s, "x,y");
+  if (outputs & SCENE_OUT_G)
+    row_printf (s, "G_x,G_y");
+}
+
+/* One point of a motion, everything an output may ask for (fields not
+   requested are not computed and not printed). */
+typedef struct
+{
+  double E, H, theta, tau, V, Omega;
+  double peg[2];                /* discrete, massless */
+  double path[2];               /* slot front, or the contact point C */
+  double G[2];                  /* mass centre */
+} point;
+
+/* Append the outputs of P in canonical order (see header_outputs). */
+static void
+row_outputs (sink *s, unsigned outputs, int fixed_tau, const point *p)
+{
+  if (outputs & SCENE_OUT_E)
+    row_num (s, p->E);
+  if (outputs & SCENE_OUT_H)
+    row_num (s, p->H);
+  if (outputs & SCENE_OUT_THETA)
+    row_num (s, p->theta);
+  if ((outputs & SCENE_OUT_TAU) && !fixed_tau)
+    row_num (s, p->tau);
+  if (outputs & SCENE_OUT_PEG)
+    {
+      row_num (s, p->peg[0]);
+      row_num (s, p->peg[1]);
+    }
+  if (outputs & SCENE_OUT_V)
+    row_num (s, p->V);
+  if (outputs & SCENE_OUT_OMEGA)
+    row_num (s, p->Omega);
+  if (outputs & SCENE_OUT_PATH)
+    {
+      row_num (s, p->path[0]);
+      row_num (s, p->path[1]);
+    }
+  if (outputs & SCENE_OUT_G)
+    {
+      row_num (s, p->G[0]);
+      row_num (s, p->G[1]);
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* The discrete and the massless skate                                  */
+/* ------------------------------------------------------------------ */
+
+/* A skate being run: the model, its parameters, what to compute. */
+typedef struct
+{
+  int massless;                 /* 0: discrete (units of rho), 1: massless
+                                   (units of the slot length) */
+  chaplygin_discrete sys;       /* discrete only */
+  double L0, Delta;             /* Delta = 1 for the massless skate */
+  chaplygin_options opt;
+  unsigned outputs;
+  unsigned request;             /* flags for the step */
+  int need_positions;           /* peg, path or G requested */
+  const char *path;             /* the scene file, for messages */
+  run_stats *stats;
+} skate;
+
+/* Where a segment starts: the post-collision state and its phase. */
+typedef struct
+{
+  chaplygin_discrete_state st;
+  double D0, V0, Omega0;        /* post-collision D+, V+, Omega+ */
+} segment_start;
+
+/* Omega from the angular momentum H about the peg at D:
+   H/(1 + l^2) (discrete) or H/l^2 (massless, 0 if H = 0). */
+static double
+skate_omega (const skate *k, double H, double D)
+{
+  double l = k->L0 + D;
+  if (k->massless)
+    return H == 0.0 ? 0.0 : H / (l * l);
+  return H / (1.0 + l * l);
+}
+
+/* One step of the return map (B.3)/(B.4) or (B.15), counted. */
+static int
+skate_step (const skate *k, const chaplygin_discrete_state *in,
+            unsigned request, chaplygin_discrete_state *out,
+            chaplygin_discrete_event *ev)
+{
+  k->stats->steps++;
+  /* the ODE method integrates every segment, whatever is requested */
+  if ((request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU))
+      || (!k->massless && k->opt.method == CHAPLYGIN_ODE))
+    k->stats->heading_evals++;
+  if (k->massless)
+    return chaplygin_massless_step (k->L0, in, request, out, ev);
+  return chaplygin_discrete_step (&k->sys, in, request, &k->opt, out, ev);
+}
+
+/* The positions of a point at slot coordinate D, heading theta, with the
+   peg at PEG: slot front peg + D e, mass centre peg + (L0 + D) e. */
+static void
+skate_positions (const skate *k, double D, double theta, const double peg[2],
+                 point *p)
+{
+  double sn, cs;
+  sincos (theta, &sn, &cs);
+  p->peg[0] = peg[0];
+  p->peg[1] = peg[1];
+  p->path[0] = peg[0] + D * cs;
+  p->path[1] = peg[1] + D * sn;
+  p->G[0] = peg[0] + (k->L0 + D) * cs;
+  p->G[1] = peg[1] + (k->L0 + D) * sn;
+}
+
+/* The point of a post-collision state S with velocity V+ (its Omega+ from
+   H). */
+static int
+skate_post_point (const skate *k, const chaplygin_discrete_state *s,
+                  double V, point *p)
+{
+  double D = s->dir > 0 ? 0.0 : k->Delta;
+  p->E = s->E;
+  p->H = s->H;
+  p->theta = s->theta;
+  p->tau = s->tau;
+  p->V = V;
+  p->Omega = skate_omega (k, s->H, D);
+  if (k->need_positions)
+    {
+      skate_positions (k, D, s->theta, s->peg, p);
+      if (k->massless)
+        {
+          int status = chaplygin_massless_mass_centre (k->L0, s, p->G);
+          if (status != CHAPLYGIN_SUCCESS)
+            return status;
+        }
+    }
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* "chaplygin: PATH: collision N: <status>" after flushing the rows
+   written. */
+static int
+collision_failure (const skate *k, sink *s, long n, int status)
+{
+  sink_flush_quietly (s);
+  fprintf (stderr, "chaplygin: %s: collision %ld: %s\n", k->path, n,
+           chaplygin_strerror (status));
+  return RUN_FAILED;
+}
+
+/* Set up K for the scene SC and the initial post-collision state *START.
+   Returns RUN_OK or RUN_REJECTED after a message. */
+static int
+skate_init (skate *k, const scene *sc, const char *path, run_stats *stats,
+            segment_start *start)
+{
+  int status;
+  memset (k, 0, sizeof *k);
+  k->massless = sc->model == SCENE_MASSLESS;
+  k->L0 = sc->L0;
+  k->Delta = k->massless ? 1.0 : sc->Delta;
+  k->opt.method = k->massless ? CHAPLYGIN_CLOSED_FORM : sc->method;
+  k->opt.tol = sc->tolerance;
+  k->opt.precision = CHAPLYGIN_PREC_DOUBLE;
+  k->outputs = sc->outputs;
+  k->path = path;
+  k->stats = stats;
+  k->need_positions = (sc->outputs & (SCENE_OUT_PEG | SCENE_OUT_PATH
+                                      | SCENE_OUT_G)) != 0;
+  k->request = 0;
+  if (k->need_positions)
+    k->request |= CHAPLYGIN_WANT_PEG | CHAPLYGIN_WANT_THETA;
+  if (sc->outputs & SCENE_OUT_THETA)
+    k->request |= CHAPLYGIN_WANT_THETA;
+  if (sc->outputs & SCENE_OUT_TAU)
+    k->request |= CHAPLYGIN_WANT_TAU;
+
+  if (!k->massless)
+    {
+      status = chaplygin_discrete_init (&k->sys, sc->L0, sc->Delta);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          fprintf (stderr, "chaplygin: %s: [parameters] L0 = %.17g, "
+                   "Delta = %.17g: %s\n", path, sc->L0, sc->Delta,
+                   chaplygin_strerror (status));
+          return RUN_REJECTED;
+        }
+    }
+
+  const double q[4] = { sc->V > 0.0 ? 0.0 : k->Delta, sc->V, sc->theta,
+                        sc->Omega };
+  const double peg[2] = { 0.0, 0.0 };
+  double qback[4];
+  if (k->massless)
+    {
+      status = chaplygin_massless_state_from_phase (k->L0, q, 0.0, peg,
+                                                    &start->st);
+      /* the map works on (E, H): the state must be representable there */
+      if (status == CHAPLYGIN_SUCCESS)
+        status = chaplygin_massless_state_to_phase (k->L0, &start->st,
+                                                    qback);
+    }
+  else
+    {
+      status = chaplygin_discrete_state_from_phase (&k->sys, q, 0.0, peg,
+                                                    &start->st);
+      if (status == CHAPLYGIN_SUCCESS)
+        status = chaplygin_discrete_state_to_phase (&k->sys, &start->st,
+                                                    qback);
+    }
+  if (status != CHAPLYGIN_SUCCESS)
+    {
+      if (k->massless)
+        fprintf (stderr, "chaplygin: %s: [initial] V = %.17g, Omega = %.17g "
+                 "(with [parameters] L0 = %.17g): %s\n", path, sc->V,
+                 sc->Omega, sc->L0, chaplygin_strerror (status));
+      else
+        fprintf (stderr, "chaplygin: %s: [initial] V = %.17g, Omega = %.17g "
+                 "(with [parameters] L0 = %.17g, Delta = %.17g): %s\n",
+                 path, sc->V, sc->Omega, sc->L0, sc->Delta,
+                 chaplygin_strerror (status));
+      return RUN_REJECTED;
+    }
+  start->D0 = q[CHAPLYGIN_D];
+  start->V0 = sc->V;
+  start->Omega0 = sc->Omega;
+  return RUN_OK;
+}
+
+/* The progress bar of a run of TOTAL units, drawn only if LONG. */
+static void
+progress_start (progress *p, int is_long, double total)
+{
+  if (is_long)
+    progress_init (p, stderr, "chaplygin run", total);
+  else
+    {
+      memset (p, 0, sizeof *p);
+      p->stream = NULL;
+    }
+}
+
+/* Per-collision rows n = 0..collisions. */
+static int
+skate_run_collisions (const skate *k, const scene *sc, segment_start *cur,
+                      sink *s)
+{
+  const unsigned outputs = k->outputs;
+  point p;
+  int status;
+  progress bar;
+  progress_start (&bar, (double) sc->collisions > PROGRESS_COLLISIONS,
+                  (double) sc->collisions);
+
+  row_begin (s);
+  row_printf (s, "n,D,reversal");
+  header_outputs (s, outputs, 0);
+  if (row_end (s) != 0)
+    return RUN_FAILED;
+
+  memset (&p, 0, sizeof p);
+  status = skate_post_point (k, &cur->st, cur->V0, &p);
+  if (status != CHAPLYGIN_SUCCESS)
+    return collision_failure (k, s, 0, status);
+  p.Omega = cur->Omega0;        /* as given */
+  row_begin (s);
+  row_printf (s, "0");
+  row_num (s, cur->D0);
+  row_printf (s, "0");
+  row_outputs (s, outputs, 0, &p);
+  if (row_end (s) != 0)
+    return RUN_FAILED;
+
+  for (long n = 1; n <= sc->collisions; n++)
+    {
+      chaplygin_discrete_state next;
+      chaplygin_discrete_event ev;
+      status = skate_step (k, &cur->st, k->request, &next, &ev);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          progress_finish (&bar);
+          return collision_failure (k, s, n, status);
+        }
+      cur->st = next;
+      status = skate_post_point (k, &next, ev.Vminus, &p);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          progress_finish (&bar);
+          return collision_failure (k, s, n, status);
+        }
+      row_begin (s);
+      row_printf (s, "%ld", n);
+      row_num (s, next.dir > 0 ? 0.0 : k->Delta);
+      row_printf (s, "%d", ev.reversal);
+      row_outputs (s, outputs, 0, &p);
+      if (row_end (s) != 0)
+        {
+          progress_finish (&bar);
+          return RUN_FAILED;
+        }
+      if (n % PROGRESS_EVERY == 0)
+        progress_update (&bar, (double) n);
+    }
+  progress_finish (&bar);
+  return sink_finish (s);
+}
+
+/* ---- dense output ---------------------------------------------------- */
+
+/* The geometry of one segment of the massless skate: G moves on a line at
+   speed s = sqrt(2E), at distance p = |H|/s from the peg; sigma is the
+   position of G along its line from the foot of the perpendicular from
+   the peg (increasing with time), |l|^2 = p^2 + sigma^2. */
+typedef struct
+{
+  double s, p;
+  double w0;                    /* |sigma| at the start: |V0| |l0|/s */
+  int approaching;              /* sigma < 0 at the start (|l| falls) */
+} massless_line;
+
+/* V, Omega and the heading and time increments at D on the outgoing leg
+   of the segment from START (D between the start and the turning point or
+   the far end).  WANT_THETA: compute *dtheta (else left 0).  Discrete:
+   (B.1) chaplygin_discrete_flow and (B.2) chaplygin_discrete_heading;
+   massless: the straight-line motion of G. */
+static int
+out_leg_sample (const skate *k, const segment_start *start,
+                const massless_line *ml, double D, int want_theta,
+                double *V, double *Omega, double *dtheta, double *dtau)
+{
+  const double D0 = start->D0, V0 = start->V0, Om0 = start->Omega0;
+  *dtheta = 0.0;
+  k->stats->heading_evals++;
+  if (!k->massless)
+    {
+      double V2, Om;
+      int status = chaplygin_discrete_flow (k->L0, D0, V0, Om0, D, &V2, &Om);
+      if (status != CHAPLYGIN_SUCCESS)
+        return status;
+      status = chaplygin_discrete_heading (k->L0, D0, V0, Om0, D, &k->opt,
+                                           want_theta ? dtheta : NULL, dtau);
+      if (status != CHAPLYGIN_SUCCESS)
+        return status;
+      *V = copysign (sqrt (V2), V0);
+      *Omega = Om;
+      return CHAPLYGIN_SUCCESS;
+    }
+
+  const double H = start->st.H, l = k->L0 + D;
+  if (H == 0.0)
+    {
+      /* along the slot axis: V constant, no rotation */
+      *V = V0;
+      *Omega = 0.0;
+      *dtau = fabs (D - D0) / fabs (V0);
+      return isfinite (*dtau) ? CHAPLYGIN_SUCCESS : CHAPLYGIN_ERANGE;
+    }
+  /* w^2 = w0^2 + l^2 - l0^2, l^2 - l0^2 = (D - D0)(2 L0 + D + D0) */
+  const double Q = (D - D0) * (2.0 * k->L0 + D + D0);
+  const double w = sqrt (fmax (ml->w0 * ml->w0 + Q, 0.0));
+  const double sigma0 = ml->approaching ? -ml->w0 : ml->w0;
+  const double sigma = ml->approaching ? -w : w;
+  /* sigma - sigma0 = +-(w^2 - w0^2)/(w + w0), no cancellation */
+  const double dsigma = ml->w0 + w > 0.0
+    ? (ml->approaching ? -Q : Q) / (ml->w0 + w) : 0.0;
+  *dtheta = copysign (atan2 (ml->p * dsigma,
+                             ml->p * ml->p + sigma * sigma0), H);
+  *dtau = dsigma / ml->s;
+  *V = sigma * ml->s / l;
+  *Omega = H / (l * l);
+  if (!isfinite (*dtheta) || !isfinite (*dtau) || !isfinite (*V)
+      || !isfinite (*Omega))
+    return CHAPLYGIN_ERANGE;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* One dense row: segment N, sample KI, at D with (V, Omega, theta, tau). */
+static int
+dense_row (const skate *k, sink *s, const segment_start *start, long n,
+           long ki, int reversal, double D, double V, double Omega,
+           double theta, double tau)
+{
+  point p;
+  memset (&p, 0, sizeof p);
+  p.E = start->st.E;
+  p.H = start->st.H;
+  p.theta = theta;
+  p.tau = tau;
+  p.V = V;
+  p.Omega = Omega;
+  if (k->need_positions)
+    skate_positions (k, D, theta, start->st.peg, &p);
+  row_begin (s);
+  row_printf (s, "%ld,%ld,%d", n, ki, reversal);
+  row_num (s, tau);
+  row_num (s, D);
+  row_outputs (s, k->outputs, 1, &p);
+  return row_end (s);
+}
+
+/* Per-sample rows of every segment: for segment n (from just after
+   collision n-1 to just before collision n), k = 0 its start, N samples
+   equally spaced in D (a reversing segment: floor(N/2) on each leg,
+   mirrored, and the turning point), and its end.  Heading and time along
+   the outgoing leg from the segment start by (B.2); along the return leg
+   by time reversal about the turning point, whose heading and time from
+   the start are half the step's (theta(D) = theta0 + dtheta - out(D)). */
+static int
+skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
+                 sink *s)
+{
+  skate kk = *k0;
+  skate *k = &kk;
+  const long N = sc->samples;
+  const long m = N / 2;                 /* per leg of a reversing segment */
+  const int want_theta = (k->outputs & SCENE_OUT_THETA) || k->need_positions;
+  int status;
+  /* the outgoing leg of a reversing segment, kept for the return leg */
+  double *buf = malloc ((size_t) (m > 0 ? m : 1) * 5 * sizeof (double));
+  if (!buf)
+    {
+      fprintf (stderr, "chaplygin: %s: out of memory\n", k->path);
+      return RUN_FAILED;
+    }
+  k->request |= CHAPLYGIN_WANT_TAU;
+  if (want_theta)
+    k->request |= CHAPLYGIN_WANT_THETA;
+
+  progress bar;
+  double rows = (double) sc->collisions * (double) (N + 3);
+  progress_start (&bar, rows > PROGRESS_ROWS, (double) sc->collisions);
+  int rc = RUN_OK;
+
+  row_begin (s);
+  row_printf (s, "n,k,reversal,tau,D");
+  header_outputs (s, k->outputs, 1);
+  if (row_end (s) != 0)
+    rc = RUN_FAILED;
+
+  for (long n = 1; rc == RUN_OK && n <= sc->collisions; n++)
+    {
+      const chaplygin_discrete_state *st = &cur->st;
+      const double D0 = cur->D0, theta0 = st->theta, tau0 = st->tau;
+      const int dir = st->dir;
+      chaplygin_discrete_state next;
+      chaplygin_discrete_event ev;
+      massless_line ml = { 0.0, 0.0, 0.0, 0 };
+      double V, Om, dth, dta;
+      long ki = 0;
+
+      status = skate_step (k, st, k->request, &next, &ev);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          rc = collision_failure (k, s, n, status);
+          break;
+        }
+      if (k->massless)
+        {
+          ml.s = sqrt (2.0 * st->E);
+          ml.p = fabs (st->H) / ml.s;
+          ml.w0 = fabs (cur->V0) * fabs (k->L0 + D0) / ml.s;
+          ml.approaching = dir * (k->L0 + D0) < 0.0;
+        }
+
+      if (dense_row (k, s, cur, n, ki++, ev.reversal, D0, cur->V0,
+                     cur->Omega0, theta0, tau0) != 0)
+        {
+          rc = RUN_FAILED;
+          break;
+        }
+      if (!ev.reversal)
+        {
+          /* N samples and the far end, from the start by (B.2) */
+          for (long j = 1; j <= N + 1; j++)
+            {
+              double D = k->Delta * (double) (dir > 0 ? j : N + 1 - j)
+                / (double) (N + 1);
+              status = out_leg_sample (k, cur, &ml, D, want_theta, &V, &Om,
+                                       &dth, &dta);
+              if (status != CHAPLYGIN_SUCCESS && j == N + 1)
+                {
+                  /* the far end within rounding of a turning point: the
+                     step's values */
+                  status = CHAPLYGIN_SUCCESS;
+                  V = ev.Vminus;
+                  Om = skate_omega (k, st->H, D);
+                  dth = ev.dtheta;
+                  dta = ev.dtau;
+                }
+              if (status != CHAPLYGIN_SUCCESS)
+                break;
+              if (dense_row (k, s, cur, n, ki++, 0, D, V, Om, theta0 + dth,
+                             tau0 + dta) != 0)
+                {
+                  rc = RUN_FAILED;
+                  break;
+                }
+            }
+        }
+      else
+        {
+          /* out to the turning point Dc and back, mirrored */
+          const double Dc = ev.Dc;
+          for (long j = 1; j <= m && rc == RUN_OK; j++)
+            {
+              double D = D0 + (Dc - D0) * (double) j / (double) (m + 1);
+              double *b = buf + 5 * (j - 1);
+              status = out_leg_sample (k, cur, &ml, D, want_theta, &V, &Om,
+                                       &dth, &dta);
+              if (status != CHAPLYGIN_SUCCESS)
+                break;
+              b[0] = D, b[1] = V, b[2] = Om, b[3] = dth, b[4] = dta;
+              if (dense_row (k, s, cur, n, ki++, 1, D, V, Om, theta0 + dth,
+                             tau0 + dta) != 0)
+                rc = RUN_FAILED;
+            }
+          if (status == CHAPLYGIN_SUCCESS && rc == RUN_OK)
+            {
+              if (dense_row (k, s, cur, n, ki++, 1, Dc, 0.0,
+                             skate_omega (k, st->H, Dc),
+                             theta0 + 0.5 * ev.dtheta, tau0 + 0.5 * ev.dtau)
+                  != 0)
+                rc = RUN_FAILED;
+              for (long j = m; j >= 1 && rc == RUN_OK; j--)
+                {
+                  const double *b = buf + 5 * (j - 1);
+                  if (dense_row (k, s, cur, n, ki++, 1, b[0], -b[1], b[2],
+                                 theta0 + (ev.dtheta - b[3]),
+                                 tau0 + (ev.dtau - b[4])) != 0)
+                    rc = RUN_FAILED;
+                }
+              if (rc == RUN_OK
+                  && dense_row (k, s, cur, n, ki++, 1, D0, -cur->V0,
+                                cur->Omega0, theta0 + ev.dtheta,
+                                tau0 + ev.dtau) != 0)
+                rc = RUN_FAILED;
+            }
+        }
+      if (rc != RUN_OK)
+        break;
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          rc = collision_failure (k, s, n, status);
+          break;
+        }
+
+      cur->st = next;
+      cur->D0 = next.dir > 0 ? 0.0 : k->Delta;
+      cur->V0 = ev.Vminus;
+      cur->Omega0 = skate_omega (k, next.H, cur->D0);
+      if (n % PROGRESS_EVERY == 0)
+        progress_update (&bar, (double) n);
+    }
+  progress_finish (&bar);
+  free (buf);
+  if (rc != RUN_OK)
+    return rc;
+  return sink_finish (s);
+}
+
+/* The discrete or massless scene SC. */
+static int
+skate_run (const scene *sc, const char *path, run_stats *stats, sink *s)
+{
+  skate k;
+  segment_start cur;
+  int rc = skate_init (&k, sc, path, stats, &cur);
+  if (rc != RUN_OK)
+    return rc;
+  if (sc->samples > 0)
+    return skate_run_dense (&k, sc, &cur, s);
+  return skate_run_collisions (&k, sc, &cur, s);
+}
+
+/* ------------------------------------------------------------------ */
+/* The smooth sleigh                                                    */
+/* ------------------------------------------------------------------ */
+
+/* The smooth motion from q0 = {0, V0, theta0, Omega0}: the closed form
+   (A.2) in the arc length S of the path of C. */
+typedef struct
+{
+  double L;
+  double q0[4];
+  int singular;                 /* theta ~ sqrt(|S - S_sing|) at S_sing, */
+  double S_sing;                /* the reversal S_c, or 0 if V0 = 0 */
+  const char *path;
+  run_stats *stats;
+  int status;                   /* first failure inside a quadrature */
+} smooth_motion;
+
+/* The state q and elapsed time *tau (may be NULL) at arc length S,
+   counted. */
+static int
+smooth_at (smooth_motion *m, double S, double q[4], double *tau)
+{
+  m->stats->closed_form_evals++;
+  return chaplygin_smooth_closed_form (m->L, m->q0, S, q, tau);
+}
+
+/* The arc length S >= S_lo at which tau(S) = T, where tau(S_lo) = TAU_LO
+   <= T and Q_LO is the state at S_lo (tau(S) increases: dS/dtau = |V|).
+   VMAX = sqrt(2E) >= |V| everywhere, so S_lo + VMAX (T - TAU_LO) is past
+   the root (the bracket is widened if rounding says otherwise).
+   Safeguarded Newton on tau(S) - T (dtau/dS = 1/|V|) from
+   S_lo + |V(S_lo)| (T - TAU_LO), bisection where Newton leaves the bracket
+   or |f| does not halve, until f = 0, the bracket is a few ulps wide or
+   the iterate stops moving.  *S_out receives the S of least |f| seen, q
+   its state (q may be Q_LO). */
+static int
+smooth_find_S (smooth_motion *m, double T, double S_lo, double tau_lo,
+               const double q_lo[4], double vmax, double *S_out, double q[4])
+{
+  int status;
+  double dt = T - tau_lo;
+  double lo = S_lo, hi, tau_hi, qq[4];
+  double best_S = S_lo, best_f = tau_lo - T, best_q[4];
+  double step = fmax (vmax * dt * (1.0 + 1e-12),
+                      4.0 * DBL_EPSILON * S_lo) + DBL_MIN;
+
+  memcpy (best_q, q_lo, sizeof best_q);
+  if (dt <= 0.0)
+    {
+      *S_out = S_lo;
+      memcpy (q, best_q, sizeof best_q);
+      return CHAPLYGIN_SUCCESS;
+    }
+  /* the bracket [lo, hi]: tau(lo) <= T <= tau(hi) */
+  for (int i = 0;; i++)
+    {
+      hi = S_lo + step;
+      status = smooth_at (m, hi, qq, &tau_hi);
+      if (status != CHAPLYGIN_SUCCESS)
+        return status;
+      if (tau_hi >= T)
+        break;
+      if (i == 60)
+        return CHAPLYGIN_ERANGE;
+      lo = hi;
+      step *= 2.0;
+    }
+  if (tau_hi - T < fabs (best_f))
+    {
+      best_S = hi;
+      best_f = tau_hi - T;
+      memcpy (best_q, qq, sizeof qq);
+    }
+
+  double x = S_lo + fabs (q_lo[CHAPLYGIN_V]) * dt;
+  if (!(x > lo && x < hi))
+    x = lo + 0.5 * (hi - lo);
+  double last_f = HUGE_VAL;
+  for (int i = 0; i < ROOT_ITER_MAX && best_f != 0.0; i++)
+    {
+      double tx;
+      status = smooth_at (m, x, qq, &tx);
+      if (status != CHAPLYGIN_SUCCESS)
+        return status;
+      double f = tx - T;
+      if (fabs (f) < fabs (best_f))
+        {
+          best_S = x;
+          best_f = f;
+          memcpy (best_q, qq, sizeof qq);
+        }
+      if (f == 0.0)
+        break;
+      if (f < 0.0)
+        lo = x;
+      else
+        hi = x;
+      if (hi - lo <= 4.0 * DBL_EPSILON * fmax (fabs (hi), DBL_MIN))
+        break;
+      /* Newton, unless it leaves the bracket or |f| did not halve */
+      double xn = x - f * fabs (qq[CHAPLYGIN_V]);
+      int bisect = !(xn > lo && xn < hi) || fabs (f) > 0.5 * last_f;
+      last_f = fabs (f);
+      if (bisect)
+        xn = lo + 0.5 * (hi - lo);
+      if (xn == x)
+        break;
+      x = xn;
+    }
+  *S_out = best_S;
+  memcpy (q, best_q, sizeof best_q);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The integrand of a path quadrature: one component of
+   dC/dS = sgn(V) e(theta), in the variable S (side 0) or in
+   u = sqrt(|S - S_sing|) (side -1: S = S_sing - u^2, side +1:
+   S = S_sing + u^2, dS = 2u du), which makes it smooth at a reversal
+   (theta ~ sqrt(|S - S_c|) there). */
+typedef struct
+{
+  smooth_motion *m;
+  int side;
+  int component;                /* 0: x, 1: y */
+} path_integrand;
+
+static double
+path_f (double t, void *params)
+{
+  path_integrand *pi = params;
+  smooth_motion *m = pi->m;
+  double S = t, jac = 1.0, q[4];
+  if (pi->side != 0)
+    {
+      S = m->S_sing + pi->side * t * t;
+      jac = 2.0 * t;
+      if (S < 0.0)
+        S = 0.0;
+    }
+  int status = smooth_at (m, S, q, NULL);
+  if (status != CHAPLYGIN_SUCCESS)
+    {
+      if (m->status == CHAPLYGIN_SUCCESS)
+        m->status = status;
+      return 0.0;
+    }
+  double v = q[CHAPLYGIN_V];
+  double sgn = v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0;
+  double e = pi->component ? sin (q[CHAPLYGIN_THETA])
+    : cos (q[CHAPLYGIN_THETA]);
+  return sgn * e * jac;
+}
+
+/* Integrate dC/dS over [a, b] (a <= b, both on one side of S_sing) in the
+   variable of SIDE, adding to d[2].  Returns 0, or -1 after a message. */
+static int
+path_piece (smooth_motion *m, gsl_integration_workspace *ws, int side,
+            double a, double b, double d[2])
+{
+  double ta = a, tb = b;
+  if (side < 0)
+    {
+      ta = sqrt (fmax (m->S_sing - b, 0.0));
+      tb = sqrt (fmax (m->S_sing - a, 0.0));
+    }
+  else if (side > 0)
+    {
+      ta = sqrt (fmax (a - m->S_sing, 0.0));
+      tb = sqrt (fmax (b - m->S_sing, 0.0));
+    }
+  if (!(tb > ta))
+    return 0;
+  for (int c = 0; c < 2; c++)
+    {
+      path_integrand pi = { m, side, c };
+      gsl_function F = { path_f, &pi };
+      double r = 0.0, err = 0.0;
+      m->status = CHAPLYGIN_SUCCESS;
+      m->stats->path_quadratures++;
+      int gs = gsl_integration_qag (&F, ta, tb, PATH_EPSABS * (b - a),
+                                    PATH_EPSREL, PATH_LIMIT,
+                                    GSL_INTEG_GAUSS21, ws, &r, &err);
+      if (m->status != CHAPLYGIN_SUCCESS)
+        {
+          fprintf (stderr, "chaplygin: %s: path at S = %.17g: %s\n", m->path,
+                   a, chaplygin_strerror (m->status));
+          return -1;
+        }
+      /* roundoff may stop the refinement short of the tolerance, only
+         where the estimate is already at the level of rounding */
+      if (gs != GSL_SUCCESS
+          && !(gs == GSL_EROUND && err <= 1e-10 * (b - a)))
+        {
+          fprintf (stderr, "chaplygin: %s: path quadrature on S in "
+                   "[%.17g, %.17g]: %s\n", m->path, a, b, gsl_strerror (gs));
+          return -1;
+        }
+      /* side -1 runs u against S: the integral over [u(b), u(a)] is the
+         one over [a, b] */
+      d[c] += r;
+    }
+  return 0;
+}
+
+/* C(b) - C(a), added to d[2]. */
+static int
+path_increment (smooth_motion *m, gsl_integration_workspace *ws, double a,
+                double b, double d[2])
+{
+  if (!m->singular)
+    return path_piece (m, ws, 0, a, b, d);
+  if (b <= m->S_sing)
+    return path_piece (m, ws, -1, a, b, d);
+  if (a >= m->S_sing)
+    return path_piece (m, ws, 1, a, b, d);
+  if (path_piece (m, ws, -1, a, m->S_sing, d) != 0)
+    return -1;
+  return path_piece (m, ws, 1, m->S_sing, b, d);
+}
+
+/* The smooth sleigh with L, from (V, Omega, theta) at S = 0, tau = 0, C at
+   the origin, for DURATION, at SAMPLES + 1 times equally spaced. */
+static int
+smooth_run (double L, double V, double Omega, double theta, double duration,
+            long samples, unsigned outputs, const char *path,
+            run_stats *stats, sink *s)
+{
+  smooth_motion m;
+  int status;
+  double E, H;
+  const int need_path = (outputs & (SCENE_OUT_PATH | SCENE_OUT_G)) != 0;
+
+  memset (&m, 0, sizeof m);
+  m.L = L;
+  m.q0[CHAPLYGIN_S] = 0.0;
+  m.q0[CHAPLYGIN_V] = V;
+  m.q0[CHAPLYGIN_THETA] = theta;
+  m.q0[CHAPLYGIN_OMEGA] = Omega;
+  m.path = path;
+  m.stats = stats;
+
+  status = chaplygin_smooth_energy (L, V, Omega, &E);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_smooth_momentum (L, Omega, &H);
+  if (status == CHAPLYGIN_SUCCESS && !isfinite (sqrt (2.0 * E)))
+    status = CHAPLYGIN_ERANGE;
+  int reverses = 0;
+  double Sc = 0.0;
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_smooth_reversal (L, m.q0, &reverses, &Sc);
+  if (status != CHAPLYGIN_SUCCESS)
+    {
+      fprintf (stderr, "chaplygin: %s: [initial] V = %.17g, Omega = %.17g "
+               "(with L = %.17g): %s\n", path, V, Omega, L,
+               chaplygin_strerror (status));
+      return RUN_REJECTED;
+    }
+  if (reverses)
+    {
+      m.singular = 1;
+      m.S_sing = Sc;
+    }
+  else if (V == 0.0)
+    {
+      m.singular = 1;           /* starts at a turning point */
+      m.S_sing = 0.0;
+    }
+  /* at rest, or spinning in place: S never advances (V = 0 and
+     Omega = 0 or L = 0) */
+  const int in_place = V == 0.0 && (Omega == 0.0 || L == 0.0);
+  const double vmax = sqrt (2.0 * E);
+  if (samples < 1)
+    samples = 1;
+
+  gsl_integration_workspace *ws = NULL;
+  if (need_path && !in_place)
+    {
+      gsl_set_error_handler_off ();
+      ws = gsl_integration_workspace_alloc (PATH_LIMIT);
+      if (!ws)
+        {
+          fprintf (stderr, "chaplygin: %s: out of memory\n", path);
+          return RUN_FAILED;
+        }
+    }
+
+  progress bar;
+  progress_start (&bar, (double) samples > PROGRESS_SMOOTH, (double) samples);
+  int rc = RUN_OK;
+  row_begin (s);
+  row_printf (s, "S,tau");
+  header_outputs (s, outputs & ~(unsigned) SCENE_OUT_PEG, 1);
+  if (row_end (s) != 0)
+    rc = RUN_FAILED;
+
+  double S_prev = 0.0, tau_prev = 0.0, q[4], C[2] = { 0.0, 0.0 };
+  memcpy (q, m.q0, sizeof q);
+  for (long i = 0; rc == RUN_OK && i <= samples; i++)
+    {
+      /* tau_i = duration i/samples, exactly duration at the end */
+      double T = i == samples ? duration
+        : duration * ((double) i / (double) samples);
+      double S = 0.0;
+      if (in_place)
+        {
+          q[CHAPLYGIN_S] = 0.0;
+          q[CHAPLYGIN_V] = 0.0;
+          q[CHAPLYGIN_OMEGA] = Omega;
+          q[CHAPLYGIN_THETA] = theta + Omega * T;
+        }
+      else if (i > 0)
+        {
+          status = smooth_find_S (&m, T, S_prev, tau_prev, q, vmax, &S, q);
+          if (status != CHAPLYGIN_SUCCESS)
+            {
+              sink_flush_quietly (s);
+              fprintf (stderr, "chaplygin: %s: tau = %.17g: %s\n", path, T,
+                       chaplygin_strerror (status));
+              rc = RUN_FAILED;
+              break;
+            }
+          if (need_path && path_increment (&m, ws, S_prev, S, C) != 0)
+            {
+              sink_flush_quietly (s);
+              rc = RUN_FAILED;
+              break;
+            }
+        }
+      point p;
+      memset (&p, 0, sizeof p);
+      p.tau = T;
+      p.theta = q[CHAPLYGIN_THETA];
+      p.V = q[CHAPLYGIN_V];
+      p.Omega = q[CHAPLYGIN_OMEGA];
+      status = chaplygin_smooth_energy (L, p.V, p.Omega, &p.E);
+      if (status == CHAPLYGIN_SUCCESS)
+        status = chaplygin_smooth_momentum (L, p.Omega, &p.H);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          sink_flush_quietly (s);
+          fprintf (stderr, "chaplygin: %s: tau = %.17g: %s\n", path, T,
+                   chaplygin_strerror (status));
+          rc = RUN_FAILED;
+          break;
+        }
+      if (need_path)
+        {
+          double sn, cs;
+          sincos (p.theta, &sn, &cs);
+          p.path[0] = C[0];
+          p.path[1] = C[1];
+          p.G[0] = C[0] + L * cs;
+          p.G[1] = C[1] + L * sn;
+        }
+      row_begin (s);
+      row_num (s, S);
+      row_num (s, T);
+      row_outputs (s, outputs & ~(unsigned) SCENE_OUT_PEG, 1, &p);
+      if (row_end (s) != 0)
+        rc = RUN_FAILED;
+      S_prev = S;
+      tau_prev = T;
+      if (i % PROGRESS_EVERY == 0)
+        progress_update (&bar, (double) i);
+    }
+  progress_finish (&bar);
+  gsl_integration_workspace_free (ws);
+  if (rc != RUN_OK)
+    return rc;
+  return sink_finish (s);
+}
+
+/* ------------------------------------------------------------------ */
+
+int
+scene_run (const scene *sc, const char *path, int compare, FILE *out,
+           run_stats *stats)
+{
+  run_stats dummy;
+  sink s;
+
+  if (!stats)
+    stats = &dummy;
+  memset (stats, 0, sizeof *stats);
+  memset (&s, 0, sizeof s);
+  s.out = out;
+
+  if (compare && !sc->compare)
+    {
+      fprintf (stderr, "chaplygin: %s: --compare needs [scene] compare = "
+               "smooth (a discrete scene with a smooth companion)\n", path);
+      return RUN_REJECTED;
+    }
+  if (sc->sweep != SWEEP_NONE)
+    {
+      if (compare)
+        {
+          fprintf (stderr, "chaplygin: %s: --compare does not apply to a "
+                   "[sweep]\n", path);
+          return RUN_REJECTED;
+        }
+      return sweep_run (sc, path, 0, 1, out);
+    }
+
+  if (compare)
+    return smooth_run (sc->L, sc->V, sc->Omega, sc->theta, sc->duration,
+                       sc->samples > SMOOTH_SAMPLES_DEFAULT ? sc->samples
+                       : SMOOTH_SAMPLES_DEFAULT,
+                       sc->outputs & ~(unsigned) SCENE_OUT_PEG, path, stats,
+                       &s);
+
+  switch (sc->model)
+    {
+    case SCENE_SMOOTH:
+      return smooth_run (sc->L, sc->V, sc->Omega, sc->theta, sc->duration,
+                         sc->samples >= 0 ? sc->samples
+                         : SMOOTH_SAMPLES_DEFAULT, sc->outputs, path, stats,
+                         &s);
+    case SCENE_DISCRETE:
+    case SCENE_MASSLESS:
+      return skate_run (sc, path, stats, &s);
+    }
+  fprintf (stderr, "chaplygin: %s: unknown model\n", path);
+  return RUN_REJECTED;
+}
