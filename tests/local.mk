@@ -22,10 +22,16 @@ UNIT_CHECKS = \
 	tests/test_fate \
 	tests/test_massless \
 	tests/test_reversal \
-	tests/test_energy
+	tests/test_energy \
+	tests/test_threads
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
 
+# thread safety: several OpenMP threads against a serial run
+tests_test_threads_SOURCES = tests/test_threads.c
+tests_test_threads_CFLAGS = $(TEST_CFLAGS) $(OPENMP_CFLAGS)
+tests_test_threads_LDFLAGS = $(OPENMP_CFLAGS)
+tests_test_threads_LDADD = $(TEST_LDADD)
 tests_test_status_SOURCES = tests/test_status.c
 tests_test_status_CFLAGS = $(TEST_CFLAGS)
 tests_test_status_LDADD = $(TEST_LDADD)
