@@ -71,7 +71,8 @@ scene_is_sound (const scene *sc)
       return isnan (sc->L) && isnan (sc->duration);
     case SWEEP_SIGMA4:
       if (sc->n_y < 1 || sc->n_y > SCENE_SWEEP_YMAX
-          || (sc->dir != 1 && sc->dir != -1))
+          || (sc->dir != 1 && sc->dir != -1)
+          || (double) sc->nx * (double) sc->n_y > 1e8)
         return 0;
       for (i = 0; i < sc->n_y; i++)
         if (!(sc->y[i] >= 0) || !isfinite (sc->y[i]))

@@ -31,10 +31,14 @@
      order and may repeat a value.
    - tolerance is an error with method closed-form (the default): it would
      be ignored.
-   - Every sweep needs model = discrete and takes neither compare, nor
-     [run] samples, outputs, method, tolerance, nor [initial] theta (the
-     basins start at theta = 0) or V (basins: x is the initial V).
+   - Every sweep needs model = discrete and takes no compare; sigma4 and
+     stability take no [parameters], [initial] or [run] key; basins takes
+     L0, Delta, Omega, collisions only (no theta: the basins start at
+     theta = 0; no V: x is the initial V; no samples, outputs, method,
+     tolerance).
    - y_min, y_max >= 0 (both are values of y = (1/Delta)^2); y_min <= y_max.
+     A sigma4 sweep has at most 1e8 points too: nx times the number of y
+     values.
    - Defaults: title ""; compare 0; L0, Delta, L, V, Omega, duration NAN;
      theta 0; collisions -1; samples -1 (discrete, massless; the run
      chooses, also for the smooth companion) or 200 (smooth); outputs as in
@@ -45,13 +49,12 @@
      a range needing no other key); failing that, a missing model, a sweep
      without kind or of another model than discrete; then the earliest
      line among the checks that need the whole file (a key the scene does
-     not use, V = 0, method, outputs, x_min < x_max, y_min <= y_max,
-     nx ny); then the first missing key in the order of scene.h.  *sc is
+     not use, V = 0, method, outputs, x_min < x_max, y_min <= y_max, the
+     number of points); then the first missing key in the order of scene.h.  *sc is
      written only on success. */
 #include <config.h>
 
 #include <errno.h>
-#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -546,6 +549,7 @@ read_value (parse_ctx *c, int k, const char *value)
   scene *sc = &c->sc;
   char buf[SHOWN_SIZE];
   double x = 0;
+  size_t i;
   int w = 0;
 
   if (k != K_TITLE && !*value)
@@ -577,12 +581,12 @@ read_value (parse_ctx *c, int k, const char *value)
                     strlen (value), sizeof sc->title - 1);
           return -1;
         }
-      for (w = 0; value[w]; w++)
-        if (((unsigned char) value[w] < 0x20 && value[w] != '\t')
-            || value[w] == 0x7f)
+      for (i = 0; value[i]; i++)
+        if (((unsigned char) value[i] < 0x20 && value[i] != '\t')
+            || value[i] == 0x7f)
           {
             fail_key (c, k, c->lineno, "control character (byte 0x%02x) in "
-                      "'%s'", (unsigned) (unsigned char) value[w],
+                      "'%s'", (unsigned) (unsigned char) value[i],
                       shown (buf, sizeof buf, value));
             return -1;
           }
@@ -1045,11 +1049,19 @@ check_key (parse_ctx *c, int k)
       break;
     case K_NX:
     case K_NY:
-      if (c->line_of[K_NX] && c->line_of[K_NY]
-          && k == later_key (c, K_NX, K_NY)
-          && (double) sc->nx * (double) sc->ny > SCENE_GRID_TOTAL_MAX)
-        fail_key (c, k, line, "nx ny = %ld x %ld points is more than 1e8",
-                  sc->nx, sc->ny);
+    case K_Y:
+      {
+        /* The points of the grid: nx ny (stability), nx n_y (sigma4). */
+        int sigma4 = sc->sweep == SWEEP_SIGMA4;
+        int other = sigma4 ? K_Y : K_NY;
+        long n_other = sigma4 ? (long) sc->n_y : sc->ny;
+        if ((k == K_NX || k == other) && c->line_of[K_NX]
+            && c->line_of[other] && k == later_key (c, K_NX, other)
+            && (double) sc->nx * (double) n_other > SCENE_GRID_TOTAL_MAX)
+          fail_key (c, k, line, "%s = %ld x %ld points is more than 1e8",
+                    sigma4 ? "nx times the number of y values" : "nx ny",
+                    sc->nx, n_other);
+      }
       break;
     case K_MODEL:
     case K_COMPARE:
@@ -1064,7 +1076,6 @@ check_key (parse_ctx *c, int k)
     case K_SAMPLES:
     case K_TOLERANCE:
     case K_KIND:
-    case K_Y:
     case K_DIR:
     case K_COUNT:
     default:
