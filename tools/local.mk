@@ -56,6 +56,7 @@ FUZZ_SECONDS = 60
 FUZZ_CC = clang
 fuzz: $(srcdir)/tools/fuzz-scene.c $(srcdir)/tools/scene.c
 	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined \
+	  -fno-sanitize-recover=undefined \
 	  -DCHAPLYGIN_LIBFUZZER -I$(builddir) -I$(srcdir)/lib -I$(srcdir)/tools \
 	  $(INIH_CFLAGS) -o fuzz-scene-libfuzzer $(srcdir)/tools/fuzz-scene.c \
 	  $(srcdir)/tools/scene.c $(INIH_LIBS)
