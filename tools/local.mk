@@ -26,7 +26,7 @@ tools_fuzz_scene_LDADD = lib/libchaplygin-core.la $(INIH_LIBS) \
 CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
 	tools/test-scene tools/fuzz-replay.sh tools/test-scenes.sh
 TESTS += $(CLI_TESTS)
-EXTRA_DIST += tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
+EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
 	tools/fuzz-replay.sh tools/test-scenes.sh tools/fuzz-corpus \
 	tools/fuzz-scene.dict scenes doc/figures/figure.sh \
 	doc/figures/style.gp

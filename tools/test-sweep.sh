@@ -12,38 +12,8 @@ prog=${CHAPLYGIN:-${top_builddir:-.}/tools/chaplygin}
 # the bar must not depend on the caller's environment
 unset CHAPLYGIN_NO_PROGRESS
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/test-sweep.XXXXXX" 2>/dev/null) || {
-  tmp=${TMPDIR:-/tmp}/test-sweep.$$
-  mkdir "$tmp" || { echo "Bail out! cannot create a temporary directory"; exit 1; }
-}
-trap 'rm -rf "$tmp"' 0
-trap 'exit 1' HUP INT TERM
-
-plan=32
-echo "1..$plan"
-
-if test ! -x "$prog"; then
-  echo "Bail out! $prog is not built"
-  exit 1
-fi
-
-count=0
-# result STATUS TEXT: print "ok" if STATUS is 0, else "not ok".
-result () {
-  count=$((count + 1))
-  if test "$1" -eq 0; then
-    echo "ok $count - $2"
-  else
-    echo "not ok $count - $2"
-  fi
-}
-
-# run ARGS...: run the program; stdout in $tmp/out, stderr in $tmp/err,
-# exit status in $rc.
-run () {
-  rc=0
-  "$prog" "$@" >"$tmp/out" 2>"$tmp/err" || rc=$?
-}
+. "${top_srcdir:-.}/tools/tap-lib.sh"
+tap_start test-sweep 32
 
 # say TEXT: a diagnostic line (shown by the TAP driver).
 say () {
