@@ -75,7 +75,12 @@
    quantity and data set; with --table FILE the program also writes them
    as the Texinfo chapter "Accuracy tables" (doc/accuracy.texi).  Level 1
    (make check): 40 legs, 10 orbits (20 single steps on the two state
-   sets) and 400 parameter points per set; level 2: 40 times as many. */
+   sets) and 400 parameter points per set; level 2: 40 times as many.
+
+   With --refs IN OUT the program is a reference server instead: it
+   writes the oracle's next E, H, heading and time increments for each
+   state of IN (see refs_mode); the benchmark of bench/ measures every
+   method's error against them. */
 #include <config.h>
 
 #include <float.h>
@@ -1825,6 +1830,113 @@ write_table (const char *path, int level)
   return fclose (f) != 0;
 }
 
+/* --refs IN OUT: reference values for the benchmark (bench/, `make bench')
+   and any other program that wants them.  IN has one post-collision state
+   a line, "L0 Delta dir E H" (C99 hex floats, or any strtod syntax); OUT
+   gets one line each:
+     ok REV E'hi E'lo H'hi H'lo DTHhi DTHlo DTAhi DTAlo KTH KTA
+   the next E, H and the heading and time increments of the return map
+   (B.3)/(B.4) as double-double pairs (hi the nearest double, lo the
+   nearest double to the rest: about 106 correct bits, the reference
+   itself carrying at least MIN_BITS), REV 1 for a reversal, KTH and KTA
+   the condition numbers of the increments with respect to E and H; or
+     spin    for 2E = H^2 reaching l = 0 (CHAPLYGIN_ESPIN),
+     bad     for a state that cannot move (V+^2 <= 0),
+     fail    if the oracle did not reach its accuracy.
+   Exit status 0 if every line was read, 1 on a malformed line, 2 on I/O
+   errors. */
+static void
+print_dd (FILE *f, const arb_t x)
+{
+  arb_t t;
+  arb_init (t);
+  double hi = mid_d (x);
+  arb_set_d (t, hi);
+  arb_sub (t, x, t, 4 * PREC_MAX);
+  fprintf (f, " %a %a", hi, mid_d (t));
+  arb_clear (t);
+}
+
+static int
+refs_mode (const char *in_path, const char *out_path)
+{
+  FILE *in = fopen (in_path, "r"), *out = in ? fopen (out_path, "w") : NULL;
+  if (!in || !out)
+    {
+      fprintf (stderr, "oracle --refs: cannot open %s\n",
+               in ? out_path : in_path);
+      if (in)
+        fclose (in);
+      return 2;
+    }
+  sref r, r1;
+  arb_t Ea, Ha, t;
+  sref_init (&r), sref_init (&r1);
+  arb_init (Ea), arb_init (Ha), arb_init (t);
+  char line[512];
+  int rc = 0;
+  long lineno = 0;
+  while (fgets (line, sizeof line, in))
+    {
+      double L0, Delta, E, H;
+      int dir;
+      lineno++;
+      if (line[0] == '#' || line[0] == '\n')
+        continue;
+      if (sscanf (line, "%lf %lf %d %lf %lf", &L0, &Delta, &dir, &E, &H) != 5
+          || (dir != 1 && dir != -1))
+        {
+          fprintf (stderr, "oracle --refs: %s:%ld: malformed line\n",
+                   in_path, lineno);
+          rc = 1;
+          break;
+        }
+      snprintf (point, sizeof point, "refs line %ld", lineno);
+      arb_set_d (Ea, E);
+      arb_set_d (Ha, H);
+      int orc = step_eval (L0, Delta, dir, Ea, Ha, &r, 1);
+      if (orc != ORC_OK)
+        {
+          fprintf (out, "%s\n", orc == ORC_SPIN ? "spin"
+                   : orc == ORC_BAD ? "bad" : "fail");
+          continue;
+        }
+      double kth = 0, kta = 0;
+      long fd_before = n_fd_inaccurate;
+      for (int j = 0; j < 2; j++)
+        {
+          perturbed (t, j ? Ha : Ea, FD_STEP);
+          if (step_eval (L0, Delta, dir, j ? Ea : t, j ? t : Ha, &r1, 0)
+              != ORC_OK || r1.reversal != r.reversal)
+            {
+              n_fd_inaccurate++;
+              continue;
+            }
+          kth += kappa_fd (r1.dth, r.dth, FD_STEP);
+          kta += kappa_fd (r1.dta, r.dta, FD_STEP);
+        }
+      if (n_fd_inaccurate != fd_before)
+        {
+          fprintf (out, "fail\n");
+          continue;
+        }
+      fprintf (out, "ok %d", r.reversal);
+      print_dd (out, r.E);
+      print_dd (out, r.H);
+      print_dd (out, r.dth);
+      print_dd (out, r.dta);
+      fprintf (out, " %.3g %.3g\n", kth, kta);
+    }
+  sref_clear (&r), sref_clear (&r1);
+  arb_clear (Ea), arb_clear (Ha), arb_clear (t);
+  if (ferror (in) || ferror (out))
+    rc = 2;
+  fclose (in);
+  if (fclose (out) != 0)
+    rc = 2;
+  return rc;
+}
+
 static double
 now (void)
 {
@@ -1843,10 +1955,12 @@ main (int argc, char **argv)
       table = argv[++i];
     else if (!strcmp (argv[i], "--set") && i + 1 < argc)
       only = atoi (argv[++i]);
+    else if (!strcmp (argv[i], "--refs") && i + 2 < argc)
+      return refs_mode (argv[i + 1], argv[i + 2]);
     else
       {
-        fprintf (stderr, "usage: %s [--table FILE] [--set 0..%d]\n",
-                 argv[0], NS - 1);
+        fprintf (stderr, "usage: %s [--table FILE] [--set 0..%d]\n"
+                 "       %s --refs IN OUT\n", argv[0], NS - 1, argv[0]);
         return 2;
       }
   const int level = tap_level ();
