@@ -48,12 +48,14 @@ chp_one_minus_h2 (double E, double H)
   return -fma (Hs, Hs, -twoEs) / twoEs;
 }
 
-/* chp_motion_init: the invariants of the motion with energy E > 0 and
-   momentum H (see chp_one_minus_h2).
+/* chp_motion_init_eh: the part of chp_motion_init that the exact
+   classification of a motion and the (E, H) update need: E, H and
+   1 - h^2 (see chp_one_minus_h2); the other fields are left unset
+   (chp_motion_complete sets them).
    Errors: CHAPLYGIN_EDOM (non-finite, E < 0), CHAPLYGIN_ESTATE (E = 0: at
    rest, no motion), CHAPLYGIN_ERANGE (2E or h^2 overflows). */
 int
-chp_motion_init (double E, double H, chp_motion *m)
+chp_motion_init_eh (double E, double H, chp_motion *m)
 {
   if (!isfinite (E) || !isfinite (H) || E < 0.0)
     return CHAPLYGIN_EDOM;
@@ -65,9 +67,28 @@ chp_motion_init (double E, double H, chp_motion *m)
     return CHAPLYGIN_ERANGE;
   m->E = E;
   m->H = H;
-  m->sqrt2E = sqrt (twoE);
-  m->h = H / m->sqrt2E;
-  chp_motion_set_omh2 (m, omh2);
+  m->omh2 = omh2;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chp_motion_complete: the fields of a motion set by chp_motion_init_eh
+   extended by those the heading and time integrals need. */
+void
+chp_motion_complete (chp_motion *m)
+{
+  m->sqrt2E = sqrt (2.0 * m->E);
+  m->h = m->H / m->sqrt2E;
+  chp_motion_set_omh2 (m, m->omh2);
+}
+
+/* chp_motion_init: the invariants of the motion with energy E > 0 and
+   momentum H: chp_motion_init_eh and chp_motion_complete.
+   Errors: those of chp_motion_init_eh. */
+int
+chp_motion_init (double E, double H, chp_motion *m)
+{
+  CHP_TRY (chp_motion_init_eh (E, H, m));
+  chp_motion_complete (m);
   return CHAPLYGIN_SUCCESS;
 }
 

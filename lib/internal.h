@@ -148,6 +148,12 @@ typedef struct
 
 int chp_motion_init (double E, double H, chp_motion *m);
 
+/* The cheap part of chp_motion_init: validation, E, H and omh2 only (all
+   that the exact classification and the (E, H) update need); then
+   chp_motion_complete sets the rest. */
+int chp_motion_init_eh (double E, double H, chp_motion *m);
+void chp_motion_complete (chp_motion *m);
+
 /* Replace m->omh2 by a more accurate value (ignored if not finite) and
    re-derive the fields that depend on it. */
 void chp_motion_set_omh2 (chp_motion *m, double omh2);

@@ -9,6 +9,7 @@
    that of (3.7) at the end the peg leaves, D-.  */
 #include <config.h>
 
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 
@@ -152,6 +153,32 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* The (E, H) update of the common case, without a division: H^2 <= E,
+   so that 2E > H^2 (the sign is exact: H*H rounded is at most E (1 + eps)):
+   no turning point exists and the motion reaches the far end (B.3); the
+   speed there has V-^2 = 2E - H^2/(1 + l^2) >= E, so that E' keeps V-'s
+   relative accuracy whichever way it is formed; and the collision takes at
+   most half the energy, |C1| H^2 <= E/2, so that E' = E + C1 H^2 formed by
+   one fma from C1 H loses nothing to cancellation (C1's few ulps weigh at
+   most as much as E' itself: about 3 ulps in all, as the cancellation-free
+   form of step_core; the oracle measures it).  Returns 0 where the case
+   does not apply (the caller takes the general path, whose validation and
+   classification cover everything excluded here), 1 with E', H' written. */
+static int
+eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
+         int far, double *E1, double *H1)
+{
+  const double E = in->E, H = in->H;
+  if (!(E > 0.0 && E <= 0.25 * DBL_MAX && fabs (H) <= 0x1p500 && H * H <= E))
+    return 0;
+  const double c1h = sys->C1[far] * H;
+  if (!(fabs (c1h * H) <= 0.5 * E))
+    return 0;
+  *E1 = fma (c1h, H, E);
+  *H1 = sys->C2[far] * H;
+  return 1;
+}
+
 /* The return map proper; g0_phase, if not NULL, is g(l0) = (1 + l0^2)
    V+^2/(2E) formed from V+ by the caller (chaplygin_discrete_poincare):
    from (E, H) alone it loses V+ when V+^2 << (1 + l0^2) Omega+^2. */
@@ -175,8 +202,27 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (fabs (l0) > CHP_L_MAX || fabs (l1) > CHP_L_MAX)
     return CHAPLYGIN_ERANGE;
 
+  const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
+  const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
+  /* The (E, H) update of the common case first: when only E and H are
+     wanted it is the whole step, and otherwise it is kept, so that E and H
+     never depend on what else is requested. */
+  double E1 = 0.0, H1 = 0.0;
+  const int fast = o.method != CHAPLYGIN_ODE
+    && eh_fast (sys, in, far, &E1, &H1);
+  if (fast && request == 0 && !ev)
+    {
+      *out = *in;
+      out->E = E1;
+      out->H = H1;
+      return CHAPLYGIN_SUCCESS;
+    }
+  /* The classification and the (E, H) update need only E, H and 1 - h^2:
+     the square roots the integrals need are taken only for them. */
   chp_motion m;
-  CHP_TRY (chp_motion_init (in->E, in->H, &m));
+  CHP_TRY (chp_motion_init_eh (in->E, in->H, &m));
+  if (want_theta || want_tau || o.method == CHAPLYGIN_ODE)
+    chp_motion_complete (&m);
   /* g = (1 + l^2) V^2/(2E) at the start: with error-free arithmetic from
      (E, H), accurate for them even when V+ is small beside Omega+, or as
      given from V+ by the Poincare map. */
@@ -204,9 +250,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
     reversal = (l0 * l1 <= 0.0 || g1 <= 0.0);
 
   int iminus = reversal ? start : far;
-  double E1, H1, Vminus, dtheta = 0.0, dtau = 0.0;
-  const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
-  const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
+  double Vminus = 0.0, dtheta = 0.0, dtau = 0.0;
 
   if (o.method == CHAPLYGIN_ODE)
     {
@@ -222,13 +266,19 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   else
     {
       double gm = reversal ? g0 : g1, lm = reversal ? l0 : l1;
-      H1 = sys->C2[iminus] * in->H;
-      /* E + C1 H^2 of (3.7), as a sum of nonnegative terms (accurate also
-         when the collision takes nearly all the energy) */
-      E1 = chp_post_collision_energy (in->E, gm, lm, H1, sys->l_end[1 - iminus]);
-      /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction */
-      Vminus = (reversal ? -in->dir : in->dir)
-        * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
+      if (!fast)
+        {
+          H1 = sys->C2[iminus] * in->H;
+          /* E + C1 H^2 of (3.7), as a sum of nonnegative terms (accurate
+             also when the collision takes nearly all the energy) */
+          E1 = chp_post_collision_energy (in->E, gm, lm, H1,
+                                          sys->l_end[1 - iminus]);
+        }
+      /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction
+         (only the event reports it) */
+      if (ev)
+        Vminus = (reversal ? -in->dir : in->dir)
+          * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
       if (want_theta || want_tau)
         {
           double *pth = want_theta ? &dtheta : NULL;
@@ -276,7 +326,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (ev)
     {
       ev->reversal = reversal;
-      ev->Dc = reversal ? copysign (m.sq, l0) - L0 : 0.0;
+      ev->Dc = reversal ? copysign (sqrt (-m.omh2), l0) - L0 : 0.0;
       ev->Dminus = Dminus;
       ev->Dplus = Delta - Dminus;
       ev->Vminus = Vminus;
@@ -303,7 +353,11 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
        |l| = c = sqrt(h^2 - 1) (g(far end) <= 0 or the far end beyond 0).
    A turning point exactly at the far end counts as a reversal (the peg
    touches the end with zero speed and does not leave it).  E and H are
-   updated by the (3.7) coefficients of the end the peg leaves; heading and
+   updated by the (3.7) coefficients of the end the peg leaves: where
+   H^2 <= E and the collision takes at most half the energy (eh_fast) as
+   E + C1 H^2 by one fma, without a division; elsewhere as the sum of
+   nonnegative terms V-^2/2 + H'^2/(2 (1 + l+^2)); the same way whatever
+   else is requested, so E and H never depend on REQUEST.  Heading and
    time by opt->method (closed form, quadrature: chp_leg; ODE: (3.1)
    integrated to the collision, then (3.6), (3.3), (3.4): every output of
    that route comes from the integration, and an integration that reaches

@@ -152,6 +152,63 @@ START_TEST (eq_B_3)
 }
 END_TEST
 
+/* The (E, H) update of (B.3) on random states of random skates, against
+   (B.3) in binary128 (the coefficients formed in binary128 from the double
+   L0, Delta): E' within 4 eps wherever the collision takes at most half the
+   energy (then E + C1 H^2 does not cancel: the library's C1 carries ~3
+   roundings, its product and sum one each, 4 eps bounds them with E' >= E/2
+   weighing C1's error at most once), H' = C2 H within 2 eps (C2 within an
+   ulp, one product); and E, H, dir bit-identical whether or not anything
+   else (heading, time, peg, the event) is requested, by either method. */
+START_TEST (test_eh_update)
+{
+  tu_rng g;
+  tu_rng_seed (&g, 303);
+  int n_checked = 0, n_small_h = 0;
+  for (int k = 0; k < 20000; k++)
+    {
+      double L0 = tu_uniform (&g, -3, 2), Delta = tu_uniform (&g, 0.05, 3);
+      int dir = k % 2 ? 1 : -1;
+      double V = tu_uniform (&g, 0.05, 2) * dir;
+      double Om = tu_uniform (&g, -1, 1) * pow (10.0, -tu_uniform (&g, 0, 4));
+      chaplygin_discrete sys;
+      chaplygin_discrete_state st, a, b;
+      chaplygin_discrete_event ev;
+      const double q[4] = { dir > 0 ? 0.0 : Delta, V, 0.3, Om };
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+      ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st));
+      int s0 = chaplygin_discrete_step (&sys, &st, 0, NULL, &a, NULL);
+      if (s0 == CHAPLYGIN_ESPIN)
+        continue;
+      ck_assert_ok (s0);
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_ALL, NULL, &b, &ev));
+      ck_assert_msg (a.E == b.E && a.H == b.H && a.dir == b.dir,
+                     "request 0 vs all: E %a/%a H %a/%a", a.E, b.E, a.H, b.H);
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, &QUAD, &b, &ev));
+      ck_assert (a.E == b.E && a.H == b.H && a.dir == b.dir);
+      if (ev.reversal)
+        continue;
+      /* (B.3) in binary128: the peg leaves the far end */
+      q128 lf = (q128) L0 + (dir > 0 ? Delta : 0.0);
+      q128 ls = (q128) L0 + (dir > 0 ? 0.0 : Delta);
+      q128 nf = 1 + lf * lf, ns = 1 + ls * ls;
+      q128 C1 = -(q128) Delta * Delta / (2 * nf * nf * ns);
+      q128 C2 = (1 + (q128) L0 * ((q128) L0 + Delta)) / nf;
+      q128 H = st.H, dE = C1 * H * H;
+      if (!(-dE <= (q128) st.E / 2))
+        continue;
+      ck_assert_rel (a.E, (double) (st.E + dE), 4 * DBL_EPSILON);
+      ck_assert_rel (a.H, (double) (C2 * H), 2 * DBL_EPSILON);
+      n_checked++;
+      n_small_h += st.H * st.H <= st.E;
+    }
+  /* both regimes of the library's update were exercised */
+  ck_assert_int_ge (n_checked, 5000);
+  ck_assert_int_ge (n_small_h, 2000);
+  ck_assert_int_ge (n_checked - n_small_h, 1000);
+}
+END_TEST
+
 START_TEST (eq_B_4)
 {
   /* The reversal rows: the motion turns at D_c (root-finding in the
@@ -663,7 +720,9 @@ main (void)
   tcase_add_loop_test (t, test_step_reference, 0, NREF);
   suite_add_tcase (s, t);
   t = tcase_create ("eq_B_3");
+  tcase_set_timeout (t, 60);
   tcase_add_test (t, eq_B_3);
+  tcase_add_test (t, test_eh_update);
   suite_add_tcase (s, t);
   t = tcase_create ("eq_B_4");
   tcase_add_test (t, eq_B_4);
