@@ -23,7 +23,8 @@ UNIT_CHECKS = \
 	tests/test_massless \
 	tests/test_reversal \
 	tests/test_energy \
-	tests/test_threads
+	tests/test_threads \
+	tests/test_alloc
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
 
@@ -76,3 +77,83 @@ tests_test_energy_CFLAGS = $(TEST_CFLAGS)
 tests_test_energy_LDADD = $(TEST_LDADD)
 
 EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README
+
+# the hot path allocates nothing (a counting malloc interposed in the test)
+tests_test_alloc_SOURCES = tests/test_alloc.c
+tests_test_alloc_CFLAGS = $(TEST_CFLAGS)
+tests_test_alloc_LDADD = $(TEST_LDADD)
+
+# ---- robustness: the tests under sanitizers and valgrind ----------------
+# Each builds the distribution directory in a directory of its own (as
+# `make distcheck' does), so that it works next to an in-tree build.
+
+# `make check-sanitizers': the whole of `make check' (unit tests,
+# verification at level 1, the program's tests) in a build with
+# AddressSanitizer and UndefinedBehaviorSanitizer, any finding fatal; then
+# `make check-tsan'.
+SAN_DIR = $(distdir)-asan
+check-sanitizers: distdir
+	rm -rf $(SAN_DIR) && mv $(distdir) $(SAN_DIR)
+	cd $(SAN_DIR) && ./configure --enable-sanitizers --disable-shared \
+	  --without-arb --enable-werror CFLAGS="-O1 -g" >/dev/null \
+	  && $(MAKE) $(AM_MAKEFLAGS) \
+	  && { nm tools/chaplygin | grep __asan_init >/dev/null \
+	       && nm tools/chaplygin | grep __ubsan_handle >/dev/null \
+	       && nm lib/.libs/libchaplygin-core.a | grep __asan_report >/dev/null \
+	       || { echo "check-sanitizers: the build is not instrumented" >&2; \
+	            exit 1; }; } \
+	  && ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
+	     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	     $(MAKE) $(AM_MAKEFLAGS) check
+	rm -rf $(SAN_DIR)
+	$(MAKE) $(AM_MAKEFLAGS) check-tsan
+.PHONY: check-sanitizers
+
+# `make check-tsan': tests/test_threads (the map, fates and sweeps from
+# several OpenMP threads against a serial run) under ThreadSanitizer.
+# GCC's libgomp is not instrumented and makes TSan report its own
+# synchronisation as races, so this build uses clang with LLVM's libomp
+# and its TSan tool Archer (Debian: clang, libomp-14-dev).
+TSAN_CC = clang
+TSAN_DIR = $(distdir)-tsan
+check-tsan: distdir
+	rm -rf $(TSAN_DIR) && mv $(distdir) $(TSAN_DIR)
+	archer=`$(TSAN_CC) -print-resource-dir`/../../libarcher.so; \
+	test -f "$$archer" || { echo "check-tsan: Archer ($$archer) not" \
+	  "found: install libomp-14-dev" >&2; exit 1; }; \
+	cd $(TSAN_DIR) && ./configure CC=$(TSAN_CC) --disable-shared \
+	  --without-arb --disable-werror \
+	  CFLAGS="-O1 -g -fsanitize=thread" LDFLAGS="-fsanitize=thread" \
+	  >/dev/null \
+	  && grep '^OPENMP_CFLAGS = -fopenmp' Makefile >/dev/null \
+	  && { $(MAKE) $(AM_MAKEFLAGS) tests/test_threads >build.log 2>&1 \
+	       || { cat build.log; exit 1; }; } \
+	  && nm tests/test_threads | grep __tsan_init >/dev/null \
+	  && OMP_NUM_THREADS=4 OMP_TOOL_LIBRARIES=$$archer CK_FORK=no \
+	     TSAN_OPTIONS="ignore_noninstrumented_modules=1 halt_on_error=1 exitcode=66" \
+	     ./tests/test_threads
+	rm -rf $(TSAN_DIR)
+.PHONY: check-tsan
+
+# `make check-valgrind': a subset of the unit tests under valgrind's
+# memcheck (in-process: CK_FORK=no), any error or definite leak fatal.
+# tests/test_alloc replaces malloc itself and is left out; the slowest
+# suites are left out to keep the run short (they run under ASan).
+VALGRIND_CHECKS = tests/test_status tests/test_units tests/test_smooth \
+	tests/test_discrete tests/test_flow tests/test_map tests/test_ellint \
+	tests/test_quad tests/test_ode tests/test_stability
+VALGRIND_DIR = $(distdir)-valgrind
+check-valgrind: distdir
+	rm -rf $(VALGRIND_DIR) && mv $(distdir) $(VALGRIND_DIR)
+	cd $(VALGRIND_DIR) && ./configure --disable-shared --without-arb \
+	  --enable-werror CFLAGS="-O1 -g" >/dev/null \
+	  && $(MAKE) $(AM_MAKEFLAGS) $(VALGRIND_CHECKS) \
+	  && for t in $(VALGRIND_CHECKS); do \
+	    echo "  VALGRIND $$t"; \
+	    CK_FORK=no CK_DEFAULT_TIMEOUT=0 valgrind --tool=memcheck -q \
+	      --error-exitcode=1 --leak-check=full \
+	      --errors-for-leak-kinds=definite ./$$t >$$t.vg.log 2>&1 \
+	      || { cat $$t.vg.log; exit 1; }; \
+	  done
+	rm -rf $(VALGRIND_DIR)
+.PHONY: check-valgrind

@@ -31,25 +31,6 @@ EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sw
 	tools/fuzz-scene.dict scenes doc/figures/figure.sh \
 	doc/figures/style.gp
 
-# `make check-sanitizers': the tests of the program (and the parser's
-# unit tests and fuzz corpus) in a build with AddressSanitizer and
-# UndefinedBehaviorSanitizer, any finding fatal.  Built from the
-# distribution directory, as `make distcheck' does, so that it works next
-# to an in-tree build.
-check-sanitizers: distdir
-	cd $(distdir) && ./configure --enable-sanitizers --disable-shared \
-	  --without-arb --enable-werror CFLAGS="-O1 -g" >/dev/null \
-	  && $(MAKE) $(AM_MAKEFLAGS) \
-	  && { nm tools/chaplygin | grep __asan_init >/dev/null \
-	       && nm tools/chaplygin | grep __ubsan_handle >/dev/null \
-	       || { echo "check-sanitizers: the build is not instrumented" >&2; \
-	            exit 1; }; } \
-	  && ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
-	     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	     $(MAKE) $(AM_MAKEFLAGS) check TESTS="$(CLI_TESTS)"
-	$(am__post_remove_distdir)
-.PHONY: check-sanitizers
-
 # `make fuzz': the libFuzzer build of the scene parser (clang), run for
 # FUZZ_SECONDS on a copy of the corpus; new inputs land in fuzz-work/.
 FUZZ_SECONDS = 60
