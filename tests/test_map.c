@@ -162,15 +162,27 @@ END_TEST
    else (heading, time, peg, the event) is requested, by either method. */
 START_TEST (test_eh_update)
 {
+  /* The (E, H) update against (B.3)/(B.4) in binary128, with the exact
+     classification in binary128 too (a reversal iff moving towards l = 0
+     and H^2 > 2E where the path reaches l = 0, H^2 >= 2E (1 + l1^2) where
+     not), on states of every regime of the library's update: H^2 <= E,
+     H^2 > E without a reversal, and reversals.  Only states whose
+     collision takes at most half the energy are checked against the
+     tolerances: there E' >= E/2 and the bound is C1's few ulps plus the
+     fma's rounding (4 eps); for H' C2's numerator (1 eps, error-free
+     sum), 1 + b^2 with b's own rounding (1.5 eps), the quotient and the
+     product (0.5 eps each): 3.5 eps.
+     Request 0 must give E, H and dir bit-identical to every other request
+     and method. */
   tu_rng g;
   tu_rng_seed (&g, 303);
-  int n_checked = 0, n_small_h = 0;
-  for (int k = 0; k < 20000; k++)
+  int n_checked = 0, n_small_h = 0, n_rev = 0;
+  for (int k = 0; k < 30000; k++)
     {
       double L0 = tu_uniform (&g, -3, 2), Delta = tu_uniform (&g, 0.05, 3);
       int dir = k % 2 ? 1 : -1;
       double V = tu_uniform (&g, 0.05, 2) * dir;
-      double Om = tu_uniform (&g, -1, 1) * pow (10.0, -tu_uniform (&g, 0, 4));
+      double Om = tu_uniform (&g, -1, 1) * pow (10.0, -tu_uniform (&g, -0.7, 4));
       chaplygin_discrete sys;
       chaplygin_discrete_state st, a, b;
       chaplygin_discrete_event ev;
@@ -186,26 +198,36 @@ START_TEST (test_eh_update)
                      "request 0 vs all: E %a/%a H %a/%a", a.E, b.E, a.H, b.H);
       ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, &QUAD, &b, &ev));
       ck_assert (a.E == b.E && a.H == b.H && a.dir == b.dir);
-      if (ev.reversal)
-        continue;
-      /* (B.3) in binary128: the peg leaves the far end */
+      /* the exact classification, binary128 */
       q128 lf = (q128) L0 + (dir > 0 ? Delta : 0.0);
       q128 ls = (q128) L0 + (dir > 0 ? 0.0 : Delta);
       q128 nf = 1 + lf * lf, ns = 1 + ls * ls;
-      q128 C1 = -(q128) Delta * Delta / (2 * nf * nf * ns);
-      q128 C2 = (1 + (q128) L0 * ((q128) L0 + Delta)) / nf;
-      q128 H = st.H, dE = C1 * H * H;
+      q128 H = st.H, H2 = H * H, twoE = 2 * (q128) st.E;
+      int toward = dir * ls < 0, crosses = ls * lf <= 0;
+      q128 bound = crosses ? twoE : twoE * nf;
+      q128 gap = H2 / bound - 1;
+      if (toward && gap < 1e-12Q && gap > -1e-12Q)
+        continue;               /* within rounding of the boundary */
+      int rev = toward && H2 > bound;
+      ck_assert_int_eq (a.dir, rev ? -dir : dir);
+      /* (B.3) or (B.4): the coefficients of the end the peg leaves */
+      q128 nm = rev ? ns : nf, np = rev ? nf : ns;
+      q128 C1 = -(q128) Delta * Delta / (2 * nm * nm * np);
+      q128 C2 = (1 + (q128) L0 * ((q128) L0 + Delta)) / nm;
+      q128 dE = C1 * H2;
       if (!(-dE <= (q128) st.E / 2))
         continue;
       ck_assert_rel (a.E, (double) (st.E + dE), 4 * DBL_EPSILON);
-      ck_assert_rel (a.H, (double) (C2 * H), 2 * DBL_EPSILON);
+      ck_assert_rel (a.H, (double) (C2 * H), 3.5 * DBL_EPSILON);
       n_checked++;
       n_small_h += st.H * st.H <= st.E;
+      n_rev += rev;
     }
-  /* both regimes of the library's update were exercised */
-  ck_assert_int_ge (n_checked, 5000);
+  /* every regime of the library's update was exercised */
+  ck_assert_int_ge (n_checked, 8000);
   ck_assert_int_ge (n_small_h, 2000);
-  ck_assert_int_ge (n_checked - n_small_h, 1000);
+  ck_assert_int_ge (n_checked - n_small_h - n_rev, 1000);
+  ck_assert_int_ge (n_rev, 1000);
 }
 END_TEST
 

@@ -1,0 +1,41 @@
+## bench/local.mk -- `make bench': the work-precision measurement.  Times
+## one step of the return map from each of a randomized set of states for
+## every method and setting of the library, measures the errors against the
+## Arb oracle (verification/oracle --refs) and writes the committed results:
+## bench/work-precision.csv, doc/bench-table.texi (the manual's table) and
+## doc/figures/work-precision.png (gnuplot).  Not part of `make check'.
+noinst_PROGRAMS += bench/work-precision
+bench_work_precision_SOURCES = bench/work-precision.c verification/tap.h
+bench_work_precision_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/verification \
+	-DBENCH_CFLAGS='"$(CFLAGS)"'
+bench_work_precision_LDADD = lib/libchaplygin.la $(CODE_COVERAGE_LIBS) -lm
+
+EXTRA_DIST += bench/work-precision.gp bench/work-precision.csv
+
+if HAVE_ARB
+BENCH_HAVE_ARB = yes
+else
+BENCH_HAVE_ARB = no
+endif
+GNUPLOT = gnuplot
+BENCH_STATES = bench/work-precision-states.txt
+BENCH_REFS = bench/work-precision-refs.txt
+CLEANFILES += $(BENCH_STATES) $(BENCH_REFS)
+
+bench: bench/work-precision
+	@if test $(BENCH_HAVE_ARB) != yes; then \
+	  echo "make bench: the reference values need the Arb oracle" \
+	    "(verification/oracle), and configure did not find Arb" \
+	    "(install libflint-arb-dev and rerun configure)" >&2; \
+	  exit 1; \
+	fi
+	$(MAKE) $(AM_MAKEFLAGS) verification/oracle
+	./bench/work-precision --states $(BENCH_STATES)
+	./verification/oracle --refs $(BENCH_STATES) $(BENCH_REFS)
+	./bench/work-precision --states-in $(BENCH_STATES) --refs $(BENCH_REFS) \
+	  --csv $(srcdir)/bench/work-precision.csv \
+	  --texi $(srcdir)/doc/bench-table.texi
+	$(GNUPLOT) -e "csv = '$(srcdir)/bench/work-precision.csv'" \
+	  -e "png = '$(srcdir)/doc/figures/work-precision.png'" \
+	  $(srcdir)/doc/figures/style.gp $(srcdir)/bench/work-precision.gp
+.PHONY: bench

@@ -1,0 +1,37 @@
+# work-precision.gp -- the work-precision diagram of `make bench' (after
+# doc/figures/style.gp): max relative error (x) against ns per collision
+# (y), log-log, one curve per method swept over its tolerance or precision
+# (labelled; labels of points of a method at the same error are stacked
+# below the first), the baseline and eh-only rows as points.
+#   gnuplot -e "csv = 'bench/work-precision.csv'" \
+#     -e "png = 'doc/figures/work-precision.png'" \
+#     doc/figures/style.gp bench/work-precision.gp
+set output png
+set title 'Work-precision of one step of the return map (B.3)/(B.4), make bench'
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set xrange [1e-17:1]
+set xlabel "max relative error over the states (E', H', heading and time increments)"
+set ylabel 'ns per collision (minimum of repetitions)'
+set key bottom right box opaque
+eps = 2.0**-52
+set arrow from eps, graph 0 to eps, graph 1 nohead dt 3 lc rgb '#888888'
+set label 'eps' at eps, graph 0.97 offset 0.5, 0 tc rgb '#888888'
+sel(m) = strcol('method') eq m ? column('max_rel_error') : NaN
+# the y of a label: that of the point, or below the first point of a run
+# of points with the same error
+px = NaN; py = 0; j = 0; pm = ''
+ylab(y) = (j = (column('max_rel_error') == px && strcol('method') eq pm \
+                ? j + 1 : 0), \
+           py = (j == 0 ? y : py), px = column('max_rel_error'), \
+           pm = strcol('method'), py / 1.35**j)
+labels = "font ',8' left offset 0.8, 0"
+plot csv using (sel('ode')):'ns_per_collision' with linespoints pt 7 ps 1 lw 1.5 lc rgb '#c0392b' title 'ode (odeiv2 rk8pd), tol', \
+     csv using (sel('ode')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#c0392b' notitle, \
+     csv using (sel('quadrature')):'ns_per_collision' with linespoints pt 5 ps 1 lw 1.5 lc rgb '#1f3b73' title 'quadrature (Gauss-Kronrod), tol', \
+     csv using (sel('quadrature')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#1f3b73' notitle, \
+     csv using (sel('closed-form')):'ns_per_collision' with linespoints pt 9 ps 1.6 lw 1.5 lc rgb '#27ae60' title 'closed-form (Carlson), precision', \
+     csv using (sel('closed-form')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#27ae60' notitle, \
+     csv using (sel('eh-only')):'ns_per_collision' with points pt 13 ps 1.6 lc rgb '#8e44ad' title 'eh-only (E, H only)', \
+     csv using (sel('baseline')):'ns_per_collision' with points pt 3 ps 1.6 lc rgb 'black' title 'baseline (bare (E, H) arithmetic)'
