@@ -340,8 +340,10 @@ chaplygin_discrete_collision_loss (const chaplygin_discrete *sys, int dir,
        sigma4 - 1 =  Delta L0/(1 + L0^2)                 (V* < 0),
    b/(1 + b^2) formed without overflow, then log1p; below 2^-500,
    xi4 = -|V*| b/(1 + b^2) (resp. |V*| L0/(1 + L0^2)) directly; for
-   sigma4 < 1/2, log of sigma4 itself (chaplygin_discrete_sigma4), since
-   sigma4 - 1 has then cancelled.
+   sigma4 < 1/2, log of sigma4 itself (formed as in
+   chaplygin_discrete_sigma4), since sigma4 - 1 has then cancelled.
+   Unlike sigma4, no range test: for |L0|, |L0 + Delta| beyond 2^500 the
+   ratios are formed scaled, and xi4 is returned wherever it is finite.
    Accuracy: within ~4 ulps (tests: series and 40-digit references),
    down to Delta = 1e-300.
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite,
@@ -370,9 +372,12 @@ chaplygin_discrete_xi4 (double L0, double Delta, double Vstar, double *xi4)
   else if (u < -0.5)
     {
       /* sigma4 near 0: u has cancelled; log of sigma4 itself, whose
-         numerator 1 + L0 (L0 + Delta) is formed without cancellation */
-      double s4;
-      CHP_TRY (chaplygin_discrete_sigma4 (L0, Delta, dir, &s4, NULL));
+         numerator 1 + L0 (L0 + Delta) is formed without cancellation (as
+         chaplygin_discrete_sigma4, without its 2^500 range test: beyond
+         it chp_collision_ratio scales, and the result is representable) */
+      const double l1 = L0 + Delta;
+      const double s4 = dir > 0 ? chp_collision_ratio (L0, Delta, l1, L0)
+        : chp_collision_ratio (L0, Delta, L0, l1);
       if (!(s4 > 0.0))
         return CHAPLYGIN_EDOM;
       q = log (s4) / Delta;

@@ -561,6 +561,22 @@ START_TEST (eq_4_1)
   /* huge L0: no overflow in b/(1 + b^2) */
   ck_assert_ok (chaplygin_discrete_xi4 (1e200, 1.0, 1.0, &xi));
   ck_assert_rel (xi, -1e-200, 1e-15);
+  /* found by the oracle (issue 6): beyond |L0 + Delta| = 2^500 with
+     sigma4 < 1/2, a value (not sigma4's ERANGE), and EDOM where
+     sigma4 < 0.  Reference: Arb (verification/oracle), confirmed with
+     60-digit decimal arithmetic of sigma4 = (1 + L0 (L0 + Delta))/
+     (1 + (L0 + Delta)^2) = 0.10044926848695838...:
+     xi4 = -5.788672565194712e-164 (condition number ~1.2) */
+  ck_assert_ok (chaplygin_discrete_xi4 (0x1.6b9b9d89981d3p+541,
+                                        0x1.9706a940399aep+544,
+                                        0x1.2733bb8b68b19p+1, &xi));
+  ck_assert_eps (xi, -0x1.aaaf29ebbad23p-543, 8);
+  /* sigma4 = (1 + L0 (L0 + Delta))/(1 + L0^2) < 0 for V* < 0 here
+     (L0 < 0 < L0 + Delta, |L0 (L0 + Delta)| >> 1) */
+  ck_assert_status (chaplygin_discrete_xi4 (-0x1.b7fdc586cb26dp+559,
+                                            0x1.ec2b2e75a8b0ap+565,
+                                            -0x1.6cfca3b9e635fp+1, &xi),
+                    CHAPLYGIN_EDOM);
 }
 END_TEST
 
