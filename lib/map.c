@@ -222,6 +222,25 @@ eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   return 1;
 }
 
+/* E1, raised by at most 8 ulps until the state (E1, H1) with the peg at
+   end iplus has g(l+) > 0 (exactly, for the rounded E1 and H1); E1
+   unchanged if that does not suffice or E1 is not finite. */
+static double
+valid_energy (const chaplygin_discrete *sys, int iplus, double E1, double H1)
+{
+  double E = E1;
+  for (int k = 0; k <= 8 && isfinite (E); k++)
+    {
+      chp_motion m;
+      if (chp_motion_init_eh (E, H1, &m) == CHAPLYGIN_SUCCESS
+          && chp_motion_g_exact (&m, sys->l_end[iplus], sys->l_err[iplus])
+          > 0.0)
+        return E;
+      E = nextafter (E, INFINITY);
+    }
+  return E1;
+}
+
 /* The return map proper; g0_phase, if not NULL, is g(l0) = (1 + l0^2)
    V+^2/(2E) formed from V+ by the caller (chaplygin_discrete_poincare):
    from (E, H) alone it loses V+ when V+^2 << (1 + l0^2) Omega+^2. */
@@ -321,6 +340,13 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
              also when the collision takes nearly all the energy) */
           E1 = chp_post_collision_energy (in->E, gm, lm, H1,
                                           sys->l_end[1 - iminus]);
+          /* V- nearly 0 (a turning point within rounding of the end):
+             E1 may round below H1^2/(2 (1 + l+^2)), which would make the
+             output an invalid state (V+'^2 < 0); the true E' is above
+             it, so raise E1 by ulps (at most 8, within its error bound)
+             until the output is valid */
+          if (gm <= 0x1p-40 * chp_one_plus_sq (lm))
+            E1 = valid_energy (sys, 1 - iminus, E1, H1);
         }
       /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction
          (only the event reports it) */

@@ -231,6 +231,38 @@ START_TEST (test_eh_update)
 }
 END_TEST
 
+START_TEST (test_output_valid_near_turning)
+{
+  /* Found by tests/test_reversal (eq_B_6): a motion whose turning point
+     lies within rounding of the far end (g there 2.0e-17 of H^2, by
+     exact rational arithmetic of the double inputs) reaches it with
+     V- ~ 0; E' = V-^2/2 + H'^2/(2 (1 + l+^2)) then rounded below
+     H'^2/(2 (1 + l+^2)) gave an output state with V+'^2 < 0, which the
+     next step refused (CHAPLYGIN_ESTATE).  The output must be a valid
+     state (the true one is: V+'^2 = V-^2 > 0), within a few ulps of the
+     exact E' (rational arithmetic: 0x1.f0ff86a13f417p-4 rounded). */
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, 0x1.98ec824b97b34p-8,
+                                         0x1.c7851e17c4c97p-4));
+  const chaplygin_discrete_state st = { -1, 0x1.f722ce252ce98p-4,
+                                        0x1.fb8efa71bceb8p-2, 0.0, 0.0,
+                                        { 0.0, 0.0 } };
+  const unsigned req[2] = { 0, CHAPLYGIN_WANT_ALL };
+  for (int k = 0; k < 2; k++)
+    {
+      chaplygin_discrete_state a, b;
+      chaplygin_discrete_event ev;
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, req[k], NULL, &a,
+                                             k ? &ev : NULL));
+      ck_assert_int_eq (a.dir, -1);
+      ck_assert_eps (a.E, 0x1.f0ff86a13f417p-4, 8);
+      int s2 = chaplygin_discrete_step (&sys, &a, req[k], NULL, &b, NULL);
+      ck_assert_msg (s2 == CHAPLYGIN_SUCCESS, "next step: %s",
+                     chaplygin_strerror (s2));
+    }
+}
+END_TEST
+
 START_TEST (eq_B_4)
 {
   /* The reversal rows: the motion turns at D_c (root-finding in the
@@ -768,6 +800,7 @@ main (void)
   tcase_add_test (t, test_requests_and_conventions);
   tcase_add_test (t, test_step_errors);
   tcase_add_test (t, test_extremes_found_in_review);
+  tcase_add_test (t, test_output_valid_near_turning);
   suite_add_tcase (s, t);
   return tu_run (s);
 }
