@@ -207,7 +207,8 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
   double C1, C2;
   chp_collision_coefficients (L0, Delta, Dm, &C1, &C2);
   double Hp = C2 * H;
-  double Ep = chp_post_collision_energy (E, g, b, Hp, bp);
+  /* never above E (C1 <= 0; see chaplygin_discrete_step) */
+  double Ep = fmin (chp_post_collision_energy (E, g, b, Hp, bp), E);
   if (!isfinite (Ep) || !isfinite (Hp))
     return CHAPLYGIN_ERANGE;
   pplus[CHAPLYGIN_D] = Delta - Dm;

@@ -141,19 +141,36 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
 {
   double L0 = sys->L0, Delta = sys->Delta;
   double n0 = chp_one_plus_sq (l0);
+  /* Omega0 = H/n0 below 2^-900 (near or in the subnormals): the route
+     works with Omega and theta times 2^k, bringing Omega0 to about 2^-900
+     (exact; (3.6) and (3.4) are linear in them), so that a tiny or
+     subnormal H keeps its relative precision up to the final rounding of
+     H' and dtheta (chp_ode_until scales further for its integration) */
+  int k = 0;
+  if (m->H != 0.0 && ilogb (m->H) - ilogb (n0) < -900)
+    k = -900 - (ilogb (m->H) - ilogb (n0));
   double q0[4] = { in->dir > 0 ? 0.0 : Delta,
-                   in->dir * sqrt (2.0 * m->E * (g0 / n0)), 0.0, m->H / n0 };
+                   in->dir * sqrt (2.0 * m->E * (g0 / n0)), 0.0,
+                   ldexp (m->H, k) / n0 };
   double q1[4], qp[4], t;
   int turned;
-  CHP_TRY (chp_ode_until (L0, q0, 0.0, Delta, 0, tol, q1, &t, &turned));
-  CHP_TRY (chaplygin_discrete_collide (L0, Delta, q1, qp));
+  CHP_TRY (chp_ode_until (L0, q0, k, 0.0, Delta, 0, tol, q1, &t, &turned));
+  /* the integrated state at the end the peg leaves is one the collision
+     rule refuses (V- = 0 or V-^2 < 0 by the integration's error: a
+     turning point within that error of the end): the integration cannot
+     be trusted there, as when it reaches the wrong end */
+  int st = chaplygin_discrete_collide (L0, Delta, q1, qp);
+  if (st == CHAPLYGIN_ESTATE)
+    return CHAPLYGIN_ENOCONV;
+  CHP_TRY (st);
   CHP_TRY (chaplygin_discrete_energy (L0, qp[CHAPLYGIN_D], qp[CHAPLYGIN_V],
-                                      qp[CHAPLYGIN_OMEGA], E1));
+                                      ldexp (qp[CHAPLYGIN_OMEGA], -k), E1));
   CHP_TRY (chaplygin_discrete_momentum (L0, qp[CHAPLYGIN_D],
                                         qp[CHAPLYGIN_OMEGA], H1));
+  *H1 = ldexp (*H1, -k);
   *iminus = q1[CHAPLYGIN_D] == Delta ? 1 : 0;
   *Vminus = q1[CHAPLYGIN_V];
-  *dtheta = q1[CHAPLYGIN_THETA];
+  *dtheta = ldexp (q1[CHAPLYGIN_THETA], -k);
   *dtau = t;
   return CHAPLYGIN_SUCCESS;
 }
@@ -340,6 +357,10 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
              also when the collision takes nearly all the energy) */
           E1 = chp_post_collision_energy (in->E, gm, lm, H1,
                                           sys->l_end[1 - iminus]);
+          /* a collision never adds energy (C1 <= 0): where it takes less
+             than an ulp the sum may round above E, and E itself is then
+             the nearer value */
+          E1 = fmin (E1, in->E);
           /* V- nearly 0 (a turning point within rounding of the end):
              E1 may round below H1^2/(2 (1 + l+^2)), which would make the
              output an invalid state (V+'^2 < 0); the true E' is above

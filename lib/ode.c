@@ -34,10 +34,15 @@
 struct ode_params
 {
   double l0;                    /* L0 + D0: the position is d = D - D0 */
+  int k;                        /* theta and Omega integrated times 2^k */
 };
 
-/* (3.1) in time: y = {d, V, theta, Omega}, d = D - D0, so l = l0 + d:
-   the field of the library with L0 := l0 and D := d. */
+/* (3.1) in time: y = {d, V, 2^k theta, 2^k Omega}, d = D - D0, so
+   l = l0 + d: the field of the library with L0 := l0 and D := d, whose
+   dV/dtau = l Omega^2 is then 2^(2k) too large: scaled back exactly (to
+   an underflow, where the term is far below V's rounding).  (3.1) is
+   linear in theta and Omega apart from that term: the scaling keeps a
+   tiny (subnormal) Omega to full relative precision. */
 static int
 rhs_time (double t, const double y[], double dydt[], void *p)
 {
@@ -45,6 +50,8 @@ rhs_time (double t, const double y[], double dydt[], void *p)
   const struct ode_params *par = p;
   if (chaplygin_discrete_field (par->l0, y, dydt) != CHAPLYGIN_SUCCESS)
     return GSL_EBADFUNC;
+  if (par->k)
+    dydt[CHAPLYGIN_V] = ldexp (dydt[CHAPLYGIN_V], -2 * par->k);
   return GSL_SUCCESS;
 }
 
@@ -114,7 +121,7 @@ state_at (struct integrator *it, gsl_odeiv2_system *sys, double ta,
    the analytic derivative of the event function; every iterate integrated
    from (lo, ylo). */
 static int
-refine (struct integrator *it, gsl_odeiv2_system *sys, double l0, int comp,
+refine (struct integrator *it, gsl_odeiv2_system *sys, int comp,
         double target, double lo, const double ylo[4], double hi,
         const double yhi[4], double *te, double ye[4])
 {
@@ -150,8 +157,10 @@ refine (struct integrator *it, gsl_odeiv2_system *sys, double l0, int comp,
         lo = t, flo = f;
       else
         hi = t, fhi = f;
+      const struct ode_params *par = sys->params;
       double df = comp == CHAPLYGIN_D ? y[CHAPLYGIN_V]
-        : (l0 + y[CHAPLYGIN_D]) * y[CHAPLYGIN_OMEGA] * y[CHAPLYGIN_OMEGA];
+        : ldexp ((par->l0 + y[CHAPLYGIN_D]) * y[CHAPLYGIN_OMEGA]
+                 * y[CHAPLYGIN_OMEGA], -2 * par->k);
       double tn = df != 0.0 ? t - f / df : 0.5 * (lo + hi);
       if (tn == t)
         break;                  /* converged to rounding */
@@ -176,14 +185,14 @@ refine (struct integrator *it, gsl_odeiv2_system *sys, double l0, int comp,
    rest; CHAPLYGIN_ERANGE if the energy overflows; CHAPLYGIN_ENOMEM if an
    allocation returns NULL. */
 int
-chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
+chp_ode_until (double L0, const double q0[4], int k_in, double Dlo, double Dhi,
                int stop_at_turn, double tol, double q1[4], double *tau,
                int *turned)
 {
   double D0 = q0[CHAPLYGIN_D], l0 = L0 + D0;
   double n0 = chp_one_plus_sq (l0);
-  double twoE = q0[CHAPLYGIN_V] * q0[CHAPLYGIN_V]
-    + n0 * q0[CHAPLYGIN_OMEGA] * q0[CHAPLYGIN_OMEGA];
+  double om0 = ldexp (q0[CHAPLYGIN_OMEGA], -k_in);
+  double twoE = q0[CHAPLYGIN_V] * q0[CHAPLYGIN_V] + n0 * om0 * om0;
   if (!isfinite (twoE))
     return CHAPLYGIN_ERANGE;
   if (!(twoE > 0.0))
@@ -218,10 +227,22 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
       return CHAPLYGIN_ENOMEM;
     }
 
-  struct ode_params par = { l0 };
+  /* theta and Omega times 2^k when |Omega| is below 2^-200 in these
+     units (1/2 <= 2^k |Omega| < 1): their error control is then relative
+     down to the subnormals, where the floor 1e-300 above would make it
+     absolute; theta starts at q0[THETA] + 0 (scaled from 0).  The
+     caller's own scale k_in adds to it. */
+  int k = 0;
+  double om = q0[CHAPLYGIN_OMEGA] * lambda;
+  if (om != 0.0 && fabs (om) < 0x1p-200)
+    {
+      frexp (om, &k);
+      k = -k;
+    }
+  struct ode_params par = { l0, k + k_in };
   gsl_odeiv2_system sys = { rhs_time, NULL, 4, &par };
 
-  double y[4] = { 0.0, q0[1] * lambda, q0[2], q0[3] * lambda };
+  double y[4] = { 0.0, q0[1] * lambda, k ? 0.0 : q0[2], ldexp (om, k) };
   double t = 0.0, h = 1e-3 * fmin (lscale, 1.0);
   int status = CHAPLYGIN_ENOCONV, event = 0;    /* 1: D bound, 2: V = 0 */
   double te = 0.0, ye[4];
@@ -237,7 +258,7 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
       if (ya[1] * y[1] < 0.0)
         {
           double tt, yt[4];
-          status = refine (&it, &sys, l0, CHAPLYGIN_V, 0.0, ta, ya, t, y, &tt, yt);
+          status = refine (&it, &sys, CHAPLYGIN_V, 0.0, ta, ya, t, y, &tt, yt);
           if (status != CHAPLYGIN_SUCCESS)
             break;
           if (yt[0] >= dhi || yt[0] <= dlo)
@@ -264,7 +285,7 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
       if (yc[0] >= dhi || yc[0] <= dlo)
         {
           int upper = yc[0] >= dhi;
-          status = refine (&it, &sys, l0, CHAPLYGIN_D, upper ? dhi : dlo, ta, ya, tc,
+          status = refine (&it, &sys, CHAPLYGIN_D, upper ? dhi : dlo, ta, ya, tc,
                            yc, &te, ye);
           if (status != CHAPLYGIN_SUCCESS)
             break;
@@ -278,8 +299,8 @@ chp_ode_until (double L0, const double q0[4], double Dlo, double Dhi,
 
   q1[CHAPLYGIN_D] = event == 1 ? ye[0] : D0 + ye[0];
   q1[CHAPLYGIN_V] = ye[1] / lambda;
-  q1[CHAPLYGIN_THETA] = ye[2];
-  q1[CHAPLYGIN_OMEGA] = ye[3] / lambda;
+  q1[CHAPLYGIN_THETA] = k ? q0[CHAPLYGIN_THETA] + ldexp (ye[2], -k) : ye[2];
+  q1[CHAPLYGIN_OMEGA] = ldexp (ye[3] / lambda, -k);
   *tau = te * lambda;
   *turned = (event == 2);
   return CHAPLYGIN_SUCCESS;

@@ -24,6 +24,7 @@ UNIT_CHECKS = \
 	tests/test_reversal \
 	tests/test_energy \
 	tests/test_threads \
+	tests/test_extremes \
 	tests/test_alloc
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
@@ -78,6 +79,11 @@ tests_test_energy_LDADD = $(TEST_LDADD)
 
 EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README
 
+# the extremes of issue 6: every entry point, each method, at the edges of
+# its domain (documented result with its accuracy, or a documented status)
+tests_test_extremes_SOURCES = tests/test_extremes.c
+tests_test_extremes_CFLAGS = $(TEST_CFLAGS)
+tests_test_extremes_LDADD = $(TEST_LDADD) -lquadmath
 # the hot path allocates nothing (a counting malloc interposed in the test)
 tests_test_alloc_SOURCES = tests/test_alloc.c
 tests_test_alloc_CFLAGS = $(TEST_CFLAGS)

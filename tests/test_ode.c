@@ -21,7 +21,7 @@ START_TEST (test_lands_on_bound)
      event, and the exact landing on the bound (Henon's trick). */
   double L0 = 0.6125, q0[4] = { 0.0, 0.8, 0.25, 0.45 }, q1[4], tau;
   int turned;
-  ck_assert_ok (chp_ode_until (L0, q0, 0.0, 0.75, 0, 1e-13, q1, &tau, &turned));
+  ck_assert_ok (chp_ode_until (L0, q0, 0, 0.0, 0.75, 0, 1e-13, q1, &tau, &turned));
   ck_assert (q1[0] == 0.75);
   ck_assert (!turned);
   double E0, H0, E1, H1;
@@ -39,7 +39,7 @@ START_TEST (test_straight_line)
   /* Route: Omega = 0 is the straight line D = D0 + V tau, exactly. */
   double q0[4] = { 0.125, -1.5, 0.3, 0.0 }, q1[4], tau;
   int turned;
-  ck_assert_ok (chp_ode_until (-2.0, q0, -1.0, 2.0, 0, 1e-13, q1, &tau, &turned));
+  ck_assert_ok (chp_ode_until (-2.0, q0, 0, -1.0, 2.0, 0, 1e-13, q1, &tau, &turned));
   ck_assert (q1[0] == -1.0);
   ck_assert_rel (tau, 1.125 / 1.5, 1e-14);
   ck_assert_rel (q1[1], -1.5, 1e-15);
@@ -62,12 +62,12 @@ START_TEST (test_turning_point)
   invariants (L0, q0, &E, &H);
   double lc = sqrt (H * H / (2 * E) - 1.0);
   ck_assert (lc < 1.4 && lc > 0.4);
-  ck_assert_ok (chp_ode_until (L0, q0, 0.0, 1.0 + 1e-9, 1, 1e-13, q1, &tau,
+  ck_assert_ok (chp_ode_until (L0, q0, 0, 0.0, 1.0 + 1e-9, 1, 1e-13, q1, &tau,
                                &turned));
   ck_assert (turned);
   ck_assert (q1[1] == 0.0);
   ck_assert_rel (L0 + q1[0], lc, 1e-12);
-  ck_assert_ok (chp_ode_until (L0, q0, 0.0, 1.0, 0, 1e-13, q1, &tau, &turned));
+  ck_assert_ok (chp_ode_until (L0, q0, 0, 0.0, 1.0, 0, 1e-13, q1, &tau, &turned));
   ck_assert (q1[0] == 1.0);
   ck_assert_rel (q1[1], 0.2, 1e-12);
   ck_assert_rel (q1[3], q0[3], 1e-12);
@@ -87,7 +87,7 @@ START_TEST (test_exit_before_turn)
   invariants (L0, q0, &E, &H);
   double lc = sqrt (H * H / (2 * E) - 1.0), Dc = lc - L0;
   double Dlo = Dc + 1e-9;
-  ck_assert_ok (chp_ode_until (L0, q0, Dlo, 2.0, 0, 1e-13, q1, &tau, &turned));
+  ck_assert_ok (chp_ode_until (L0, q0, 0, Dlo, 2.0, 0, 1e-13, q1, &tau, &turned));
   ck_assert (!turned);
   ck_assert (q1[0] == Dlo);
   double l = L0 + Dlo;
@@ -96,7 +96,7 @@ START_TEST (test_exit_before_turn)
      2E/V^2 ~ 1e9; the integration error 1e-13 relative: 1e-3 in V */
   ck_assert_rel (q1[1], -sqrt (v2), 1e-3);
   /* with stop_at_turn the turn is not reported: the exit comes first */
-  ck_assert_ok (chp_ode_until (L0, q0, Dlo, 2.0, 1, 1e-13, q1, &tau, &turned));
+  ck_assert_ok (chp_ode_until (L0, q0, 0, Dlo, 2.0, 1, 1e-13, q1, &tau, &turned));
   ck_assert (!turned && q1[0] == Dlo);
 }
 END_TEST
@@ -114,7 +114,7 @@ START_TEST (test_saddle)
   double V = sqrt (H * H - (1 + l0 * l0) * Om * Om);  /* 2E = H^2 */
   double spin[4] = { 0.0, V, 0.0, Om }, q1[4], tau, E0, H0, E1, H1;
   int turned;
-  ck_assert_ok (chp_ode_until (L0, spin, 0.0, 1.0, 0, 1e-10, q1, &tau,
+  ck_assert_ok (chp_ode_until (L0, spin, 0, 0.0, 1.0, 0, 1e-10, q1, &tau,
                                &turned));
   ck_assert (q1[0] == 0.0 || q1[0] == 1.0);
   invariants (L0, spin, &E0, &H0);
@@ -130,11 +130,11 @@ START_TEST (test_failures)
   int turned = 7;
   /* At rest: no event. */
   double rest[4] = { 0.0, 0.0, 0.0, 0.0 };
-  ck_assert_status (chp_ode_until (0.5, rest, 0.0, 1.0, 0, 1e-12, q1, &tau,
+  ck_assert_status (chp_ode_until (0.5, rest, 0, 0.0, 1.0, 0, 1e-12, q1, &tau,
                                    &turned), CHAPLYGIN_ESTATE);
   ck_assert (q1[0] == 7 && tau == 7 && turned == 7);
   double big[4] = { 0.0, 1e300, 0.0, 1e300 };
-  ck_assert_status (chp_ode_until (0.5, big, 0.0, 1.0, 0, 1e-12, q1, &tau,
+  ck_assert_status (chp_ode_until (0.5, big, 0, 0.0, 1.0, 0, 1e-12, q1, &tau,
                                    &turned), CHAPLYGIN_ERANGE);
 }
 END_TEST
