@@ -54,3 +54,11 @@ verification_oracle_LDADD = $(VERIFICATION_LDADD) $(ARB_LIBS)
 accuracy-tables: verification/oracle
 	CHAPLYGIN_VERIFY_LEVEL=2 ./verification/oracle --table $(srcdir)/doc/accuracy.texi
 .PHONY: accuracy-tables
+
+# The extremes of issue 6 over long runs (10^6 collisions, 10^7 at level
+# 2), the massless limit, the spinning state and Delta's extremes, against
+# a binary128 model (libquadmath): see its header comment.
+VERIFICATION_CHECKS += verification/extremes
+verification_extremes_SOURCES = verification/extremes.c verification/tap.h
+verification_extremes_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+verification_extremes_LDADD = $(VERIFICATION_LDADD) -lquadmath

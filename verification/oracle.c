@@ -57,7 +57,13 @@
    near-reversal (a turning point within 1e-15..1e-6 Delta of the far end,
    either side), near-spinning (|2E/H^2 - 1| in 1e-15..1e-8, the mass
    centre in the slot), tiny Delta (1e-12..1e-6), huge Delta (1e3..1e6),
-   large |L0| (1e3..1e12 or ..1e100), tiny |L0| (1e-12..1e-3).  Quantities: the heading and time of
+   large |L0| (1e3..1e12 or ..1e100), tiny |L0| (1e-12..1e-3), and the
+   extremes of issue 6: extreme |L0| (1e100 to the cap 2^500 of
+   lib/internal.h, and above it to 1e200, where the library must refuse
+   with CHAPLYGIN_ERANGE), tiny H (1e-300..1e-200, subnormal, +-0),
+   reversal at an ulp (a turning point within a few ulps of the far end,
+   or exactly on it) and spinning at an ulp (2E/H^2 = 1 +- k ulps,
+   k = 1..4).  Quantities: the heading and time of
    a leg (chaplygin_discrete_heading), the next E, H, theta, tau of the
    return map and the turning point D_c of a reversing segment
    (chaplygin_discrete_step, 4 collisions per start, each compared from
@@ -66,8 +72,13 @@
 
    Checks (TAP): the oracle reached its accuracy everywhere; its two
    routes agree; the library succeeded wherever the motion is defined
-   (two documented refusals are counted instead: see run_legs); reversal
-   flags and CHAPLYGIN_ESPIN exactly as the oracle decides them; then one
+   (two documented refusals are counted instead: see run_legs) and refused
+   beyond the cap as documented (counted: see beyond_cap); reversal
+   flags and CHAPLYGIN_ESPIN exactly as the oracle decides them; the ODE
+   method never refuses a valid state with CHAPLYGIN_ESTATE (it did with a
+   turning point within ulps of the far end, and lost its relative
+   accuracy at a subnormal H, until both were fixed in lib/map.c and
+   lib/ode.c; its subnormal results are in the tables); then one
    check per method, quantity and data set: every error within its
    tolerance (the rule is stated above tol_ulps: max(16, 8 kappa) ulps
    for the closed form, kappa the condition number computed by the oracle).
@@ -238,15 +249,17 @@ integrate (arb_t res, iparam *p, const arb_t lo, const arb_t hi, slong prec)
   arb_t w;
   mag_t tol;
   acb_calc_integrate_opt_t opt;
-  double est = 0;
+  mag_t est, m;
   acb_init (a), acb_init (b), acb_init (r), acb_init (z);
   arb_init (w);
-  mag_init (tol);
+  mag_init (tol), mag_init (est), mag_init (m);
   acb_set_arb (a, lo);
   acb_set_arb (b, hi);
   arb_sub (w, hi, lo, prec);
   /* a magnitude for the absolute tolerance: the largest of three samples
-     times the width (the effort only; the enclosure is checked below) */
+     times the width (the effort only; the enclosure is checked below),
+     as Arb magnitudes: the integrand of a leg at |l| ~ 1e200 is below the
+     double range */
   for (int k = 0; k <= 2; k++)
     {
       acb_set_arb (z, w);
@@ -254,14 +267,13 @@ integrate (arb_t res, iparam *p, const arb_t lo, const arb_t hi, slong prec)
       acb_mul_2exp_si (z, z, -1);
       acb_add_arb (z, z, lo, prec);
       integrand (r, z, p, 0, prec);
-      est = fmax (est, fabs (mid_d (acb_realref (r))));
+      arf_get_mag (m, arb_midref (acb_realref (r)));
+      mag_max (est, est, m);
     }
-  est *= fabs (mid_d (w));
-  if (est > 0 && isfinite (est))
-    {
-      mag_set_d (tol, est);
-      mag_mul_2exp_si (tol, tol, -(GOAL + 10));
-    }
+  arf_get_mag (m, arb_midref (w));
+  mag_mul (est, est, m);
+  if (!mag_is_zero (est) && mag_is_finite (est))
+    mag_mul_2exp_si (tol, est, -(GOAL + 10));
   else
     mag_set_ui_2exp_si (tol, 1, -prec);
   acb_calc_integrate_opt_init (opt);
@@ -271,7 +283,7 @@ integrate (arb_t res, iparam *p, const arb_t lo, const arb_t hi, slong prec)
   int ok = accurate (res) && arb_is_finite (res);
   acb_clear (a), acb_clear (b), acb_clear (r), acb_clear (z);
   arb_clear (w);
-  mag_clear (tol);
+  mag_clear (tol), mag_clear (est), mag_clear (m);
   return ok ? ORC_OK : ORC_INACC;
 }
 
@@ -584,7 +596,17 @@ legendre_check (const arb_t E2, const arb_t H, const arb_t ls, int s,
   int r2;
   arb_init (th2), arb_init (ta2), arb_init (t);
   r2 = leg_legendre (E2, H, ls, s, W, th2, ta2, prec);
-  if (r2 == ORC_OK)
+  if (r2 == ORC_OK && arb_is_zero (th2))
+    {
+      /* H = 0: both routes give an exact zero heading */
+      if (!arb_is_zero (th))
+        worst_legendre = INFINITY;
+      arb_sub (t, ta, ta2, HP (prec));
+      arb_div (t, t, ta2, HP (prec));
+      worst_legendre = fmax (worst_legendre, fabs (mid_d (t)));
+      n_legendre++;
+    }
+  else if (r2 == ORC_OK)
     {
       arb_abs (t, th);
       arb_sub (t, t, th2, HP (prec));
@@ -830,7 +852,8 @@ ulp_err (double lib, const arb_t ref)
 enum
 { Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2, NQ };
 enum
-{ S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, S_SMALL, NS };
+{ S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, S_SMALL, S_XL, S_TINYH,
+  S_ULPREV, S_ULPSPIN, NS };
 enum
 { M_CF, M_QUAD, M_ODE, NM };
 
@@ -865,22 +888,37 @@ static const char *const qtexi[NQ] = {
 
 static const char *const sname[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny Delta", "huge Delta",
-  "large |L0|", "tiny |L0|"
+  "large |L0|", "tiny |L0|", "extreme |L0|", "tiny H", "reversal at an ulp",
+  "spinning at an ulp"
 };
 
 static const char *const stexi[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny @math{Delta}",
-  "huge @math{Delta}", "large @math{|L_0|}", "tiny @math{|L_0|}"
+  "huge @math{Delta}", "large @math{|L_0|}", "tiny @math{|L_0|}",
+  "extreme @math{|L_0|}", "tiny @math{H}", "reversal at an ulp",
+  "spinning at an ulp"
 };
 
 static const char *const mname[NM] = {
   "closed form", "quadrature", "ODE"
 };
 
+/* The ill-conditioned state sets: one collision per start, legs ending
+   at the far end or at the last double before the turning point. */
 static int
 ill (int set)
 {
-  return set == S_REV || set == S_SPIN;
+  return set == S_REV || set == S_SPIN || set == S_ULPREV
+    || set == S_ULPSPIN;
+}
+
+/* The sets whose parameters (L0, Delta) are those of another set: only
+   their states are new, and the parameter quantities (sigma4, xi4, C1,
+   C2) are not run on them. */
+static int
+state_set (int set)
+{
+  return ill (set) || set == S_TINYH;
 }
 
 typedef struct
@@ -894,6 +932,12 @@ typedef struct
 static char point[200];
 
 static stat_t st[NM][NQ][NS];
+/* ODE steps that refuse a valid state with CHAPLYGIN_ESTATE (it did, with
+   a turning point within ulps of the far end, until its integrated state
+   refused by the collision rule became CHAPLYGIN_ENOCONV): none allowed. */
+static long n_f2;
+static char f2_first[300];
+static int set_ran[NS];         /* the sets run (all but with --set) */
 
 /* One comparison: error ERR (ulps) against its tolerance TOL (ulps). */
 static void
@@ -987,6 +1031,59 @@ gen_params (int set, unsigned long long *seed, double *L0, double *Delta)
       if (rsign (seed) < 0)
         *L0 = -(*L0 + *Delta);
       break;
+    case S_ULPREV:
+      /* as near-reversal with |l_f| in [0.7, 3] at the far end (where an
+         ulp of H moves the turning point by at most a few ulps of l_f);
+         one in two with l_f = +-3/4, +-15/8 or +-63/16 exactly and a
+         dyadic Delta: 1 + l_f^2 is then the square of a dyadic, and the
+         turning point can sit exactly on the far end (gen_state) */
+      *Delta = tap_uniform (seed, 0.2, 3);
+      if (tap_uniform (seed, 0, 1) < 0.5)
+        {
+          static const double lfx[3] = { 0.75, 1.875, 3.9375 };
+          double lf = lfx[(int) tap_uniform (seed, 0, 3)];
+          *Delta = floor (tap_uniform (seed, 2, 24)) / 8;
+          *L0 = rsign (seed) < 0 ? lf : -lf - *Delta;
+          break;
+        }
+      *L0 = tap_uniform (seed, 0.7, 3);
+      if (rsign (seed) < 0)
+        *L0 = -(*L0 + *Delta);
+      break;
+    case S_XL:
+      /* |L0| from 1e100 to the library's cap |L0 + D| <= 2^500 ~ 3.27e150
+         (CHP_L_MAX, lib/internal.h); one in ten within 3 ulps of the cap
+         on either side, one in five above it, up to 1e200 (documented
+         refusal, CHAPLYGIN_ERANGE); a third of them with the slot on the
+         scale of |L0| (L0/Delta in [-1.5, 0.5]: the mass centre can be in
+         the slot, and legs run from |l| ~ 1e150 to l = 0) */
+      {
+        double u = tap_uniform (seed, 0, 1), mag;
+        if (u < 0.1)
+          {
+            mag = 0x1p500;
+            for (int k = (int) floor (tap_uniform (seed, -3, 4)); k != 0;
+                 k += k > 0 ? -1 : 1)
+              mag = nextafter (mag, k > 0 ? HUGE_VAL : 0.0);
+          }
+        else if (u < 0.3)
+          mag = log_uniform (seed, 150.52, 200);
+        else
+          mag = log_uniform (seed, 100, 150.5);
+        if (u >= 0.1 && tap_uniform (seed, 0, 1) < 1.0 / 3)
+          {
+            *Delta = mag;
+            *L0 = tap_uniform (seed, -1.5, 0.5) * mag;
+          }
+        else
+          {
+            *L0 = rsign (seed) * mag;
+            *Delta = tap_uniform (seed, 0.1, 3);
+          }
+      }
+      break;
+    case S_ULPSPIN:
+      /* fall through: the parameters of near-spinning */
     case S_SPIN:                /* the mass centre inside the slot */
       *Delta = tap_uniform (seed, 0.3, 3);
       *L0 = -tap_uniform (seed, 0.1, 0.9) * *Delta;
@@ -1012,11 +1109,36 @@ gen_params (int set, unsigned long long *seed, double *L0, double *Delta)
       *L0 = rsign (seed) * log_uniform (seed, -12, -3);
       *Delta = tap_uniform (seed, 0.1, 3);
       break;
-    default:
+    default:                    /* ordinary, tiny H */
       *L0 = tap_uniform (seed, -3, 2);
       *Delta = tap_uniform (seed, 0.1, 3);
       break;
     }
+}
+
+/* The double nearest to sqrt(2E (1 + l_f^2)), l_f = L0 + Delta (dir > 0)
+   or L0 exactly: the momentum whose turning point is the far end. */
+static double
+momentum_at_end (double L0, double Delta, int dir, double E)
+{
+  const slong hp = 4 * PREC_MAX;
+  arb_t lf, t;
+  arb_init (lf), arb_init (t);
+  arb_set_d (lf, L0);
+  if (dir > 0)
+    {
+      arb_set_d (t, Delta);
+      arb_add (lf, lf, t, hp);
+    }
+  arb_sqr (t, lf, hp);
+  arb_add_ui (t, t, 1, hp);
+  arb_mul_2exp_si (t, t, 1);
+  arb_set_d (lf, E);
+  arb_mul (t, t, lf, hp);
+  arb_sqrt (t, t, hp);
+  double H = mid_d (t);
+  arb_clear (lf), arb_clear (t);
+  return H;
 }
 
 /* A post-collision state (dir, E, H) of a data set. */
@@ -1027,6 +1149,77 @@ gen_state (int set, unsigned long long *seed, double L0, double Delta,
   double ls, lf, m, c;
   switch (set)
     {
+    case S_ULPREV:
+      {
+        /* H within 3 ulps of sqrt(2E (1 + l_f^2)), whose turning point is
+           the far end exactly: the turning point within a few ulps of l_f
+           (an ulp of H moves it by about (1 + l_f^2)/l_f^2 ulps of l_f),
+           on either side, or (exact l_f of gen_params, E = s^2/2 with a
+           dyadic s, offset 0) exactly on it */
+        *dir = L0 > 0 ? -1 : 1;
+        lf = *dir > 0 ? L0 + Delta : L0;
+        int exact = (fabs (lf) == 0.75 || fabs (lf) == 1.875
+                     || fabs (lf) == 3.9375) && (*dir < 0 || lf - L0 == Delta);
+        int k;
+        if (exact)
+          {
+            double sv = floor (tap_uniform (seed, 2, 12)) / 4;
+            *E = 0.5 * sv * sv;
+            /* on the far end exactly half the time, else 1 or 2 ulps of H
+               either side */
+            k = 0;
+            if (tap_uniform (seed, 0, 1) < 0.5)
+              {
+                k = (int) floor (tap_uniform (seed, -2, 2));
+                k += k >= 0;
+              }
+          }
+        else
+          {
+            *E = tap_uniform (seed, 0.2, 2);
+            k = (int) floor (tap_uniform (seed, -3, 4));
+          }
+        *H = momentum_at_end (L0, Delta, *dir, *E);
+        for (; k != 0; k += k > 0 ? -1 : 1)
+          *H = nextafter (*H, k > 0 ? HUGE_VAL : 0.0);
+        *H *= rsign (seed);
+        return;
+      }
+    case S_ULPSPIN:
+      {
+        /* 2E/H^2 = 1 + k u, k = +-1 .. +-4, u = ulp(E)/E in [2^-53, 2^-52]:
+           E is H^2/2 (exact for the half of the H with a 25-bit
+           significand, else rounded) moved by k ulps */
+        *dir = (int) rsign (seed);
+        *H = rsign (seed) * tap_uniform (seed, 0.3, 2);
+        if (tap_uniform (seed, 0, 1) < 0.5)
+          *H = ldexp (round (ldexp (*H, 24)), -24);
+        *E = 0.5 * *H * *H;
+        int k = (int) floor (tap_uniform (seed, 1, 5));
+        double to = rsign (seed) > 0 ? HUGE_VAL : 0.0;
+        for (; k > 0; k--)
+          *E = nextafter (*E, to);
+        return;
+      }
+    case S_TINYH:
+      {
+        /* ordinary speeds with |H| in [1e-300, 1e-200] (log-uniform), one
+           in five subnormal (log-uniform over the subnormal range), one in
+           ten +0 or -0: nearly straight motion, H^2 underflows */
+        double V = rsign (seed) * tap_uniform (seed, 0.05, 2);
+        double u = tap_uniform (seed, 0, 1);
+        *dir = V > 0 ? 1 : -1;
+        if (u < 0.1)
+          *H = u < 0.05 ? 0.0 : -0.0;
+        else if (u < 0.3)
+          *H = rsign (seed) * ldexp (tap_uniform (seed, 1, 2),
+                                     -1074 + (int) tap_uniform (seed, 0, 52));
+        else
+          *H = rsign (seed) * log_uniform (seed, -300, -200);
+        ls = *dir > 0 ? L0 : L0 + Delta;
+        *E = 0.5 * V * V + 0.5 * *H * (*H / (1 + ls * ls));
+        return;
+      }
     case S_REV:
       /* a turning point within 1e-6 Delta of the far end, on either side:
          c = |l_far| +- delta Delta, H^2 = 2E (1 + c^2) */
@@ -1053,8 +1246,11 @@ gen_state (int set, unsigned long long *seed, double L0, double Delta,
     default:
       break;
     }
+  /* extreme |L0|: turning points in the slot only where the slot is on
+     the scale of |L0| */
   if (tap_uniform (seed, 0, 1) < (set == S_LARGE ? 0.6 : 0.3)
-      && (set != S_LARGE || fabs (L0) < 1e12))
+      && (set != S_LARGE || fabs (L0) < 1e12)
+      && (set != S_XL || Delta > 1e-3 * fabs (L0)))
     {
       /* a turning point inside the slot: move towards l = 0 */
       if (L0 >= 0)
@@ -1073,13 +1269,23 @@ gen_state (int set, unsigned long long *seed, double L0, double Delta,
       if (c >= 1e-6)
         {
           *E = tap_uniform (seed, 0.2, 2);
-          *H = rsign (seed) * sqrt (2 * *E * (1 + c * c));
+          *H = rsign (seed) * (set == S_XL ? sqrt (2 * *E) * hypot (1, c)
+                               : sqrt (2 * *E * (1 + c * c)));
           return;
         }
     }
   double V = rsign (seed) * tap_uniform (seed, 0.05, 2);
   *dir = V > 0 ? 1 : -1;
   ls = *dir > 0 ? L0 : L0 + Delta;
+  if (set == S_XL)
+    {
+      /* w = Omega sqrt(1 + l^2) as below, without forming 1 + l^2 (it
+         overflows above 1.3e154) */
+      double w = rsign (seed) * tap_uniform (seed, 0.05, 2);
+      *E = 0.5 * (V * V + w * w);
+      *H = w * hypot (1, ls);
+      return;
+    }
   double a = 1 + ls * ls;
   double Om = rsign (seed) * tap_uniform (seed, 0.05, 2) / sqrt (a);
   *E = 0.5 * (V * V + a * Om * Om);
@@ -1092,7 +1298,8 @@ gen_state (int set, unsigned long long *seed, double L0, double Delta,
 
 static long n_oracle_fail, n_lib_fail, n_mismatch, n_spin_ok, n_spin_bad;
 static long n_legs, n_steps, n_params, n_reversals, n_turning_legs;
-static long n_ode_declined, n_reject_rounding[NM];
+static long n_ode_declined, n_reject_rounding[NM], n_refused_cap[NM];
+static long n_refused_sigma4;
 static double kappa_max[NS];
 
 static const double FD_STEP = 0x1p-100;
@@ -1170,6 +1377,11 @@ kappa_fd (const arb_t Q1, const arb_t Q0, double d)
 {
   arb_t t;
   double k;
+  /* an exactly zero quantity (the heading at H = 0, a turning point
+     exactly at D = 0) is held to its exact value: kappa 0, so that the
+     rule asks for it within 16 ulps of the smallest subnormal */
+  if (arb_is_zero (Q0))
+    return 0.0;
   arb_init (t);
   arb_sub (t, Q1, Q0, 4 * PREC_MAX);
   arb_div (t, t, Q0, 4 * PREC_MAX);
@@ -1192,6 +1404,36 @@ static const chaplygin_options opt_of[NM] = {
 };
 
 static int use_method[NM] = { 1, 1, 1 };
+
+/* The library's documented refusal: |L0 + D| above 2^500 (CHP_L_MAX of
+   lib/internal.h) at either end of a leg or of the slot, as the library
+   forms it (rounded): chaplygin_discrete_heading and chaplygin_discrete_step
+   return CHAPLYGIN_ERANGE there and write nothing. */
+static int
+beyond_cap (double L0, double Da, double Db)
+{
+  return fabs (L0 + Da) > 0x1p500 || fabs (L0 + Db) > 0x1p500;
+}
+
+/* Beyond the cap every method must refuse, outputs untouched (a sentinel
+   that no computation produces); a refusal is counted, anything else is a
+   library failure. */
+static void
+expect_refusal (int me, int r, int untouched, const char *what, double L0,
+                double Delta)
+{
+  if (r == CHAPLYGIN_ERANGE && untouched)
+    n_refused_cap[me]++;
+  else
+    {
+      n_lib_fail++;
+      printf ("# %s %s beyond |L0 + D| = 2^500 not refused (%s%s): L0=%a "
+              "Delta=%a\n", mname[me], what, chaplygin_strerror (r),
+              untouched ? "" : ", output written", L0, Delta);
+    }
+}
+
+static const double SENTINEL = -0x1.5e17e1p-3;
 
 /* Legs of (B.2) through chaplygin_discrete_heading. */
 static void
@@ -1216,6 +1458,17 @@ run_legs (int set, int n, unsigned long long *seed)
           V0 = rsign (seed) * tap_uniform (seed, 0.05, 2);
           Om0 = rsign (seed) * tap_uniform (seed, 0.05, 2)
             / sqrt (1 + (L0 + D0) * (L0 + D0));
+        }
+      else if (set == S_XL)
+        {
+          /* 1 + l^2 may overflow: (H/sqrt(1 + l^2))/sqrt(1 + l^2) */
+          D0 = dir > 0 ? 0.0 : Delta;
+          double hy = hypot (1, L0 + D0), w = Hd / hy;
+          Om0 = w / hy;
+          V0 = 2 * E - w * w;
+          if (!(V0 > 0))
+            continue;
+          V0 = dir * sqrt (V0);
         }
       else
         {
@@ -1287,6 +1540,19 @@ run_legs (int set, int n, unsigned long long *seed)
         D = D0 + tap_uniform (seed, 0.05, turn ? 0.75 : 0.95) * (mid_d (Dc) - D0);
       if (!(s * (D - D0) > 0))
         continue;
+      if (beyond_cap (L0, D0, D))
+        {
+          for (int me = 0; me < NM; me++)
+            if (use_method[me])
+              {
+                double dth = SENTINEL, dta = SENTINEL;
+                int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D,
+                                                    &opt_of[me], &dth, &dta);
+                expect_refusal (me, r, dth == SENTINEL && dta == SENTINEL,
+                                "leg", L0, Delta);
+              }
+          continue;
+        }
       arb_set_d (x + 0, L0), arb_set_d (x + 1, D0), arb_set_d (x + 2, V0);
       arb_set_d (x + 3, Om0), arb_set_d (x + 4, D);
       int rc = leg_eval (x, th, ta, 1);
@@ -1443,6 +1709,20 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
           n_lib_fail++;
           continue;
         }
+      if (beyond_cap (L0, 0.0, Delta))
+        {
+          for (int me = 0; me < NM; me++)
+            if (use_method[me])
+              {
+                chaplygin_discrete_state s0 = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } };
+                chaplygin_discrete_state out = s0;
+                out.E = SENTINEL;
+                int rs = chaplygin_discrete_step (&sys, &s0, CHAPLYGIN_WANT_ALL,
+                                                  &opt_of[me], &out, NULL);
+                expect_refusal (me, rs, out.E == SENTINEL, "step", L0, Delta);
+              }
+          continue;
+        }
       chaplygin_discrete_state in[NM];
       for (int me = 0; me < NM; me++)
         in[me] = (chaplygin_discrete_state) { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } };
@@ -1486,6 +1766,14 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                 alive[me] = 0;
                 continue;
               }
+            if (rl == CHAPLYGIN_ESTATE && me == M_ODE)
+              {
+                if (n_f2++ == 0)
+                  snprintf (f2_first, sizeof f2_first, "L0=%a Delta=%a "
+                            "dir=%d E=%a H=%a", L0, Delta, s->dir, s->E, s->H);
+                alive[me] = 0;
+                continue;
+              }
             if (rl != CHAPLYGIN_SUCCESS)
               {
                 n_lib_fail++;
@@ -1514,21 +1802,34 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
             double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0;
             for (int j = 0; j < 2; j++)
               {
-                perturbed (t, j ? Ha : Ea, FD_STEP);
-                if (step_eval (L0, Delta, s->dir, j ? Ea : t, j ? t : Ha,
-                               &r1, 0) != ORC_OK || r1.reversal != r.reversal)
+                /* a step that changes the classification (a turning point
+                   exactly at the far end: a reversal on one side only) is
+                   taken the other way */
+                double d = FD_STEP;
+                int rk = ORC_BAD;
+                for (int tries = 0; tries < 2; tries++)
+                  {
+                    d = tries ? -FD_STEP : FD_STEP;
+                    perturbed (t, j ? Ha : Ea, d);
+                    rk = step_eval (L0, Delta, s->dir, j ? Ea : t, j ? t : Ha,
+                                    &r1, 0);
+                    if (rk == ORC_OK && r1.reversal == r.reversal)
+                      break;
+                    rk = ORC_BAD;
+                  }
+                if (rk != ORC_OK)
                   {
                     n_oracle_fail++;
                     printf ("# oracle: perturbed step (input %d) failed\n",
                             j);
                     continue;
                   }
-                kE += kappa_fd (r1.E, r.E, FD_STEP);
-                kH += kappa_fd (r1.H, r.H, FD_STEP);
-                kth += kappa_fd (r1.dth, r.dth, FD_STEP);
-                kta += kappa_fd (r1.dta, r.dta, FD_STEP);
+                kE += kappa_fd (r1.E, r.E, d);
+                kH += kappa_fd (r1.H, r.H, d);
+                kth += kappa_fd (r1.dth, r.dth, d);
+                kta += kappa_fd (r1.dta, r.dta, d);
                 if (r.reversal)
-                  kDc += kappa_fd (r1.Dc, r.Dc, FD_STEP);
+                  kDc += kappa_fd (r1.Dc, r.Dc, d);
               }
             record (me, Q_E, set, ulp_err (out.E, r.E), tol_ulps (me, kE), kE);
             record (me, Q_H, set, ulp_err (out.H, r.H), tol_ulps (me, kH), kH);
@@ -1547,6 +1848,16 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
     }
   sref_clear (&r), sref_clear (&r1);
   arb_clear (Ea), arb_clear (Ha), arb_clear (t), arb_clear (y);
+}
+
+/* A parameter function failed at the point of the report: counted, and
+   the first few printed. */
+static void
+param_fail (const char *fn, int status)
+{
+  if (n_lib_fail++ < 1000)
+    printf ("# %s failed (%s) at %s\n", fn, chaplygin_strerror (status),
+            point);
 }
 
 /* sigma4, xi4, C1, C2 on the parameter sets, with their condition
@@ -1593,10 +1904,11 @@ run_params (int set, int n, unsigned long long *seed)
                 if (!rev && arb_is_positive (C2))
                   kx += kappa_fd (xib, xi, FD_STEP);
               }
-            if (chaplygin_discrete_coefficients (L0, Delta, Dp, rev, &c1, &c2)
-                != CHAPLYGIN_SUCCESS)
+            int rl = chaplygin_discrete_coefficients (L0, Delta, Dp, rev, &c1,
+                                                      &c2);
+            if (rl != CHAPLYGIN_SUCCESS)
               {
-                n_lib_fail++;
+                param_fail ("chaplygin_discrete_coefficients", rl);
                 continue;
               }
             record (M_CF, Q_C1, set, ulp_err (c1, C1), tol_ulps (M_CF, k1), k1);
@@ -1606,13 +1918,17 @@ run_params (int set, int n, unsigned long long *seed)
             /* sigma4 = C2 of the segment without reversal in the direction
                of V*: D+ = 0 for V* > 0, Delta for V* < 0 */
             int dir = e ? -1 : 1;
-            if (chaplygin_discrete_sigma4 (L0, Delta, dir, &s4, NULL)
-                != CHAPLYGIN_SUCCESS)
+            rl = chaplygin_discrete_sigma4 (L0, Delta, dir, &s4, NULL);
+            if (rl == CHAPLYGIN_ERANGE && beyond_cap (L0, 0.0, Delta))
+              n_refused_sigma4++;       /* documented: |L0 + D| > 2^500 */
+            else if (rl != CHAPLYGIN_SUCCESS)
               {
-                n_lib_fail++;
+                param_fail ("chaplygin_discrete_sigma4", rl);
                 continue;
               }
-            record (M_CF, Q_SIG, set, ulp_err (s4, C2), tol_ulps (M_CF, k2), k2);
+            else
+              record (M_CF, Q_SIG, set, ulp_err (s4, C2), tol_ulps (M_CF, k2),
+                      k2);
             if ((Vs > 0) != (dir > 0))
               continue;
             /* xi4 = log(sigma4)/tau*, tau* = Delta/|V*|: not real for
@@ -1621,12 +1937,12 @@ run_params (int set, int n, unsigned long long *seed)
             if (!arb_is_positive (C2))
               {
                 if (rx != CHAPLYGIN_EDOM)
-                  n_lib_fail++;
+                  param_fail ("chaplygin_discrete_xi4 (sigma4 <= 0)", rx);
                 continue;
               }
             if (rx != CHAPLYGIN_SUCCESS)
               {
-                n_lib_fail++;
+                param_fail ("chaplygin_discrete_xi4", rx);
                 continue;
               }
             record (M_CF, Q_XI, set, ulp_err (xil, xi), tol_ulps (M_CF, kx), kx);
@@ -1645,7 +1961,7 @@ static int
 quantity_sets (int q, int set)
 {
   /* parameter quantities have no state: the state sets do not apply */
-  return !(q >= Q_SIG && ill (set));
+  return !(q >= Q_SIG && state_set (set));
 }
 
 static void
@@ -1655,7 +1971,7 @@ tap_report (int me)
     for (int s = 0; s < NS; s++)
       {
         const stat_t *x = &st[me][q][s];
-        if (!quantity_sets (q, s) || (me != M_CF && x->n == 0))
+        if (!set_ran[s] || !quantity_sets (q, s) || (me != M_CF && x->n == 0))
           continue;
         /* every closed-form table entry must have points, except D_c where
            a set may happen to have no reversal */
@@ -1728,13 +2044,16 @@ write_table (const char *path, int level)
 "for the double inputs moves by @math{kappa eps} relative when they move\n"
 "by an ulp, and no double-precision algorithm can be expected to do much\n"
 "better than that.  The checks of the program require an error of at most\n"
-"@math{max(16, 8 kappa)} ulps for the closed form.  The return map is\n"
+"@math{max(16, 8 kappa)} ulps for the closed form (a zero reference,\n"
+"such as the heading at @math{H = 0}, has @math{kappa = 0}: it must be\n"
+"returned within 16 ulps of the smallest subnormal).  The return map is\n"
 "followed for 4 collisions from each start on the sets other than\n"
-"near-reversal and near-spinning, each step compared from the library's\n"
-"own input state; for one collision on those two.  The parameter\n"
-"quantities (@math{sigma_4}, @math{xi_4}, @math{C_1}, @math{C_2}) have no\n"
-"state, and the two state sets do not apply to them.  The data sets (fixed\n"
-"seeds):\n"
+"near-reversal, near-spinning, reversal at an ulp and spinning at an ulp,\n"
+"each step compared from the library's own input state; for one\n"
+"collision on those four.  The parameter quantities (@math{sigma_4},\n"
+"@math{xi_4}, @math{C_1}, @math{C_2}) have no state, and the five sets\n"
+"that differ from others only in their states (those four and tiny\n"
+"@math{H}) do not apply to them.  The data sets (fixed seeds):\n"
 "\n"
 "@table @asis\n"
 "@item ordinary\n"
@@ -1771,6 +2090,43 @@ write_table (const char *path, int level)
 "@math{Delta} in @math{[0.1, 3]}: the front peg next to the mass centre;\n"
 "turning points in the slot as for ordinary, where doubles @math{E} and\n"
 "@math{H} can place them (@math{c >= 10^(-6)}).\n"
+"@item extreme @math{|L_0|}\n"
+"@math{|L_0|} from @math{10^100} to the library's cap\n"
+"@math{|L_0 + D| <= 2^500} (about @math{3.27 10^150}; one point in ten\n"
+"within 3 ulps of @math{2^500}, on either side), and one in five above\n"
+"it, up to @math{10^200}, where @code{chaplygin_discrete_heading},\n"
+"@code{chaplygin_discrete_step} and @code{chaplygin_discrete_sigma4}\n"
+"must refuse with @code{CHAPLYGIN_ERANGE} (counted below, not in the\n"
+"tables); @math{Delta} in @math{[0.1, 3]}, or for a third of the points\n"
+"on the scale of @math{|L_0|} with @math{L_0/Delta} in\n"
+"@math{[-1.5, 0.5]} (legs from @math{|l| ~ 10^150} through or to\n"
+"@math{l = 0}, turning points in the slot).  States as for ordinary,\n"
+"@math{Omega} tiny: @math{H = w sqrt(1 + l^2)}, @math{|w|} in\n"
+"@math{[0.05, 2]}.\n"
+"@item tiny @math{H}\n"
+"ordinary @math{L_0}, @math{Delta} and speeds, with @math{|H|} in\n"
+"@math{[10^(-300), 10^(-200)]} (log-uniform), one state in five with a\n"
+"subnormal @math{H} (log-uniform over the subnormal range) and one in ten\n"
+"with @math{H = +0} or @math{-0}: nearly straight motion, @math{H^2}\n"
+"underflows, and the heading increment, proportional to @math{H}, must\n"
+"keep its relative accuracy (a zero reference must be returned as zero).\n"
+"@item reversal at an ulp\n"
+"the far end @math{l_f} of the slot with @math{|l_f|} in\n"
+"@math{[0.7, 3]}, moving towards @math{l = 0}, and @math{H} within 3\n"
+"ulps of the double nearest to @math{sqrt(2E (1 + l_f^2))}, whose\n"
+"turning point is the far end: the turning point within a few ulps of\n"
+"@math{l_f} (an ulp of @math{H} moves it by about\n"
+"@math{(1 + l_f^2)/l_f^2} ulps of @math{l_f}), on either side; one start\n"
+"in two with @math{l_f = +-3/4}, @math{+-15/8} or @math{+-63/16}\n"
+"exactly, a dyadic @math{Delta} and @math{E = s^2/2} (@math{s} dyadic),\n"
+"where @math{1 + l_f^2} is a square and the turning point can lie exactly\n"
+"on the far end (a reversal, by the convention of the manual).  The\n"
+"reversal flag must be the oracle's exact decision.\n"
+"@item spinning at an ulp\n"
+"as near-spinning, with @math{2E/H^2 = 1 +- k u}, @math{k = 1 ... 4},\n"
+"@math{u = ulp(E)/E} (@math{2^(-53)} to @math{2^(-52)}): @math{E} is\n"
+"@math{H^2/2} moved by @math{k} ulps (@math{H^2/2} exact for half of the\n"
+"states, whose @math{H} has a 25-bit significand).\n"
 "@end table\n"
 "\n", level, level == 2 ? "CHAPLYGIN_VERIFY_LEVEL=2 " : "");
   for (int q = 0; q < NQ; q++)
@@ -1815,6 +2171,14 @@ write_table (const char *path, int level)
           fprintf (f, "@end multitable\n\n");
         }
     }
+  if (n_refused_cap[M_CF] || n_refused_sigma4)
+    fprintf (f, "@noindent\n"
+             "Documented refusals, not in the tables: %ld legs and steps of\n"
+             "the extreme @math{|L_0|} set beyond @math{|L_0 + D| = 2^500},\n"
+             "refused by every method with @code{CHAPLYGIN_ERANGE} and no\n"
+             "output written, and %ld calls of\n"
+             "@code{chaplygin_discrete_sigma4} refused likewise.\n\n",
+             n_refused_cap[M_CF], n_refused_sigma4);
   if (n_ode_declined || n_reject_rounding[M_CF])
     fprintf (f, "@noindent\n"
              "Not in the tables: %ld legs or steps that the ODE method\n"
@@ -1973,12 +2337,13 @@ main (int argc, char **argv)
       if (only >= 0 && set != only)
         continue;
       unsigned long long seed = 0x5eed0ac1eULL + 7919ULL * (unsigned) set;
+      set_ran[set] = 1;
       double a = now ();
       run_legs (set, nl, &seed);
       double b = now ();
       run_steps (set, ill (set) ? 2 * no : no, ill (set) ? 1 : 4, &seed);
       double c = now ();
-      if (!ill (set))
+      if (!state_set (set))
         run_params (set, np, &seed);
       double d = now ();
       tl += b - a, ts += c - b, tp += d - c;
@@ -2006,13 +2371,24 @@ main (int argc, char **argv)
              "counted as errors: %ld/%ld/%ld legs within rounding of a "
              "turning point or of the spinning condition refused with "
              "CHAPLYGIN_ESTATE by closed form/quadrature/ODE, %ld ODE legs "
-             "or steps declined with CHAPLYGIN_ENOCONV)", n_reject_rounding[M_CF],
-             n_reject_rounding[M_QUAD], n_reject_rounding[M_ODE],
-             n_ode_declined);
+             "or steps declined with CHAPLYGIN_ENOCONV); and refused them, "
+             "outputs untouched, with CHAPLYGIN_ERANGE beyond |L0 + D| = "
+             "2^500, as documented (%ld/%ld/%ld legs and steps; "
+             "chaplygin_discrete_sigma4 %ld times)",
+             n_reject_rounding[M_CF], n_reject_rounding[M_QUAD],
+             n_reject_rounding[M_ODE], n_ode_declined, n_refused_cap[M_CF],
+             n_refused_cap[M_QUAD], n_refused_cap[M_ODE], n_refused_sigma4);
   tap_check (n_mismatch == 0 && n_spin_bad == 0, n_mismatch + n_spin_bad, 0,
              "reversal flags and directions as the oracle decides them exactly; "
              "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
              n_spin_ok);
+  if (use_method[M_ODE])
+    {
+      tap_check (n_f2 == 0, (double) n_f2, 0,
+                 "ODE steps never refuse a valid state with CHAPLYGIN_ESTATE "
+                 "(%ld did%s%s)", n_f2, n_f2 ? "; the first: " : "",
+                 f2_first);
+    }
   for (int me = 0; me < NM; me++)
     if (use_method[me])
       tap_report (me);
