@@ -152,13 +152,15 @@ chp_collision_coefficients (double L0, double Delta, double Dminus,
 
 /* The energy just after a collision: V-^2/2 + H+^2/(2 (1 + l+^2)), with
    V-^2 = 2E g-/(1 + l-^2) (g- = (1 + l-^2) V-^2/(2E) at the end the peg
-   leaves), which equals E + C1 H^2 of (3.7) as a sum of nonnegative terms. */
+   leaves), which equals E + C1 H^2 of (3.7) as a sum of nonnegative terms;
+   never above E (C1 <= 0): where the collision takes less than an ulp the
+   sum may round above E, and E itself is then the nearer value. */
 double
 chp_post_collision_energy (double E, double g_minus, double l_minus,
                            double H_plus, double l_plus)
 {
-  return E * (g_minus / chp_one_plus_sq (l_minus))
-    + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus));
+  return fmin (E * (g_minus / chp_one_plus_sq (l_minus))
+               + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
 }
 
 /* chaplygin_discrete_collide_eh: (3.7)
@@ -207,8 +209,7 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
   double C1, C2;
   chp_collision_coefficients (L0, Delta, Dm, &C1, &C2);
   double Hp = C2 * H;
-  /* never above E (C1 <= 0; see chaplygin_discrete_step) */
-  double Ep = fmin (chp_post_collision_energy (E, g, b, Hp, bp), E);
+  double Ep = chp_post_collision_energy (E, g, b, Hp, bp);
   if (!isfinite (Ep) || !isfinite (Hp))
     return CHAPLYGIN_ERANGE;
   pplus[CHAPLYGIN_D] = Delta - Dm;

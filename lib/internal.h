@@ -82,7 +82,8 @@ void chp_collision_coefficients (double L0, double Delta, double Dminus,
                                  double *C1, double *C2);
 
 /* E+ = V-^2/2 + H+^2/(2 (1 + l+^2)), V-^2 = 2E g-/(1 + l-^2): the (3.7)
-   energy after a collision without the cancellation of E + C1 H^2. */
+   energy after a collision without the cancellation of E + C1 H^2, never
+   above E. */
 double chp_post_collision_energy (double E, double g_minus, double l_minus,
                                   double H_plus, double l_plus);
 

@@ -357,10 +357,6 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
              also when the collision takes nearly all the energy) */
           E1 = chp_post_collision_energy (in->E, gm, lm, H1,
                                           sys->l_end[1 - iminus]);
-          /* a collision never adds energy (C1 <= 0): where it takes less
-             than an ulp the sum may round above E, and E itself is then
-             the nearer value */
-          E1 = fmin (E1, in->E);
           /* V- nearly 0 (a turning point within rounding of the end):
              E1 may round below H1^2/(2 (1 + l+^2)), which would make the
              output an invalid state (V+'^2 < 0); the true E' is above
