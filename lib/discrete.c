@@ -57,8 +57,17 @@ chaplygin_discrete_energy (double L0, double D, double V, double Omega,
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (L0, D, V, Omega))
     return CHAPLYGIN_EDOM;
-  /* halved before squaring: E may be representable where V^2 is not */
-  double r = (0.5 * V) * V + (0.5 * chp_one_plus_sq (L0 + D) * Omega) * Omega;
+  /* halved before squaring: E may be representable where V^2 is not;
+     beyond 2^500, where 1 + l^2 overflows, (1 + l^2) Omega^2 is
+     (l Omega)^2 (Omega^2 is below its rounding) */
+  double l = L0 + D, r;
+  if (fabs (l) <= CHP_L_MAX)
+    r = (0.5 * V) * V + (0.5 * chp_one_plus_sq (l) * Omega) * Omega;
+  else
+    {
+      double lw = l * Omega;
+      r = fma (0.5 * lw, lw, (0.5 * V) * V);
+    }
   if (!isfinite (r))
     return CHAPLYGIN_ERANGE;
   *E = r;
@@ -77,7 +86,11 @@ chaplygin_discrete_momentum (double L0, double D, double Omega, double *H)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite2 (L0, D) || !isfinite (Omega))
     return CHAPLYGIN_EDOM;
-  double r = chp_one_plus_sq (L0 + D) * Omega;
+  /* beyond 2^500 as l (l Omega): 1 + l^2 overflows, the 1 is below the
+     rounding */
+  double l = L0 + D;
+  double r = fabs (l) <= CHP_L_MAX ? chp_one_plus_sq (l) * Omega
+    : l * (l * Omega);
   if (!isfinite (r))
     return CHAPLYGIN_ERANGE;
   *H = r;
@@ -199,7 +212,26 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
   double b, eb, bp = L0 + (Delta - Dm);
   chp_two_sum (L0, Dm, &b, &eb);        /* b + eb = L0 + D- exactly */
   if (fabs (b) > CHP_L_MAX || fabs (bp) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
+    {
+      /* far (lib/far.c): the collision of the exactly scaled system */
+      chp_far f;
+      double ps[4], qs[4];
+      CHP_TRY (chp_far_init (L0, Delta, &f));
+      ps[CHAPLYGIN_D] = Dm == 0.0 ? 0.0 : f.Delta;
+      ps[CHAPLYGIN_THETA] = pminus[CHAPLYGIN_THETA];
+      CHP_TRY (chp_far_eh (&f, E, H, 1, &ps[CHAPLYGIN_E],
+                           &ps[CHAPLYGIN_H]));
+      CHP_TRY (chaplygin_discrete_collide_eh (f.L0, f.Delta, ps, qs));
+      double Ep = ldexp (qs[CHAPLYGIN_E], -2 * f.m);
+      double Hp = ldexp (qs[CHAPLYGIN_H], f.k - f.m - f.j);
+      if (!isfinite (Ep) || !isfinite (Hp))
+        return CHAPLYGIN_ERANGE;
+      pplus[CHAPLYGIN_D] = Delta - Dm;
+      pplus[CHAPLYGIN_E] = Ep;
+      pplus[CHAPLYGIN_THETA] = pminus[CHAPLYGIN_THETA];
+      pplus[CHAPLYGIN_H] = Hp;
+      return CHAPLYGIN_SUCCESS;
+    }
   /* g = (1 + b^2) V-^2/(2E), error-free (b's own rounding included) */
   chp_motion m;
   CHP_TRY (chp_motion_init (E, H, &m));

@@ -20,6 +20,41 @@ one_plus_sq_exact (double l, double el)
   return chp_one_plus_sq (l) + 2.0 * l * el;
 }
 
+/* |C2|^k = a 2^j and L = k log C2^2 (L = 0, a = 1, j = 0 for |C2| = 1);
+   the power of 2 is split off where |L/2| > 300, so that |C2|^k does not
+   underflow before the exponent of H is put back.  CHAPLYGIN_ERANGE where
+   it exceeds 2^4096. */
+static int
+c2_power (const chp_run *run, double k, double *a, int *j, double *L)
+{
+  const double sign = run->C2 < 0.0 && fmod (k, 2.0) == 1.0 ? -1.0 : 1.0;
+  *a = sign;
+  *j = 0;
+  *L = 0.0;
+  if (run->omq == 0.0)
+    return CHAPLYGIN_SUCCESS;
+  *L = k * run->logq;
+  double hl = 0.5 * *L;
+  if (fabs (hl) > 300.0)
+    {
+      /* exp(hl) = 2^j exp(hl - j ln 2), ln 2 split as in fdlibm (the
+         low 21 bits of ln2_hi are zero: j ln2_hi is exact for
+         |j| < 2^21) */
+      const double ln2 = 0x1.62e42fefa39efp-1;   /* log 2 rounded */
+      const double ln2_hi = 6.93147180369123816490e-01;
+      const double ln2_lo = 1.90821492927058770002e-10;
+      double jj = floor (hl / ln2);
+      if (jj > 4096.0)
+        return CHAPLYGIN_ERANGE;
+      if (jj < -4096.0)
+        jj = -4096.0;           /* H_k underflows to 0 whatever H is */
+      *j = (int) jj;
+      hl = (hl - jj * ln2_hi) - jj * ln2_lo;
+    }
+  *a = sign * exp (hl);
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* chp_run_state: the (B.9) iterate; see internal.h.
    Method: S_k = (1 - q^k)/(1 - q) as expm1(k log q)/(q - 1), with log q
    = 2 log1p(|C2| - 1) and q - 1 = (C2 - 1)(C2 + 1) from the accurate
@@ -42,50 +77,47 @@ chp_run_state (const chp_run *run, double E, double H, double k, double *Ek,
       *Hk = H;
       return CHAPLYGIN_SUCCESS;
     }
-  int eh, j = 0;
+  int eh, j, jt = 0;            /* T carries the exponent 2^-2(eh+jt) */
   const double m = frexp (H, &eh);
-  int jt = 0;                   /* the exponent T carries: 2^-2(eh+jt) */
-  double a = 1.0, T;            /* |C2|^k (times 2^-j); C1 H^2 S_k 2^-2(eh+jt) */
+  double a, L, T;               /* C2^k (times 2^-j); C1 H^2 S_k 2^-2(eh+jt) */
+  CHP_TRY (c2_power (run, k, &a, &j, &L));
   if (run->omq == 0.0)
     T = run->C1 * m * m * k;    /* |C2| = 1: S_k = k */
+  else if (L <= 0.0)
+    T = run->C1 * m * m * (expm1 (L) / -run->omq);
   else
     {
-      const double L = k * run->logq;
-      double hl = 0.5 * L;
-      if (fabs (hl) > 300.0)
-        {
-          /* exp(hl) = 2^j exp(hl - j ln 2), ln 2 split as in fdlibm (the
-             low 21 bits of ln2_hi are zero: j ln2_hi is exact for
-             |j| < 2^21); for hl < 0 too, so that |C2|^k does not
-             underflow before the exponent of H is put back */
-          const double ln2 = 0x1.62e42fefa39efp-1;   /* log 2 rounded */
-          const double ln2_hi = 6.93147180369123816490e-01;
-          const double ln2_lo = 1.90821492927058770002e-10;
-          double jj = floor (hl / ln2);
-          if (jj > 4096.0)
-            return CHAPLYGIN_ERANGE;
-          if (jj < -4096.0)
-            jj = -4096.0;       /* H_k underflows to 0 whatever H is */
-          j = (int) jj;
-          hl = (hl - jj * ln2_hi) - jj * ln2_lo;
-        }
-      a = exp (hl);
-      if (L <= 0.0)
-        T = run->C1 * m * m * (expm1 (L) / -run->omq);
-      else
-        {
-          double ma = m * a;
-          jt = j;
-          T = run->C1 * ma * ma * (-expm1 (-L) / -run->omq);
-        }
+      double ma = m * a;
+      jt = j;
+      T = run->C1 * ma * ma * (-expm1 (-L) / -run->omq);
     }
-  if (run->C2 < 0.0 && fmod (k, 2.0) == 1.0)
-    a = -a;
   double h = ldexp (m * a, eh + j);
   double e = E + ldexp (T, 2 * (eh + jt));
   if (!isfinite (e) || !isfinite (h))
     return CHAPLYGIN_ERANGE;
   *Ek = e;
+  *Hk = h;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* H_k = C2^k H alone, as chp_run_state forms it (for a far slot, where
+   the run is the scaled one and H the unscaled momentum: C2 is
+   scale-free). */
+static int
+run_momentum (const chp_run *run, double H, double k, double *Hk)
+{
+  if (k == 0.0 || H == 0.0)
+    {
+      *Hk = H;
+      return CHAPLYGIN_SUCCESS;
+    }
+  int eh, j;
+  const double m = frexp (H, &eh);
+  double a, L;
+  CHP_TRY (c2_power (run, k, &a, &j, &L));
+  double h = ldexp (m * a, eh + j);
+  if (!isfinite (h))
+    return CHAPLYGIN_ERANGE;
   *Hk = h;
   return CHAPLYGIN_SUCCESS;
 }
@@ -109,6 +141,21 @@ setup (const chaplygin_discrete *sys, int dir, double E, double H,
   *g0 = chp_motion_g_exact (m, run->ls, run->ls_err);
   if (!(*g0 > 0.0))
     return CHAPLYGIN_ESTATE;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The far regime of a system (lib/far.c) after the checks of setup that
+   precede it: *f (f->k = 0 within the cap) and, when far, the scaled
+   system. */
+static int
+far_state (const chaplygin_discrete *sys, int dir, double E, double H,
+           chp_far *f, chaplygin_discrete *scaled)
+{
+  if (dir != 1 && dir != -1)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_far_sys (sys, f, scaled));
+  if (f->k && (!chp_finite2 (E, H) || E < 0.0))
+    return CHAPLYGIN_EDOM;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -147,6 +194,27 @@ chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
 {
   if (!sys || !En || !Hn)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (far_state (sys, dir, E, H, &f, &ss));
+  if (f.k)
+    {
+      /* far (lib/far.c): the scaled run, E_n by 4^-m; H_n = C2^n H from
+         the unscaled H (C2 is scale-free), since the scaled C2^n H_s may
+         be subnormal where H_n is not */
+      double Es, Hs, e, h;
+      chp_run run;
+      CHP_TRY (chp_far_eh (&f, E, H, 0, &Es, &Hs));
+      CHP_TRY (chaplygin_discrete_energy_after (&ss, dir, Es, Hs, n, &e, &h));
+      CHP_TRY (chp_run_init (&ss, dir, &run));
+      CHP_TRY (run_momentum (&run, H, (double) n, &h));
+      e = ldexp (e, -2 * f.m);
+      if (!isfinite (e) || !isfinite (h))
+        return CHAPLYGIN_ERANGE;
+      *En = e;
+      *Hn = h;
+      return CHAPLYGIN_SUCCESS;
+    }
   chp_run run;
   chp_motion m;
   double g0, e, h;
@@ -206,6 +274,18 @@ chaplygin_discrete_final_energy (const chaplygin_discrete *sys, int dir,
 {
   if (!sys || !Ef)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (far_state (sys, dir, E, H, &f, &ss));
+  if (f.k)
+    {
+      /* far: the scaled run, E_f by 4^-m */
+      double Es, Hs, e;
+      CHP_TRY (chp_far_eh (&f, E, H, 0, &Es, &Hs));
+      CHP_TRY (chaplygin_discrete_final_energy (&ss, dir, Es, Hs, &e));
+      *Ef = ldexp (e, -2 * f.m);
+      return CHAPLYGIN_SUCCESS;
+    }
   chp_run run;
   chp_motion m;
   double g0;
@@ -279,8 +359,11 @@ chaplygin_discrete_energy_converges (double L0, double Delta, int dir,
     return CHAPLYGIN_EINVAL;
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
-  if (fabs (L0) > CHP_L_MAX || fabs (L0 + Delta) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
+  chp_far f;
+  CHP_TRY (chp_far_init (L0, Delta, &f));
+  if (f.k)      /* far (lib/far.c): |C2| < 1 is scale-free */
+    return chaplygin_discrete_energy_converges (f.L0, f.Delta, dir,
+                                                converges);
   int below_one = dir > 0 ? L0 > -Delta : L0 < 0.0;
   double e[12], p, pe;
   int n = 0;
@@ -333,6 +416,16 @@ chaplygin_discrete_final_velocity (double L0, double Delta, double V,
   if (V == 0.0)
     return CHAPLYGIN_ESTATE;
   const int dir = V > 0.0 ? 1 : -1;
+  chp_far f;
+  CHP_TRY (chp_far_init (L0, Delta, &f));
+  if (f.k)
+    {
+      /* far (lib/far.c): Omega times 2^k, V and Vf unchanged */
+      double Om;
+      if (!chp_exact_ldexp (Omega, f.k, &Om))
+        return CHAPLYGIN_ERANGE;
+      return chaplygin_discrete_final_velocity (f.L0, f.Delta, V, Om, Vf);
+    }
   chaplygin_discrete sys;
   chp_run run;
   chp_motion m;

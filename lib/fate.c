@@ -302,6 +302,27 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
 {
   if (!sys || !init || !fate)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  if (f.k)
+    {
+      /* far (lib/far.c): the fate of the scaled state; counts and kind
+         are scale-free, E_final scales by 4^-m, V_final by 2^-m */
+      chaplygin_discrete_state si = *init;
+      chaplygin_fate r;
+      if (init->dir != 1 && init->dir != -1)
+        return CHAPLYGIN_EINVAL;
+      if (!chp_finite2 (init->E, init->H) || init->E < 0.0)
+        return CHAPLYGIN_EDOM;
+      CHP_TRY (chp_far_eh (&f, init->E, init->H, 0, &si.E, &si.H));
+      CHP_TRY (chaplygin_discrete_fate (&ss, &si, max_collisions,
+                                        reversal_at, reversal_cap, &r));
+      r.E_final = ldexp (r.E_final, -2 * f.m);
+      r.V_final = ldexp (r.V_final, -f.m);
+      *fate = r;
+      return CHAPLYGIN_SUCCESS;
+    }
   fate_coef c;
   CHP_TRY (fate_coef_init (sys, &c));
   if (init->dir != 1 && init->dir != -1)
@@ -357,6 +378,27 @@ chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
 {
   if (!sys || !qplus || !fate)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  if (f.k)
+    {
+      /* far (lib/far.c): D times 2^-k, Omega times 2^k; V, theta and the
+         fate (E_final, V_final included) unchanged */
+      double qs[4];
+      if (!chp_finite4 (qplus[0], qplus[1], qplus[2], qplus[3]))
+        return CHAPLYGIN_EDOM;
+      const double V = qplus[CHAPLYGIN_V], D = qplus[CHAPLYGIN_D];
+      if (V == 0.0 || (V > 0.0 && D != 0.0) || (V < 0.0 && D != sys->Delta))
+        return CHAPLYGIN_ESTATE;
+      qs[CHAPLYGIN_D] = D == 0.0 ? 0.0 : ss.Delta;
+      qs[CHAPLYGIN_V] = V;
+      qs[CHAPLYGIN_THETA] = qplus[CHAPLYGIN_THETA];
+      if (!chp_exact_ldexp (qplus[CHAPLYGIN_OMEGA], f.k, &qs[CHAPLYGIN_OMEGA]))
+        return CHAPLYGIN_ERANGE;
+      return chaplygin_discrete_fate_phase (&ss, qs, max_collisions,
+                                            reversal_at, reversal_cap, fate);
+    }
   fate_coef c;
   CHP_TRY (fate_coef_init (sys, &c));
   if (!chp_finite4 (qplus[0], qplus[1], qplus[2], qplus[3]))
@@ -418,6 +460,21 @@ chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
 {
   if (!sys || (n > 0 && !fates))
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  if (f.k)
+    {
+      /* far (lib/far.c): Omega0 times 2^k, the V grid and the fates
+         unchanged */
+      double Om;
+      if (!isfinite (Omega0))
+        return CHAPLYGIN_EDOM;
+      if (!chp_exact_ldexp (Omega0, f.k, &Om))
+        return CHAPLYGIN_ERANGE;
+      return chaplygin_discrete_basins (&ss, Om, V_lo, V_hi, n,
+                                        max_collisions, fates);
+    }
   fate_coef c;
   CHP_TRY (check_grid (sys, Omega0, V_lo, V_hi, n, &c));
   for (size_t i = 0; i < n; i++)
@@ -504,6 +561,21 @@ chaplygin_discrete_basin_boundaries (const chaplygin_discrete *sys,
 {
   if (!sys || !count || (cap > 0 && !V_boundary))
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  if (f.k)
+    {
+      /* far: as chaplygin_discrete_basins */
+      double Om;
+      if (!isfinite (Omega0))
+        return CHAPLYGIN_EDOM;
+      if (!chp_exact_ldexp (Omega0, f.k, &Om))
+        return CHAPLYGIN_ERANGE;
+      return chaplygin_discrete_basin_boundaries (&ss, Om, V_lo, V_hi,
+                                                  n_grid, max_collisions,
+                                                  V_boundary, cap, count);
+    }
   fate_coef c;
   CHP_TRY (check_grid (sys, Omega0, V_lo, V_hi, n_grid, &c));
   size_t nbuf = cap < n_grid ? cap : n_grid;

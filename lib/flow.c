@@ -177,15 +177,20 @@ struct quad_par
 {
   const chp_motion *m;
   double A;
+  double w;             /* max(|h|, 1): the part of |h| in the integrand */
 };
 
-/* Regime A, |l| = A + t: |dtheta/dl| / |h| = 1/sqrt((1 + l^2)(l^2 + q)). */
+/* Regime A, |l| = A + t: |dtheta/dl| = |h|/sqrt((1 + l^2)(l^2 + q)),
+   integrated as w/sqrt(...) times min(|h|, 1) (w = max(|h|, 1) <= sq + 1):
+   the integral of 1/sqrt(...) alone underflows for a short leg at large
+   |l| where the heading does not, and |h| inside alone would make the
+   integrand subnormal for a subnormal H. */
 static double
 qa_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
   double l = qp->A + t;
-  return 1.0 / (hypot (1.0, l) * hypot (l, qp->m->sq));
+  return qp->w / (hypot (1.0, l) * hypot (l, qp->m->sq));
 }
 
 /* Regime A: sqrt(2E) dtau/dl = sqrt((1 + l^2)/(l^2 + q)). */
@@ -198,13 +203,13 @@ qa_tau (double t, void *p)
 }
 
 /* Regime B, u = A + t with |l| = c + u^2, g = u^2 (|l| + c):
-   |dtheta/du| / |h| = 2/sqrt((1 + l^2)(|l| + c)). */
+   |dtheta/du| = 2 |h|/sqrt((1 + l^2)(|l| + c)) (w inside, as above). */
 static double
 qb_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
   double u = qp->A + t, c = qp->m->sq, al = c + u * u;
-  return 2.0 / (hypot (1.0, al) * sqrt (al + c));
+  return 2.0 * qp->w / (hypot (1.0, al) * sqrt (al + c));
 }
 
 /* Regime B: sqrt(2E) dtau/du = 2 sqrt((1 + l^2)/(|l| + c)). */
@@ -225,7 +230,7 @@ quad_geometric (double (*f_th) (double, void *), double (*f_ta) (double, void *)
                 const chp_motion *m, double A, double W, double tol, double *th,
                 double *ta)
 {
-  struct quad_par qp = { m, A };
+  struct quad_par qp = { m, A, fmax (fabs (m->h), 1.0) };
   double t = 0.0, r;
   while (t < W)
     {
@@ -339,7 +344,7 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
       CHP_TRY (quad_geometric (qb_theta, qb_tau, m, fmin (ua, ub), dl / (ua + ub),
                                opt->tol, qF, qT));
     }
-  F *= fabs (m->h);
+  F *= fmin (fabs (m->h), 1.0);
   if (dtheta)
     *dtheta = chp_sign (m->H) * F;
   if (dtau)
@@ -393,6 +398,27 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
   if (!chp_finite4 (L0, D0, V0, Omega0) || !isfinite (D))
     return CHAPLYGIN_EDOM;
   double v2, om;
+  if (fabs (L0 + D0) > CHP_L_MAX || fabs (L0 + D) > CHP_L_MAX)
+    {
+      /* far (lib/far.c): lengths times 2^-k, V times 2^m, Omega times
+         2^(k+m) */
+      chp_far f;
+      double L0s, D0s, Ds, V0s, Om0s;
+      CHP_TRY (chp_far_k (L0 + D0, L0 + D, &f.k));
+      if (!chp_exact_ldexp (L0, -f.k, &L0s)
+          || !chp_exact_ldexp (D0, -f.k, &D0s)
+          || !chp_exact_ldexp (D, -f.k, &Ds))
+        return CHAPLYGIN_ERANGE;
+      CHP_TRY (chp_far_phase (&f, L0 + D0, V0, Omega0, &V0s, &Om0s));
+      CHP_TRY (chaplygin_discrete_flow (L0s, D0s, V0s, Om0s, Ds, &v2, &om));
+      v2 = ldexp (v2, -2 * f.m);
+      om = ldexp (om, -(f.k + f.m));
+      if (!isfinite (v2))
+        return CHAPLYGIN_ERANGE;
+      *V2 = v2;
+      *Omega = om;
+      return CHAPLYGIN_SUCCESS;
+    }
   CHP_TRY (chp_flow_eval (L0, D0, V0, Omega0, D, &v2, &om));
   double l0 = L0 + D0, l = L0 + D, n0 = chp_one_plus_sq (l0);
   if (v2 < 0.0)
@@ -446,7 +472,57 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
 
   double l0 = L0 + D0, l = L0 + D;
   if (fabs (l0) > CHP_L_MAX || fabs (l) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
+    {
+      /* far (lib/far.c): lengths times 2^-k, V times 2^m, Omega times
+         2^(k+m), the heading unchanged, the time times 2^-(k+m);
+         CHAPLYGIN_ERANGE where the scaled time is not a normal double */
+      chp_far f;
+      double L0s, D0s, Ds, V0s, Om0s, ths = 0.0, tas = 0.0, ta = 0.0;
+      CHP_TRY (chp_far_k (l0, l, &f.k));
+      if (!chp_exact_ldexp (L0, -f.k, &L0s)
+          || !chp_exact_ldexp (D0, -f.k, &D0s)
+          || !chp_exact_ldexp (D, -f.k, &Ds))
+        return CHAPLYGIN_ERANGE;
+      CHP_TRY (chp_far_phase (&f, l0, V0, Omega0, &V0s, &Om0s));
+      CHP_TRY (chaplygin_discrete_heading (L0s, D0s, V0s, Om0s, Ds, opt,
+                                           dtheta ? &ths : NULL,
+                                           dtau ? &tas : NULL));
+      if ((dtau && D != D0 && !(tas >= DBL_MIN))
+          || !chp_exact_ldexp (tas, f.k + f.m, &ta))
+        return CHAPLYGIN_ERANGE;
+      if (dtheta)
+        *dtheta = ths;
+      if (dtau)
+        *dtau = ta;
+      return CHAPLYGIN_SUCCESS;
+    }
+  /* The speed sqrt(2E) ~ max(|V0|, |l0 Omega0|) scaled by 2^m near 1
+     (time-scaling, exact: the heading unchanged, the time times 2^-m)
+     where H = (1 + l0^2) Omega0 would be above 2^450 or E below 2^-800:
+     H^2 overflowed, and the motion's fields with it, returning a heading
+     and time of 0 (found by tests/test_far: H ~ 1e198 at |l0| ~ 1e150).
+     Once scaled, sp is in [1, 2): m = 0, no second scaling. */
+  {
+    const double sp = fmax (fabs (V0), hypot (1.0, l0) * fabs (Omega0));
+    const int m = sp > 0.0 && isfinite (sp) ? -ilogb (sp) : 0;
+    if (m != 0 && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400))
+      {
+        double V0s, Om0s, ths = 0.0, tas = 0.0, ta = 0.0;
+        if (!chp_exact_ldexp (V0, m, &V0s)
+            || !chp_exact_ldexp (Omega0, m, &Om0s))
+          return CHAPLYGIN_ERANGE;
+        CHP_TRY (chaplygin_discrete_heading (L0, D0, V0s, Om0s, D, opt,
+                                             dtheta ? &ths : NULL,
+                                             dtau ? &tas : NULL));
+        if (!chp_exact_ldexp (tas, m, &ta))
+          return CHAPLYGIN_ERANGE;
+        if (dtheta)
+          *dtheta = ths;
+        if (dtau)
+          *dtau = ta;
+        return CHAPLYGIN_SUCCESS;
+      }
+  }
   double n0 = chp_one_plus_sq (l0);
   double E = 0.5 * (V0 * V0 + n0 * Omega0 * Omega0);
   double H = n0 * Omega0;

@@ -174,6 +174,60 @@ double chp_one_minus_h2 (double E, double H);
    (1 + l^2) and its products overflow (CHAPLYGIN_ERANGE). */
 #define CHP_L_MAX 0x1p500
 
+/* ---- far.c: the far regime |l| > CHP_L_MAX ---------------------------- */
+
+/* The exact scaling of a far-regime problem onto one within the cap:
+   lengths times 2^-k, energies times 4^m, speeds V times 2^m, momenta H
+   times 2^(m-k+j), Omega times 2^(m+k+j), times times 2^-(k+m), heading
+   increments times 2^j; directions, reversals and counts unchanged.
+   j > 0 only for a motion linear in H (h below 2^-570 of the smallest
+   |l|), where H and the heading may be scaled alone; k = 0 (no scaling)
+   within the cap. */
+typedef struct
+{
+  int k, m, j;
+  double L0, Delta;     /* scaled */
+} chp_far;
+
+/* *r = x 2^e and 1 if that is exact and finite; 0 (r untouched) if not. */
+int chp_exact_ldexp (double x, int e, double *r);
+
+/* The scale exponent k of a path from la to lb: 0 within the cap
+   (max |l| <= 2^500); beyond it, for a far path (one strict sign,
+   max |l| <= 2^400 min |l|), k = ilogb(min |l|) - 99;
+   CHAPLYGIN_ERANGE otherwise (or non-finite). */
+int chp_far_k (double la, double lb, int *k);
+
+/* k and the scaled L0, Delta: k = 0 within the cap; k > 0 for a far slot
+   (chp_far_k of its ends): the scaled min |l| in [2^99, 2^100), the
+   scaled max below 2^500.  CHAPLYGIN_ERANGE elsewhere beyond the cap or
+   where 2^-k Delta is not a normal double. */
+int chp_far_init (double L0, double Delta, chp_far *f);
+
+/* m (E scaled into [1/2, 2)), j and the scaled E, H of a state; where
+   2^(m-k) H would be below 2^-570: j > 0 if LINEAR (the caller's results
+   are linear in H there: H, Omega and heading outputs scaled back by
+   2^-j), else m raised while 4^m E <= 2^1000, else CHAPLYGIN_ERANGE. */
+int chp_far_eh (chp_far *f, double E, double H, int linear, double *Es,
+                double *Hs);
+
+/* m (the speed max(|V|, |l0 Omega|) scaled near 1; j = 0) and the
+   scaled V, Omega of a phase state at l0.  CHAPLYGIN_ERANGE where a
+   scaling is not exact. */
+int chp_far_phase (chp_far *f, double l0, double V, double Omega,
+                   double *Vs, double *Omegas);
+
+int chp_far_params (double L0, double Delta, int dir, chp_far *f);
+
+/* chp_far_init for a system (CHAPLYGIN_EDOM if it is not valid) and, when
+   far (f->k > 0), the scaled system. */
+int chp_far_sys (const chaplygin_discrete *sys, chp_far *f,
+                 chaplygin_discrete *scaled);
+
+/* The largest |L0| the massless skate (rho = 0, lengths in units of the
+   slot) accepts: 2 L0 + 1 must be finite. */
+#define CHP_MASSLESS_L_MAX 0x1p1020
+
 /* g(l) = l^2 + 1 - h^2 = (1 + l^2) V^2/(2E), by one fma (cancels near a
    turning point at l). */
 double chp_motion_g (const chp_motion *m, double l);

@@ -70,10 +70,13 @@ chaplygin_discrete_coefficients (double L0, double Delta, double Dplus,
    Method: H^2/(2E) - 1 by chp_one_minus_h2 (one fma), so the radicand is
    within two roundings and its sign exact; n_real = 2 (> 0), 1 (= 0: the
    double root D = -L0, the spinning point) or 0 (< 0: V never vanishes).
+   Where H^2 overflows, from E and H scaled exactly by 4^-q, 2^-q, or as
+   c = |H|/sqrt(2E) where h^2 exceeds the range of double (c = |h| to far
+   below rounding there).
    Domain: finite; Delta > 0; E > 0.
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, Delta <= 0,
-   E < 0), CHAPLYGIN_ESTATE (E = 0: at rest), CHAPLYGIN_ERANGE (H^2/(2E)
-   overflows). */
+   E < 0), CHAPLYGIN_ESTATE (E = 0: at rest), CHAPLYGIN_ERANGE (a turning
+   point beyond the range of double). */
 int
 chaplygin_discrete_turning_points (double L0, double Delta, double E,
                                    double H, int *n_real, double Dc[2],
@@ -85,22 +88,37 @@ chaplygin_discrete_turning_points (double L0, double Delta, double E,
     return CHAPLYGIN_EDOM;
   if (E == 0.0)
     return CHAPLYGIN_ESTATE;
-  double omh2 = chp_one_minus_h2 (E, H);
+  double omh2 = chp_one_minus_h2 (E, H), c = 0.0;
   if (!isfinite (omh2))
-    return CHAPLYGIN_ERANGE;
+    {
+      /* H^2 overflows: the same ratio h^2 = H^2/(2E) from E, H scaled by
+         4^-q, 2^-q (exact); where E 4^-q underflows, h^2 > 2^500 and
+         c = sqrt(h^2 - 1) is |h| to far below rounding */
+      const int q = ilogb (H) - 256;
+      double Es = E, Hs = H;
+      if (chp_exact_ldexp (E, -2 * q, &Es) && chp_exact_ldexp (H, -q, &Hs))
+        omh2 = chp_one_minus_h2 (Es, Hs);
+      else
+        Es = E, Hs = H;
+      if (!isfinite (omh2))
+        c = fabs (Hs) / sqrt (2.0 * Es);      /* E (Es) tiny: no overflow */
+    }
   int n = 0;
   double r[2] = { 0.0, 0.0 };
-  if (omh2 == 0.0)
+  if (c == 0.0 && omh2 == 0.0)
     {
       n = 1;
       r[0] = -L0;
     }
-  else if (omh2 < 0.0)
+  else if (c > 0.0 || omh2 < 0.0)
     {
-      double c = sqrt (-omh2);
+      if (c == 0.0)
+        c = sqrt (-omh2);
       n = 2;
       r[0] = -L0 - c;
       r[1] = -L0 + c;
+      if (!isfinite (r[0]) || !isfinite (r[1]))
+        return CHAPLYGIN_ERANGE;
     }
   int in = 0;
   for (int i = 0; i < n; i++)
@@ -258,6 +276,77 @@ valid_energy (const chaplygin_discrete *sys, int iplus, double E1, double H1)
   return E1;
 }
 
+static int step_core (const chaplygin_discrete *sys,
+                      const chaplygin_discrete_state *in,
+                      const double *g0_phase, unsigned request,
+                      const chaplygin_options *opt,
+                      chaplygin_discrete_state *out,
+                      chaplygin_discrete_event *ev);
+
+/* The map of a far slot (|l| > CHP_L_MAX, lib/far.c): the same step of the
+   exactly scaled system and state, scaled back (E by 4^-m, H by
+   2^(k-m-j), lengths by 2^k, times by 2^(k+m), V by 2^-m, the heading
+   increment by 2^-j; dir, reversal unchanged); the peg moves by the
+   unscaled slot length.  CHAPLYGIN_ERANGE where the scaled time is not
+   a normal double (its digits would be lost). */
+static int
+step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
+          unsigned request, const chaplygin_options *opt,
+          chaplygin_discrete_state *out, chaplygin_discrete_event *ev)
+{
+  chp_far f;
+  chaplygin_discrete ss;
+  chaplygin_discrete_state si = *in, so;
+  chaplygin_discrete_event se;
+  CHP_TRY (chp_far_init (sys->L0, sys->Delta, &f));
+  CHP_TRY (chaplygin_discrete_init (&ss, f.L0, f.Delta));
+  CHP_TRY (chp_far_eh (&f, in->E, in->H, 1, &si.E, &si.H));
+  si.tau = 0.0;
+  si.theta = 0.0;
+  unsigned req = request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
+  if (request & CHAPLYGIN_WANT_PEG)
+    req |= CHAPLYGIN_WANT_THETA;
+  CHP_TRY (step_core (&ss, &si, NULL, req, opt, &so, &se));
+  if ((req & CHAPLYGIN_WANT_TAU) && !(se.dtau >= DBL_MIN))
+    return CHAPLYGIN_ERANGE;
+  chaplygin_discrete_state r = *in;
+  r.dir = so.dir;
+  r.E = ldexp (so.E, -2 * f.m);
+  r.H = ldexp (so.H, f.k - f.m - f.j);
+  const double dtau = ldexp (se.dtau, f.k + f.m);
+  const double dtheta = ldexp (se.dtheta, -f.j);
+  const double theta1 = in->theta + dtheta;
+  if (request & CHAPLYGIN_WANT_THETA)
+    r.theta = theta1;
+  if (request & CHAPLYGIN_WANT_TAU)
+    r.tau = in->tau + dtau;
+  const double Dminus = se.Dminus == 0.0 ? 0.0 : sys->Delta;
+  if (request & CHAPLYGIN_WANT_PEG)
+    {
+      double sn, cs, shift = Dminus != 0.0 ? sys->Delta : -sys->Delta;
+      sincos (theta1, &sn, &cs);
+      r.peg[0] = in->peg[0] + shift * cs;
+      r.peg[1] = in->peg[1] + shift * sn;
+    }
+  const double Vminus = ldexp (se.Vminus, -f.m);
+  const double Dc = se.reversal ? ldexp (se.Dc, f.k) : 0.0;
+  if (!chp_finite4 (r.E, r.H, r.theta, r.tau)
+      || !chp_finite4 (r.peg[0], r.peg[1], dtau, Dc))
+    return CHAPLYGIN_ERANGE;
+  if (ev)
+    {
+      ev->reversal = se.reversal;
+      ev->Dc = Dc;
+      ev->Dminus = Dminus;
+      ev->Dplus = sys->Delta - Dminus;
+      ev->Vminus = Vminus;
+      ev->dtheta = dtheta;
+      ev->dtau = dtau;
+    }
+  *out = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* The return map proper; g0_phase, if not NULL, is g(l0) = (1 + l0^2)
    V+^2/(2E) formed from V+ by the caller (chaplygin_discrete_poincare):
    from (E, H) alone it loses V+ when V+^2 << (1 + l0^2) Omega+^2. */
@@ -282,7 +371,8 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   const int start = in->dir > 0 ? 0 : 1, far = 1 - start;
   const double l0 = sys->l_end[start], l1 = sys->l_end[far];
   if (fabs (l0) > CHP_L_MAX || fabs (l1) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
+    return g0_phase ? CHAPLYGIN_ERANGE
+      : step_far (sys, in, request, opt, out, ev);
 
   const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
   const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
@@ -542,9 +632,25 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
   if (!sys || !st || !q)
     return CHAPLYGIN_EINVAL;
   CHP_TRY (check_state (sys, st));
-  double D = st->dir > 0 ? 0.0 : sys->Delta;
-  double n = chp_one_plus_sq (sys->L0 + D);
-  double Om = st->H / n;
+  double D = st->dir > 0 ? 0.0 : sys->Delta, l = sys->L0 + D;
+  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
+    {
+      /* far (lib/far.c): the scaled state; V times 2^-m, Omega times
+         2^-(k+m+j) */
+      chp_far f;
+      chaplygin_discrete ss;
+      chaplygin_discrete_state si = *st;
+      double qs[4];
+      CHP_TRY (chp_far_sys (sys, &f, &ss));
+      CHP_TRY (chp_far_eh (&f, st->E, st->H, 1, &si.E, &si.H));
+      CHP_TRY (chaplygin_discrete_state_to_phase (&ss, &si, qs));
+      q[CHAPLYGIN_D] = D;
+      q[CHAPLYGIN_V] = ldexp (qs[CHAPLYGIN_V], -f.m);
+      q[CHAPLYGIN_THETA] = st->theta;
+      q[CHAPLYGIN_OMEGA] = ldexp (qs[CHAPLYGIN_OMEGA], -(f.k + f.m + f.j));
+      return CHAPLYGIN_SUCCESS;
+    }
+  double Om = st->H / chp_one_plus_sq (l);
   double v2 = 2.0 * st->E - st->H * Om;
   if (!(v2 > 0.0))
     return CHAPLYGIN_ESTATE;
@@ -575,6 +681,39 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
   chaplygin_discrete_state st;
   chaplygin_discrete_event ev;
   CHP_TRY (chaplygin_discrete_state_from_phase (sys, qplus, 0.0, NULL, &st));
+  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
+    {
+      /* far (lib/far.c): the map of the exactly scaled system, D times
+         2^-k, V times 2^m, Omega times 2^(k+m), theta unchanged, the
+         time times 2^-(k+m); CHAPLYGIN_ERANGE where the scaled time is
+         not a normal double */
+      chp_far f;
+      chaplygin_discrete ss;
+      double qs[4], qn[4], dts = 0.0, dt = 0.0;
+      CHP_TRY (chp_far_init (sys->L0, sys->Delta, &f));
+      CHP_TRY (chaplygin_discrete_init (&ss, f.L0, f.Delta));
+      const double l0 = sys->L0 + qplus[CHAPLYGIN_D];
+      CHP_TRY (chp_far_phase (&f, l0, qplus[CHAPLYGIN_V],
+                              qplus[CHAPLYGIN_OMEGA], &qs[CHAPLYGIN_V],
+                              &qs[CHAPLYGIN_OMEGA]));
+      qs[CHAPLYGIN_D] = qplus[CHAPLYGIN_D] == 0.0 ? 0.0 : f.Delta;
+      qs[CHAPLYGIN_THETA] = qplus[CHAPLYGIN_THETA];
+      CHP_TRY (chaplygin_discrete_poincare (&ss, qs, opt, qn,
+                                            dtau ? &dts : NULL));
+      if (dtau && !(dts >= DBL_MIN))
+        return CHAPLYGIN_ERANGE;
+      double om = ldexp (qn[CHAPLYGIN_OMEGA], -(f.k + f.m));
+      double v = ldexp (qn[CHAPLYGIN_V], -f.m);
+      if (!chp_exact_ldexp (dts, f.k + f.m, &dt))
+        return CHAPLYGIN_ERANGE;
+      qnext[CHAPLYGIN_D] = qn[CHAPLYGIN_D] == 0.0 ? 0.0 : sys->Delta;
+      qnext[CHAPLYGIN_V] = v;
+      qnext[CHAPLYGIN_THETA] = qn[CHAPLYGIN_THETA];
+      qnext[CHAPLYGIN_OMEGA] = om;
+      if (dtau)
+        *dtau = dt;
+      return CHAPLYGIN_SUCCESS;
+    }
   unsigned req = CHAPLYGIN_WANT_THETA | (dtau ? CHAPLYGIN_WANT_TAU : 0u);
   /* g(l0) from V+ itself: (1 + l0^2) V+^2/(2E) */
   double l0 = sys->L0 + qplus[CHAPLYGIN_D], V = qplus[CHAPLYGIN_V];

@@ -209,7 +209,9 @@ massless_segment (double L0, const chaplygin_discrete_state *in,
   if (!chp_finite4 (in->E, in->H, in->theta, in->tau)
       || !chp_finite2 (in->peg[0], in->peg[1]) || in->E < 0.0)
     return CHAPLYGIN_EDOM;
-  if (fabs (L0) > CHP_L_MAX)
+  /* rho = 0 has no 1 + l^2: the geometry below neither overflows nor
+     underflows prematurely for any |L0| with 2 L0 + 1 finite */
+  if (fabs (L0) > CHP_MASSLESS_L_MAX)
     return CHAPLYGIN_ERANGE;
   if (in->E == 0.0)
     return CHAPLYGIN_ESTATE;
@@ -266,14 +268,23 @@ massless_geometry (double L0, struct segment *sg)
     {
       sg->Phi = 0.0;
       sg->dist = 1.0;
-      sg->dPhi = 1.0 / (fabs (sg->l0) * fabs (sg->l1));
+      sg->dPhi = 1.0 / fabs (sg->l0) / fabs (sg->l1);
     }
   else
     {
       double dw = fabs (2.0 * L0 + 1.0) / (sg->w0 + sg->w1);
-      sg->Phi = atan2 (sg->p * dw, fma (sg->p, sg->p, sg->w0 * sg->w1));
+      double y = sg->p * dw, x = fma (sg->p, sg->p, sg->w0 * sg->w1);
+      if (!isfinite (x))
+        {
+          /* p^2 + w0 w1 ~ l^2 overflows (|l| > 2^512): both arguments
+             divided by c = max(p, w0, w1) (atan2 is homogeneous) */
+          double c = fmax (sg->p, fmax (sg->w0, sg->w1));
+          y = (sg->p / c) * dw;
+          x = fma (sg->p / c, sg->p, (sg->w0 / c) * sg->w1);
+        }
+      sg->Phi = atan2 (y, x);
       sg->dist = dw;
-      sg->dPhi = dw / (sg->w0 * sg->w1);
+      sg->dPhi = dw / sg->w0 / sg->w1;   /* w0 w1 ~ l^2 may overflow */
     }
 }
 
@@ -342,11 +353,11 @@ chaplygin_massless_coefficient (double L0, double Dplus, int reversal,
        massless model has no next state (the paper: the skate "spins
        infinitely fast about a peg"): CHAPLYGIN_ESPIN.  The state with the
        peg at the point mass and H != 0 is itself invalid (ESTATE).
-   Domain: L0 finite, |L0| <= 2^500; in->dir = +-1; finite fields; E > 0
+   Domain: L0 finite, |L0| <= 2^1020; in->dir = +-1; finite fields; E > 0
    and V+ != 0 (2E l0^2 > H^2) unless H = 0.
    Errors: CHAPLYGIN_EINVAL (NULL, dir, request bits), CHAPLYGIN_EDOM
    (non-finite, E < 0), CHAPLYGIN_ESTATE (E = 0, V+ = 0 or |l0| < p),
-   CHAPLYGIN_ESPIN (see above), CHAPLYGIN_ERANGE (|L0| > 2^500, overflow
+   CHAPLYGIN_ESPIN (see above), CHAPLYGIN_ERANGE (|L0| > 2^1020, overflow
    of a result). */
 int
 chaplygin_massless_step (double L0, const chaplygin_discrete_state *in,
@@ -390,9 +401,10 @@ chaplygin_massless_step (double L0, const chaplygin_discrete_state *in,
       r.peg[0] = in->peg[0] + shift * cs;
       r.peg[1] = in->peg[1] + shift * sn;
     }
-  /* Defensive: for |L0| <= 2^500 and finite E the results are bounded
-     (|H'| <= |l+| sqrt(2E), dtau <= 2^788, |dtheta| < pi) and finite
-     inputs stay finite; kept so that no NaN or Inf can leave silently. */
+  /* |H'| <= |l+| sqrt(2E) and |dtheta| < pi are bounded; dtau = dist/s
+     (dist <= 2^1021) overflows for |L0| near 2^1020 with a tiny E, and
+     tau, peg may overflow by accumulation: ERANGE, so that no NaN or Inf
+     leaves silently. */
   if (!chp_finite4 (r.H, r.theta, r.tau, Vminus)
       || !chp_finite4 (r.peg[0], r.peg[1], dtheta, dtau))
     return CHAPLYGIN_ERANGE;
@@ -400,9 +412,11 @@ chaplygin_massless_step (double L0, const chaplygin_discrete_state *in,
     {
       ev->reversal = sg.reversal;
       /* D_c where |l| = p: D start + dir (|l0| - p), |l0| - p = w0^2/(|l0| + p) */
-      ev->Dc = !sg.reversal ? 0.0
-        : sg.start == 0 ? sg.g0 / (fabs (sg.l0) + sg.p)
-        : 1.0 - sg.g0 / (fabs (sg.l0) + sg.p);
+      /* w0^2/(|l0| + p); where w0^2 ~ l^2 overflows (|l0| > 2^512) as
+         w0 (w0/(|l0| + p)) */
+      double den = fabs (sg.l0) + sg.p;
+      double back = isfinite (sg.g0) ? sg.g0 / den : sg.w0 * (sg.w0 / den);
+      ev->Dc = !sg.reversal ? 0.0 : sg.start == 0 ? back : 1.0 - back;
       ev->Dminus = Dminus;
       ev->Dplus = 1.0 - Dminus;
       ev->Vminus = Vminus;

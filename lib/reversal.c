@@ -146,6 +146,20 @@ chaplygin_discrete_ratio_lower_bound (double L0, double Delta, int dir,
 {
   if (!rmin)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  CHP_TRY (chp_far_params (L0, Delta, dir, &f));
+  if (f.k)
+    {
+      /* far (lib/far.c): r = 2E/H^2 scales as 4^k; below 2^-1000 here,
+         subnormal or zero (ERANGE) */
+      double r;
+      CHP_TRY (chaplygin_discrete_ratio_lower_bound (f.L0, f.Delta, dir, &r));
+      r = ldexp (r, -2 * f.k);
+      if (!(r > 0.0))
+        return CHAPLYGIN_ERANGE;
+      *rmin = r;
+      return CHAPLYGIN_SUCCESS;
+    }
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
   *rmin = 1.0 / one_plus_sq_exact (run.ls, run.ls_err);
@@ -176,6 +190,24 @@ chaplygin_discrete_reversal_range (double L0, double Delta, int dir,
 {
   if (!rlo || !rhi || !nonempty)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  CHP_TRY (chp_far_params (L0, Delta, dir, &f));
+  if (f.k)
+    {
+      /* far: as chaplygin_discrete_ratio_lower_bound */
+      double lo, hi;
+      int ne;
+      CHP_TRY (chaplygin_discrete_reversal_range (f.L0, f.Delta, dir, &lo,
+                                                  &hi, &ne));
+      lo = ldexp (lo, -2 * f.k);
+      hi = ldexp (hi, -2 * f.k);
+      if (!(lo > 0.0 && hi > 0.0))
+        return CHAPLYGIN_ERANGE;
+      *rlo = lo;
+      *rhi = hi;
+      *nonempty = ne;
+      return CHAPLYGIN_SUCCESS;
+    }
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
   double lo = 1.0 / one_plus_sq_exact (run.ls, run.ls_err), hi = lo;
@@ -202,6 +234,10 @@ chaplygin_discrete_c3 (double L0, double Delta, int dir, double *C3)
 {
   if (!C3)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  CHP_TRY (chp_far_params (L0, Delta, dir, &f));
+  if (f.k)      /* far: C3 is a ratio of lengths squared, scale-free */
+    return chaplygin_discrete_c3 (f.L0, f.Delta, dir, C3);
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
   /* |Delta (2 L0 + Delta)| < 2^1003: finite */
@@ -323,6 +359,21 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
 {
   if (!sys || !reverses || !n)
     return CHAPLYGIN_EINVAL;
+  chp_far far;
+  chaplygin_discrete ss;
+  if (dir != 1 && dir != -1)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_far_sys (sys, &far, &ss));
+  if (far.k)
+    {
+      /* far: the scaled state; n and the outcome are scale-free */
+      double Es, Hs;
+      if (!chp_finite2 (E, H) || E < 0.0)
+        return CHAPLYGIN_EDOM;
+      CHP_TRY (chp_far_eh (&far, E, H, 0, &Es, &Hs));
+      return chaplygin_discrete_collisions_before_reversal (&ss, dir, Es, Hs,
+                                                            reverses, n);
+    }
   chp_run run;
   chp_motion m;
   CHP_TRY (chp_run_init (sys, dir, &run));
@@ -432,9 +483,18 @@ chaplygin_discrete_two_turning_points (double L0, double Delta, double E,
     return CHAPLYGIN_EDOM;
   chaplygin_discrete sys;
   chp_motion m;
+  chp_far f;
+  CHP_TRY (chp_far_init (L0, Delta, &f));
+  if (f.k)
+    {
+      /* far: the scaled problem (a far slot holds no turning point pair:
+         its ends have one sign) */
+      double Es, Hs;
+      CHP_TRY (chp_far_eh (&f, E, H, 1, &Es, &Hs));
+      return chaplygin_discrete_two_turning_points (f.L0, f.Delta, Es, Hs,
+                                                    two);
+    }
   CHP_TRY (chaplygin_discrete_init (&sys, L0, Delta));
-  if (fabs (sys.l_end[0]) > CHP_L_MAX || fabs (sys.l_end[1]) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
   CHP_TRY (chp_motion_init (E, H, &m));
   *two = L0 < 0.0 && -L0 < Delta && m.omh2 < 0.0
     && chp_motion_g_exact (&m, sys.l_end[0], sys.l_err[0]) > 0.0

@@ -65,8 +65,10 @@ chaplygin_discrete_sigma4 (double L0, double Delta, int dir, double *sigma4,
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
   double l1 = L0 + Delta;
-  if (fabs (L0) > CHP_L_MAX || fabs (l1) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
+  chp_far f;
+  CHP_TRY (chp_far_init (L0, Delta, &f));
+  if (f.k)      /* far (lib/far.c): sigma4 = C2 is scale-free */
+    return chaplygin_discrete_sigma4 (f.L0, f.Delta, dir, sigma4, sigma);
   /* the collision ends the segment at the far end: b is l there */
   double s = dir > 0 ? chp_collision_ratio (L0, Delta, l1, L0)
     : chp_collision_ratio (L0, Delta, L0, l1);
@@ -110,8 +112,10 @@ chaplygin_discrete_stable (double L0, double Delta, int dir, int *stable)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
-  if (fabs (L0) > CHP_L_MAX || fabs (L0 + Delta) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
+  chp_far f;
+  CHP_TRY (chp_far_init (L0, Delta, &f));
+  if (f.k)      /* far (lib/far.c): scale-free */
+    return chaplygin_discrete_stable (f.L0, f.Delta, dir, stable);
   int first = dir > 0 ? L0 > -Delta : L0 < 0.0;
   *stable = first && criterion_value (L0, Delta, dir) > 0.0;
   return CHAPLYGIN_SUCCESS;
@@ -206,6 +210,33 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
 {
   if (!sys || !st || !J)
     return CHAPLYGIN_EINVAL;
+  chp_far f;
+  chaplygin_discrete ss;
+  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  if (f.k)
+    {
+      /* far (lib/far.c): the Jacobian of the scaled map in the scaled
+         coordinates E_s = 4^m E, H_s = 2^(m-k) H, scaled back */
+      chaplygin_discrete_state si = *st;
+      double Js[16];
+      if (st->dir != 1 && st->dir != -1)
+        return CHAPLYGIN_EINVAL;
+      if (!chp_finite2 (st->E, st->H) || st->E < 0.0)
+        return CHAPLYGIN_EDOM;
+      CHP_TRY (chp_far_eh (&f, st->E, st->H, 1, &si.E, &si.H));
+      CHP_TRY (chaplygin_discrete_jacobian (&ss, &si, Js));
+      /* dE'/dH = 2 C1 H and dtheta'/dE are linear in H (2^-j), the
+         others not */
+      Js[7] = ldexp (Js[7], -f.k - f.m - f.j);  /* dE'/dH */
+      Js[9] = ldexp (Js[9], 2 * f.m - f.j);     /* dtheta'/dE */
+      Js[11] = ldexp (Js[11], f.m - f.k);       /* dtheta'/dH */
+      for (int i = 0; i < 16; i++)
+        if (!isfinite (Js[i]))
+          return CHAPLYGIN_ERANGE;
+      for (int i = 0; i < 16; i++)
+        J[i] = Js[i];
+      return CHAPLYGIN_SUCCESS;
+    }
   chaplygin_discrete_state next;
   chaplygin_discrete_event ev;
   CHP_TRY (chaplygin_discrete_step (sys, st,
@@ -408,8 +439,6 @@ chaplygin_discrete_xi4_taylor (double L0, int dir, double c[3])
     return CHAPLYGIN_EINVAL;
   if (!isfinite (L0))
     return CHAPLYGIN_EDOM;
-  if (fabs (L0) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
   /* with f = L0/a and 1/a = f/L0 (no overflow for large L0):
      dir +1:  c1 = 1/(2a) - 3/(2a^2),  c2 = f (7/a - 1)/(3a);
      dir -1:  c1 = f^2/2,              c2 = -f^3/3 */

@@ -25,6 +25,7 @@ UNIT_CHECKS = \
 	tests/test_energy \
 	tests/test_threads \
 	tests/test_extremes \
+	tests/test_far \
 	tests/test_alloc
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
@@ -84,6 +85,11 @@ EXTRA_DIST += tests/concordance.sh tests/ref/make_refs.py tests/ref/README
 tests_test_extremes_SOURCES = tests/test_extremes.c
 tests_test_extremes_CFLAGS = $(TEST_CFLAGS)
 tests_test_extremes_LDADD = $(TEST_LDADD) -lquadmath
+# the far slot (lib/far.c): beyond the cap 2^500, values against the
+# rho = 0 closed forms in binary128
+tests_test_far_SOURCES = tests/test_far.c
+tests_test_far_CFLAGS = $(TEST_CFLAGS)
+tests_test_far_LDADD = $(TEST_LDADD) -lquadmath
 # the hot path allocates nothing (a counting malloc interposed in the test)
 tests_test_alloc_SOURCES = tests/test_alloc.c
 tests_test_alloc_CFLAGS = $(TEST_CFLAGS)

@@ -332,10 +332,44 @@ START_TEST (eq_3_7)
   ck_assert_status (chaplygin_discrete_collide_eh (0.0, 1.0, pm, pp), CHAPLYGIN_EDOM);
   pm[1] = 1.0;
   ck_assert_status (chaplygin_discrete_collide_eh (0.0, 0.0, pm, pp), CHAPLYGIN_EDOM);
-  /* |L0 + Delta| above 2^500 is not supported (ERANGE); within it a large
-     C2 = (2 + 1e150)/2 at D- = 0 is exact */
+  /* Beyond the cap 2^500 only a far slot (both ends of one strict sign,
+     max |l| <= 2^400 min |l|) is handled: ends 1 and 1e300 are not one
+     (ERANGE, pp untouched); within the cap a large C2 = (2 + 1e150)/2 at
+     D- = 0 is exact */
   pm[0] = 0.0, pm[1] = 1.0, pm[3] = 1.0;
   ck_assert_status (chaplygin_discrete_collide_eh (1.0, 1e300, pm, pp), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_collide_eh (-1e300, 2e300, pm, pp), CHAPLYGIN_ERANGE);
+  ck_assert (pp[0] == 9 && pp[1] == 9 && pp[2] == 9 && pp[3] == 9);
+  /* far slots, against the binary128 route of the loop above ((3.6),
+     then (3.3), (3.4); l^2 ~ 1e600 in its range), 8 eps as there;
+     states with V^2 comparable to (1 + l^2) Omega^2 */
+  {
+    const double far[][5] = {   /* L0, Delta, D- (0 or Delta), V, Omega */
+      { 0x1p501, 0x1p501, 0, 1.0, 0x1.6666666666666p-502 },
+      { 0x1p501, 0x1p501, 1, -1.0, -0x1p-503 },
+      { -0x1.8p600, 0x1p599, 0, 0.5, -1e-181 },
+      { -0x1.8p600, 0x1p599, 1, -2.0, 3e-300 },
+      { 1e300, 1, 0, 1, 1e-300 }
+    };
+    for (int k = 0; k < 5; k++)
+      {
+        double L0 = far[k][0], Dl = far[k][1], Dm = far[k][2] ? Dl : 0.0;
+        double V = far[k][3], Om = far[k][4];
+        q128 lm = (q128) L0 + Dm, lp = (q128) L0 + (Dl - Dm);
+        double Em = (double) (((q128) V * V + (1 + lm * lm) * Om * Om) / 2);
+        double Hm = (double) ((1 + lm * lm) * Om);
+        q128 Om_m = Hm / (1 + lm * lm);
+        q128 V2 = 2 * (q128) Em - (q128) Hm * Om_m;
+        q128 Omp = (1 + lp * lm) / (1 + lp * lp) * Om_m;
+        q128 Ep = (V2 + (1 + lp * lp) * Omp * Omp) / 2;
+        q128 Hp = (1 + lp * lp) * Omp;
+        double pf[4] = { Dm, Em, 0.25, Hm }, qf[4];
+        ck_assert_ok (chaplygin_discrete_collide_eh (L0, Dl, pf, qf));
+        ck_assert (qf[CHAPLYGIN_D] == Dl - Dm && qf[CHAPLYGIN_THETA] == 0.25);
+        ck_assert_rel (qf[CHAPLYGIN_E], (double) Ep, 8 * DBL_EPSILON);
+        ck_assert_rel (qf[CHAPLYGIN_H], (double) Hp, 8 * DBL_EPSILON);
+      }
+  }
   ck_assert_ok (chaplygin_discrete_collide_eh (1.0, 1e150, pm, pp));
   ck_assert_rel (pp[CHAPLYGIN_H], 5e149, 2 * DBL_EPSILON);
   /* A collision that takes nearly all the energy: L0 = 0, Delta = 17861.79,

@@ -1,15 +1,17 @@
 /* test_extremes.c -- the entry points at the edges of their domains
    (issue 6): Delta from 1e-12 to 1e6; |L0 + D| up to the cap 2^500 of
-   lib/internal.h (CHP_L_MAX) and beyond it to 1e200, where the
-   discrete-skate routines refuse with CHAPLYGIN_ERANGE (documented: the
-   products of 1 + l^2 overflow); energies from 1e-300 to 1e100; H down to
+   lib/internal.h (CHP_L_MAX) and beyond it to 1e200: a far slot (both
+   ends of one sign, max |l| <= 2^400 min |l|) is solved by exact scaling
+   (lib/far.c), any other slot beyond the cap is refused with
+   CHAPLYGIN_ERANGE (the products of 1 + l^2 overflow); energies from 1e-300 to 1e100; H down to
    1e-300, subnormal and +-0; 2E/H^2 within ulps of 1 (the spinning state);
    a turning point exactly on, or an ulp from, the far end; 1e7 collisions;
    every method (closed form double and single, quadrature, ODE).
 
    What is asserted: the documented status (predicted here independently
    of the library where it is decidable: the spinning state by 2E == H^2 in
-   binary128, where H^2 is exact; the cap by |l| against 2^500), outputs
+   binary128, where H^2 is exact; the cap and the far regime by the exact
+   ends in binary128), outputs
    finite on success and untouched on failure (filled with a sentinel
    first), no hang (Check's timeout), and, where a reference from another
    route exists, the value: binary128 (libquadmath) for a straight motion,
@@ -135,6 +137,32 @@ within_cap (double L0, double Delta)
   return fabs (L0) <= CAP && fabs (L0 + Delta) <= CAP;
 }
 
+/* Beyond the cap, a far slot (lib/far.c): ends of one strict sign and
+   max |l| <= 2^400 min |l|, from the exact ends in binary128. */
+static int
+far_slot (double L0, double Delta)
+{
+  const q128 a = L0, b = (q128) L0 + Delta;
+  const q128 hi = fmaxq (fabsq (a), fabsq (b)), lo = fminq (fabsq (a),
+                                                          fabsq (b));
+  return hi > CAP && ((a > 0 && b > 0) || (a < 0 && b < 0))
+    && hi <= 0x1p400Q * lo;
+}
+
+/* What the discrete-skate routines accept. */
+static int
+supported (double L0, double Delta)
+{
+  return within_cap (L0, Delta) || far_slot (L0, Delta);
+}
+
+/* 1/(1 + l^2) in binary128 (l exact), the bound (3.15). */
+static q128
+ratio_bound (q128 l)
+{
+  return 1 / (1 + l * l);
+}
+
 /* 2E == H^2 exactly (binary128: the square of a double is exact there). */
 static int
 spinning_ratio (double E, double H)
@@ -160,9 +188,8 @@ START_TEST (extremes_parameters)
     for (size_t j = 0; j < NELEM (Delta_grid); j++)
       {
         const double L0 = L0_grid[i], Delta = Delta_grid[j];
-        const int in = within_cap (L0, Delta);
-        /* beyond the cap: documented CHAPLYGIN_ERANGE */
-        const unsigned capped = in ? A_OK : A_ERANGE;
+        /* beyond the cap, unless far: documented CHAPLYGIN_ERANGE */
+        const unsigned capped = supported (L0, Delta) ? A_OK : A_ERANGE;
         double v[8];
         chaplygin_discrete sys;
         snprintf (what, sizeof what, "init (%g, %g)", L0, Delta);
@@ -208,8 +235,9 @@ START_TEST (extremes_parameters)
                     num > 0 ? A_OK : A_EDOM, v, 1, what);
             snprintf (what, sizeof what, "xi4_taylor (%g, %d)", L0, dir);
             fill (v, 3);
-            expect (chaplygin_discrete_xi4_taylor (L0, dir, v),
-                    fabs (L0) <= CAP ? A_OK : A_ERANGE, v, 3, what);
+            /* for every finite L0 (c1, c2 underflow far out) */
+            expect (chaplygin_discrete_xi4_taylor (L0, dir, v), A_OK, v, 3,
+                    what);
             snprintf (what, sizeof what, "energy_converges (%g, %g, %d)",
                       L0, Delta, dir);
             flag = 99;
@@ -218,17 +246,36 @@ START_TEST (extremes_parameters)
             ck_assert (st || flag == 0 || flag == 1);
             snprintf (what, sizeof what, "reversal_range (%g, %g, %d)",
                       L0, Delta, dir);
+            /* the bounds 1/(1 + l^2): CHAPLYGIN_ERANGE also where one
+               underflows to 0 (|l| beyond ~2^537); values within 4 eps
+               (2 ulps documented) where normal */
+            const q128 ls = dir > 0 ? (q128) L0 : (q128) L0 + Delta;
+            const q128 lf = dir > 0 ? (q128) L0 + Delta : (q128) L0;
+            const int toward = dir > 0 ? ls < 0 : ls > 0;
+            const int crosses = (ls <= 0 && lf >= 0) || (ls >= 0 && lf <= 0);
+            const q128 rlo = ratio_bound (ls);
+            const q128 rhi = !toward ? rlo : crosses ? 1 : ratio_bound (lf);
+            const unsigned rr = capped == A_OK && rlo > 0x1p-1074Q
+              && rhi > 0x1p-1074Q ? A_OK : A_ERANGE;
             fill (v, 2);
             st = chaplygin_discrete_reversal_range (L0, Delta, dir, &v[0],
                                                     &v[1], &flag);
-            expect (st, capped, v, 2, what);
+            expect (st, rr, v, 2, what);
             ck_assert_msg (st || (v[0] > 0 && v[0] <= v[1] && v[1] <= 1),
                            "%s: (%g, %g)", what, v[0], v[1]);
+            if (st == CHAPLYGIN_SUCCESS && rlo >= DBL_MIN && rhi >= DBL_MIN)
+              {
+                ck_assert_eps (v[0], (double) rlo, 4);
+                ck_assert_eps (v[1], (double) rhi, 4);
+              }
             snprintf (what, sizeof what, "ratio_lower_bound (%g, %g, %d)",
                       L0, Delta, dir);
             fill (v, 1);
             st = chaplygin_discrete_ratio_lower_bound (L0, Delta, dir, v);
-            expect (st, capped, v, 1, what);
+            expect (st, capped == A_OK && rlo > 0x1p-1074Q ? A_OK : A_ERANGE,
+                    v, 1, what);
+            if (st == CHAPLYGIN_SUCCESS && rlo >= DBL_MIN)
+              ck_assert_eps (v[0], (double) rlo, 4);
             snprintf (what, sizeof what, "c3 (%g, %g, %d)", L0, Delta, dir);
             fill (v, 1);
             expect (chaplygin_discrete_c3 (L0, Delta, dir, v), capped, v, 1,
@@ -292,17 +339,17 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
 {
   char what[300];
   const double L0 = sys->L0, Delta = sys->Delta;
-  const int in_cap = within_cap (L0, Delta);
+  const int accepted = supported (L0, Delta);   /* within the cap or far */
   const int spin = spinning_ratio (in->E, in->H)
     && path_reaches_zero (L0, Delta, in->dir);
   /* the documented outcome of the map: ESPIN exactly at the spinning
-     state, ERANGE beyond the cap, a next state otherwise */
+     state, ERANGE beyond the cap unless far, a next state otherwise */
   /* within the ODE's tolerance (1e-8) of the spinning state its
      integration cannot decide turn or pass: documented ENOCONV */
   const q128 twoE = 2 * (q128) in->E, H2 = (q128) in->H * in->H;
   const unsigned ode_near = k == 3 && fabsq (twoE - H2) <= 1e-8 * twoE
     ? A_ENOCONV : 0;
-  const unsigned map_status = (!in_cap ? A_ERANGE : spin ? A_ESPIN : A_OK)
+  const unsigned map_status = (!accepted ? A_ERANGE : spin ? A_ESPIN : A_OK)
     | ode_near;
   chaplygin_discrete_state out, eh;
   chaplygin_discrete_event ev;
@@ -349,8 +396,8 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   fill (q, 4);
   snprintf (what, sizeof what, "state_to_phase, %s", where);
   st = chaplygin_discrete_state_to_phase (sys, in, q);
-  expect (st, in_cap ? A_OK : A_OK | A_ERANGE, q, 4, what);
-  if (st == CHAPLYGIN_SUCCESS && in_cap && q[CHAPLYGIN_V] != 0)
+  expect (st, accepted ? A_OK : A_OK | A_ERANGE, q, 4, what);
+  if (st == CHAPLYGIN_SUCCESS && accepted && q[CHAPLYGIN_V] != 0)
     {
       double qn[5];
       fill (qn, 5);
@@ -380,7 +427,7 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   snprintf (what, sizeof what, "fate, %s", where);
   st = chaplygin_discrete_fate (sys, in, 100000, NULL, 0, &fate);
   v[0] = fate.E_final, v[1] = fate.V_final;
-  expect (st, in_cap ? A_OK : A_ERANGE, v, 2, what);
+  expect (st, accepted ? A_OK : A_ERANGE, v, 2, what);
   ck_assert_msg (st || (fate.kind >= -1 && fate.kind <= 2),
                  "%s: kind %d", what, fate.kind);
   ck_assert_msg (st || fate.kind != CHAPLYGIN_FATE_SPIN || spin
@@ -392,7 +439,7 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   st = chaplygin_discrete_collisions_before_reversal (sys, in->dir, in->E,
                                                       in->H, &flag, &nc);
   /* ERANGE also where n > 2^62 (C2 = 1 exactly at L0 = 0, dir -1) */
-  expect (st, !in_cap ? A_ERANGE : A_OK | A_ESPIN | A_ERANGE, NULL, 0, what);
+  expect (st, !accepted ? A_ERANGE : A_OK | A_ESPIN | A_ERANGE, NULL, 0, what);
   for (int e = 0; e < 3; e++)
     {
       static const unsigned long nn[3] = { 1, 10000000, (unsigned long) -1 };
@@ -401,13 +448,13 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
       fill (v, 2);
       st = chaplygin_discrete_energy_after (sys, in->dir, in->E, in->H,
                                             nn[e], &v[0], &v[1]);
-      expect (st, !in_cap ? A_ERANGE : A_OK | A_ESTATE | A_ESPIN, v, 2,
+      expect (st, !accepted ? A_ERANGE : A_OK | A_ESTATE | A_ESPIN, v, 2,
               what);
     }
   snprintf (what, sizeof what, "final_energy, %s", where);
   fill (v, 1);
   st = chaplygin_discrete_final_energy (sys, in->dir, in->E, in->H, v);
-  expect (st, !in_cap ? A_ERANGE : A_OK | A_EDOM | A_ESTATE | A_ESPIN, v, 1,
+  expect (st, !accepted ? A_ERANGE : A_OK | A_EDOM | A_ESTATE | A_ESPIN, v, 1,
           what);
   snprintf (what, sizeof what, "turning_points, %s", where);
   fill (v, 2);
@@ -432,7 +479,7 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   snprintf (what, sizeof what, "two_turning_points, %s", where);
   st = chaplygin_discrete_two_turning_points (L0, Delta, in->E, in->H, &flag);
   /* ERANGE (documented) where H^2/(2E) is extreme */
-  expect (st, !in_cap ? A_ERANGE : huge_h2 ? A_OK | A_ERANGE : A_OK, NULL,
+  expect (st, !accepted ? A_ERANGE : huge_h2 ? A_OK | A_ERANGE : A_OK, NULL,
           0, what);
   for (int rev = 0; rev < 2; rev++)
     {
@@ -440,7 +487,7 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
       fill (v, 1);
       st = chaplygin_discrete_collision_loss (sys, in->dir, rev, in->H, v);
       /* -C1 H^2 from the coefficients, which exist for every L0 */
-      expect (st, in_cap ? A_OK : A_OK | A_ERANGE, v, 1, what);
+      expect (st, accepted ? A_OK : A_OK | A_ERANGE, v, 1, what);
       ck_assert (st || v[0] >= 0);
     }
   snprintf (what, sizeof what, "jacobian, %s", where);
@@ -448,7 +495,7 @@ state_calls (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   st = chaplygin_discrete_jacobian (sys, in, v);
   /* ENOCONV documented where its fallback quadrature fails (near the
      spinning state, where Phi'(h) ~ |1 - h^2|^(-3/2) peaks at l = 0) */
-  expect (st, !in_cap ? A_ERANGE : A_OK | A_ESTATE | A_ESPIN | A_ENOCONV, v,
+  expect (st, !accepted ? A_ERANGE : A_OK | A_ESTATE | A_ESPIN | A_ENOCONV, v,
           16, what);
 }
 
@@ -719,25 +766,33 @@ START_TEST (extremes_turning_point_at_end)
 }
 END_TEST
 
-/* ---- the cap 2^500 ----------------------------------------------------- */
+/* ---- the cap 2^500 and the far regime ---------------------------------- */
 
 START_TEST (extremes_cap)
 {
-  /* At |L0| = 2^500 exactly the map succeeds with every method and its
-     outputs are finite; one ulp beyond, and at 1e200, every method and the
-     fate refuse with CHAPLYGIN_ERANGE and leave their outputs alone. */
+  /* At |L0| = 2^500 exactly, one ulp beyond and at +-1e200 (far slots,
+     lib/far.c) the map succeeds with every method: H' against C2 H with
+     the (3.7) coefficient evaluated in binary128 (whose range holds
+     (1 + l^2)^3 at 1e200), E' = E + C1 H^2 likewise (C1 H^2/E ~ 1e-300
+     at 2^500: E' rounds to E).  The heading and time at the far regime
+     are checked against the rho = 0 closed forms in tests/test_far.c. */
   static const double L0s[] = { 0x1p500, -0x1p500, 0x1.0000000000001p500,
     -0x1.0000000000001p500, 1e200, -1e200 };
   for (size_t a = 0; a < NELEM (L0s); a++)
     for (int dir = -1; dir <= 1; dir += 2)
       {
         const double L0 = L0s[a], Delta = 0.5;
-        const int in_cap = fabs (L0) <= CAP;
         chaplygin_discrete sys;
         ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
         /* Omega sqrt(1 + l^2) = 0.5: H = 0.5 |l| (about 1.6e150) */
         chaplygin_discrete_state in = make_state (L0, Delta, dir, 1.0, 1.0,
                                                   0.5);
+        const q128 ls = dir > 0 ? (q128) L0 : (q128) L0 + Delta;
+        const q128 lf = dir > 0 ? (q128) L0 + Delta : (q128) L0;
+        const q128 C2 = (1 + ls * lf) / (1 + lf * lf);
+        const q128 C1 = -(q128) Delta * Delta
+          / (2 * (1 + lf * lf) * (1 + lf * lf) * (1 + ls * ls));
+        const q128 H1 = C2 * in.H, E1 = in.E + C1 * in.H * (q128) in.H;
         for (int k = 0; k < 4; k++)
           {
             chaplygin_discrete_state out;
@@ -750,18 +805,48 @@ START_TEST (extremes_cap)
             int n = state_values (&out, v);
             n += event_values (&ev, v + n);
             char what[120];
-            snprintf (what, sizeof what, "step at L0 = %a, %s", L0,
-                      method_name[k]);
-            expect (st, in_cap ? A_OK : A_ERANGE, v, n, what);
-            if (st == CHAPLYGIN_SUCCESS)
-              {
-                /* far from the slot a collision barely changes H:
-                   C2 = 1 - O(Delta/l) */
-                ck_assert_rel (out.H, in.H, 1e-140);
-                ck_assert_msg (out.dir == dir && ev.reversal == 0, "%s",
-                               what);
-              }
+            snprintf (what, sizeof what, "step at L0 = %a, dir %d, %s", L0,
+                      dir, method_name[k]);
+            expect (st, A_OK, v, n, what);
+            ck_assert_msg (out.dir == dir && ev.reversal == 0, "%s", what);
+            /* H' = C2 H: two roundings (C2 within 2 ulps, the product);
+               the ODE's H' from its integrated Omega: its tolerance */
+            ck_assert_rel (out.H, (double) H1, k == 3 ? 1e-8 : 4 * DBL_EPSILON);
+            ck_assert_rel (out.E, (double) E1, k == 3 ? 1e-8 : DBL_EPSILON);
           }
+      }
+  /* beyond the cap but not far: ends of opposite sign, an end at 0, or
+     max |l| > 2^400 min |l|: CHAPLYGIN_ERANGE, nothing written */
+  static const double refused[][2] = {
+    { -1e200, 2e200 }, { -1e200, 1e200 }, { 0x1p95, 0x1p501 },
+    { 1.0, 0x1p501 }, { -0x1p501, 0x1.0000000000001p501 }
+  };
+  for (size_t a = 0; a < NELEM (refused); a++)
+    for (int dir = -1; dir <= 1; dir += 2)
+      {
+        const double L0 = refused[a][0], Delta = refused[a][1];
+        chaplygin_discrete sys;
+        ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+        ck_assert (!supported (L0, Delta));
+        chaplygin_discrete_state in = { dir, 0.5, 1.0, 0, 0, { 0, 0 } }, out;
+        chaplygin_discrete_event ev;
+        double v[12];
+        char what[120];
+        snprintf (what, sizeof what, "refused step (%a, %a, %d)", L0, Delta,
+                  dir);
+        for (int k = 0; k < 4; k++)
+          {
+            fill_state (&out);
+            fill_event (&ev);
+            int st = chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_ALL,
+                                              &methods[k], &out, &ev);
+            int n = state_values (&out, v);
+            n += event_values (&ev, v + n);
+            expect (st, A_ERANGE, v, n, what);
+          }
+        fill (v, 5);
+        expect (chaplygin_discrete_sigma4 (L0, Delta, dir, v, v + 1),
+                A_ERANGE, v, 5, what);
       }
 }
 END_TEST

@@ -89,6 +89,24 @@ b10_q (double L0, double Delta, int dir, double E, double H)
   return (q128) E + C1 * (q128) H * H / (1 - C2 * C2);
 }
 
+/* (B.10) with 1 - C2^2 factored out of the printed (B.3) coefficients, in
+   binary128: for |L0| >> 1, where the printed C2 = 1 - O(Delta/L0) rounds
+   to 1 in binary128 too.  With l_f = L0 + Delta,
+     dir +1:  C1/(1 - C2^2) = -Delta/(2 (1 + L0^2) l_f (2 + l_f (2 L0 + Delta))),
+     dir -1:  C1/(1 - C2^2) = Delta/(2 (1 + l_f^2) L0 (2 + L0 (2 L0 + Delta)))
+   (1 - C2 = Delta l_f/(1 + l_f^2), resp. -L0 Delta/(1 + L0^2); the (B.12)
+   brackets of fate_b12 are the same factorisation). */
+static q128
+b10_far_q (double L0, double Delta, int dir, double E, double H)
+{
+  q128 l = L0, D = Delta, lf = l + D, b = 2 * l + D, k;
+  if (dir > 0)
+    k = -D / (2 * (1 + l * l) * lf * (2 + lf * b));
+  else
+    k = D / (2 * (1 + lf * lf) * l * (2 + l * b));
+  return (q128) E + k * (q128) H * H;
+}
+
 /* |C1| H^2/(1 - C2^2) with the library's coefficients of the collision at
    the end a motion in direction dir leaves: the energy still to be lost
    without reversal (the tail of (B.9)). */
@@ -873,11 +891,88 @@ START_TEST (fate_errors)
   bad = sys;
   bad.l_err[1] = nan;
   ck_assert_status (chaplygin_discrete_fate (&bad, &s, 10, at, 2, &f), CHAPLYGIN_EDOM);
-  ck_assert_ok (chaplygin_discrete_init (&bad, 0x1p501, 1.0));
+  /* Far slots (an end beyond 2^500, both ends of one strict sign, max |l|
+     <= 2^400 min |l|): a fate, no longer ERANGE. */
+  {
+    chaplygin_discrete fs;
+    chaplygin_fate g;
+    unsigned long at2[2] = { 9, 9 };
+    /* the factorised (B.10) against the printed one where both work */
+    const double chk[][2] = { { 1.5, 0.5 }, { -2.5, 0.75 }, { 0.3, 2.0 } };
+    for (int i = 0; i < 3; i++)
+      for (int dir = -1; dir <= 1; dir += 2)
+        {
+          q128 a = b10_far_q (chk[i][0], chk[i][1], dir, 1.0, 0.5);
+          q128 b = b10_q (chk[i][0], chk[i][1], dir, 1.0, 0.5);
+          ck_assert (fabs ((double) ((a - b) / b)) < 1e-30);
+        }
+    /* (2^501, 1) and (2^500, 2^500) from s (dir +1, E = 1, H = 1/2):
+       moving away from the mass centre with |C2| < 1, forward and certain
+       at collision 0; E_final by the factorised (B.10), V_final = sqrt(2
+       E_final) (E_final = E less 2^-2000 at most: 1 exactly, a check of the
+       classification more than of the value).  8 eps as in fate_b12. */
+    const double fwd[][2] = { { 0x1p501, 1.0 }, { 0x1p500, 0x1p500 } };
+    for (int i = 0; i < 2; i++)
+      {
+        ck_assert_ok (chaplygin_discrete_init (&fs, fwd[i][0], fwd[i][1]));
+        ck_assert_ok (chaplygin_discrete_fate (&fs, &s, 10, at2, 2, &g));
+        ck_assert (g.kind == FWD && g.collisions == 0 && g.reversals == 0
+                   && g.last_reversal == 0);
+        q128 Ef = b10_far_q (fwd[i][0], fwd[i][1], 1, s.E, s.H);
+        ck_assert_eps (g.E_final, (double) Ef, 8);
+        ck_assert_eps (g.V_final, (double) sqrt_q (2 * Ef), 8);
+      }
+    ck_assert (at2[0] == 9 && at2[1] == 9);
+    /* (-3 2^500, 2^500) (ends -3 2^500, -2^501), phase state V+ = -2^502,
+       Omega+ = 3 at D = Delta: moving away, backward at collision 0;
+       (B.12) V < 0 in binary128 (as fate_b12): V_f^2 = V^2 + (1 + l_f^2)
+       [1 + Delta/(L0 (2 + L0 (2 L0 + Delta)))] Omega^2 = 13 4^501 (the
+       bracket is 1 + O(2^-1500)); E_final = V_f^2/2 < 2^1007. */
+    {
+      double L0 = -0x1.8p501, Delta = 0x1p500;
+      double qb[4] = { Delta, -0x1p502, 0.3, 3.0 };
+      ck_assert_ok (chaplygin_discrete_init (&fs, L0, Delta));
+      ck_assert_ok (chaplygin_discrete_fate_phase (&fs, qb, 10, at2, 2, &g));
+      ck_assert (g.kind == BWD && g.collisions == 0 && g.reversals == 0);
+      q128 l = L0, D = Delta, lf = l + D;
+      q128 Vf2 = (q128) qb[1] * qb[1]
+        + (1 + lf * lf) * (1 + D / (l * (2 + l * (2 * l + D)))) * (q128) qb[3] * qb[3];
+      ck_assert_eps (g.E_final, (double) (Vf2 / 2), 8);
+      ck_assert_eps (g.V_final, (double) -sqrt_q (Vf2), 8);
+    }
+    /* (-2^501, 1), phase state q (V+ = 1/2 forward, Omega+ = 0.7): towards
+       the mass centre with r - 1/(1 + L0^2) = V^2/((1 + L0^2)^2 Omega^2)
+       below the reversal range's width (3.14): it reverses on its first
+       path, then recedes for good: backward, 1 reversal, ending at
+       collision 1.  The range condition, V^2 (1 + (L0 + Delta)^2) <
+       Omega^2 (1 + L0^2) Delta (2 |L0| - Delta), is decided in binary128
+       with a margin of 2^500.  Energy: every collision loses at most
+       Delta^2 H^2/(2 n^3) <= E Delta^2/n^2 (n = 1 + l^2 >= 2^1000, H^2 <=
+       2 E n), over ~|L0|/Delta collisions' worth of the geometric tail:
+       E_final = E to a relative 2^-1500, E = (V^2 + (1 + L0^2) Omega^2)/2
+       in binary128; V_final = -sqrt(2 E). */
+    {
+      double L0 = -0x1p501, Delta = 1.0;
+      q128 l = L0, D = Delta, lm = l + D;
+      ck_assert ((q128) q[1] * q[1] * (1 + lm * lm)
+                 < 0x1p-500 * (q128) q[3] * q[3] * (1 + l * l) * D * (-2 * l - D));
+      ck_assert_ok (chaplygin_discrete_init (&fs, L0, Delta));
+      ck_assert_ok (chaplygin_discrete_fate_phase (&fs, q, 10, at2, 2, &g));
+      ck_assert (g.kind == BWD && g.collisions == 1 && g.reversals == 1
+                 && g.last_reversal == 1 && at2[0] == 1 && at2[1] == 9);
+      q128 E = ((q128) q[1] * q[1] + (1 + l * l) * (q128) q[3] * q[3]) / 2;
+      ck_assert_eps (g.E_final, (double) E, 8);
+      ck_assert_eps (g.V_final, (double) -sqrt_q (2 * E), 8);
+    }
+  }
+  /* beyond the cap and not far: ERANGE -- ends of opposite sign (the mass
+     centre in the slot), ends 1 and 2^501 (max |l| > 2^400 min |l|), an
+     end at 0 */
+  ck_assert_ok (chaplygin_discrete_init (&bad, -0x1p501, 0x1p502));
   ck_assert_status (chaplygin_discrete_fate (&bad, &s, 10, at, 2, &f), CHAPLYGIN_ERANGE);
-  ck_assert_ok (chaplygin_discrete_init (&bad, 0x1p500, 0x1p500));     /* L0 + Delta */
+  ck_assert_ok (chaplygin_discrete_init (&bad, 1.0, 0x1p501));
   ck_assert_status (chaplygin_discrete_fate (&bad, &s, 10, at, 2, &f), CHAPLYGIN_ERANGE);
-  ck_assert_ok (chaplygin_discrete_init (&bad, -0x1p501, 1.0));
+  ck_assert_ok (chaplygin_discrete_init (&bad, -0x1p501, 0x1p501));
   ck_assert_status (chaplygin_discrete_fate_phase (&bad, q, 10, at, 2, &f), CHAPLYGIN_ERANGE);
   /* nothing written on failure */
   ck_assert (f.kind == 7 && f.collisions == 7 && f.E_final == 7.0 && at[0] == 9 && at[1] == 9);

@@ -336,7 +336,18 @@ START_TEST (eq_B_5)
                     CHAPLYGIN_ERANGE);
   ck_assert_status (chaplygin_discrete_turning_points (0, 0, 1, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_turning_points (NAN, 1, 1, 1, &nr, Dc, &ns), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1e200, &nr, Dc, &ns), CHAPLYGIN_ERANGE);
+  /* H^2 overflows but the turning points exist: h^2 = 1e400/2, c =
+     sqrt(h^2 - 1) = 1e200/sqrt(2) to far below rounding (reference in
+     long double, where 1e200/sqrt(2) is within 2^-64); two roundings
+     (sqrt, division): 2 eps.  And H = 2^513, E = 2^1023: h^2 = 4
+     exactly, c = sqrt(3) correctly rounded (the ratio from E, H scaled
+     exactly). */
+  ck_assert_ok (chaplygin_discrete_turning_points (0, 1, 1, 1e200, &nr, Dc, &ns));
+  ck_assert (nr == 2 && ns == 0);
+  ck_assert_eps (Dc[1], (double) (1e200L / sqrtl (2.0L)), 2);
+  ck_assert (Dc[0] == -Dc[1]);
+  ck_assert_ok (chaplygin_discrete_turning_points (0, 1, 0x1p1023, 0x1p513, &nr, Dc, &ns));
+  ck_assert (nr == 2 && Dc[0] == -sqrt (3.0) && Dc[1] == sqrt (3.0));
   ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1, NULL, Dc, &ns), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1, &nr, NULL, &ns), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_turning_points (0, 1, 1, 1, &nr, Dc, NULL), CHAPLYGIN_EINVAL);
@@ -714,15 +725,23 @@ START_TEST (test_step_errors)
   chaplygin_discrete junk = sys;
   junk.Delta = -1;
   ck_assert_status (chaplygin_discrete_step (&junk, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
-  /* |L0 + Delta| beyond 2^500 is outside the supported range: ERANGE,
-     not garbage (1 + l^2 and its products would overflow). */
+  /* |L0 + Delta| beyond 2^500 is supported only for a far slot (both
+     ends of one sign, max |l| <= 2^400 min |l|, lib/far.c); elsewhere
+     ERANGE, not garbage (1 + l^2 and its products would overflow):
+     ends 1 and 1e300, ends of opposite sign. */
   chaplygin_discrete big;
   ck_assert_ok (chaplygin_discrete_init (&big, 1.0, 1e300));
   chaplygin_discrete_state bs = { -1, 1e20, 1.0, 0, 0, { 0, 0 } };
   ck_assert_status (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ERANGE);
-  ck_assert_ok (chaplygin_discrete_init (&big, 1e155, 1.0));
+  ck_assert_ok (chaplygin_discrete_init (&big, -1e155, 2e155));
   bs.dir = 1, bs.E = 0.5, bs.H = 0.5;
   ck_assert_status (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ERANGE);
+  /* a far slot: L0 = 1e155, Delta = 1.  C2 = (1 + L0 (L0 + 1))/(1 +
+     (L0 + 1)^2) = 1 - O(1e-155) and C1 = O(1e-930): H' = 0.5 C2 and
+     E' = 0.5 + C1/4 both round to 0.5 exactly */
+  ck_assert_ok (chaplygin_discrete_init (&big, 1e155, 1.0));
+  ck_assert_ok (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL));
+  ck_assert (o.E == 0.5 && o.H == 0.5 && o.dir == 1);
   /* within it: L0 = 1, Delta = 1e150, backward without reversal, the peg
      leaves D = 0 where C2 = (2 + 1e150)/2 (the reviewer's case of a C2
      lost to cancellation, at 1e160, is tested in test_status) */

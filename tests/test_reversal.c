@@ -210,8 +210,48 @@ START_TEST (eq_3_15)
   ck_assert_status (chaplygin_discrete_ratio_lower_bound (NAN, 1, 1, &rmin), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_ratio_lower_bound (1, 0, 1, &rmin), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_ratio_lower_bound (1, INFINITY, 1, &rmin), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_ratio_lower_bound (0x1p501, 1, 1, &rmin), CHAPLYGIN_ERANGE);
-  ck_assert_status (chaplygin_discrete_ratio_lower_bound (-0x1p501, 1, -1, &rmin), CHAPLYGIN_ERANGE);
+  /* Far slots (an end beyond 2^500, one strict sign, max |l| <= 2^400 min
+     |l|): rmin = 1/(1 + l_s^2) is a value where it does not underflow to
+     0.  Reference: (3.15) in binary128 as above (its L0 + Delta drops the
+     1 of -2^501 + 1: a relative 2^-500); 2 eps for a normal rmin, 1 unit
+     2^-1074 for a subnormal one (the answer of a problem scaled by 2^-2k
+     is scaled back once: one rounding into the subnormals).  Where rmin
+     is normal the library's map agrees 8 ulps either side, as above. */
+  {
+    const double far[][3] = {
+      { 0x1p501, 1, 1 }, { -0x1p501, 1, -1 }, { 0x1p501, 0x1p501, 1 },
+      { -0x1.8p509, 0x1p508, -1 }, { 0x1p520, 1, 1 }, { 0x1.8p515, 1, 1 },
+      { -0x1p537, 1, 1 }
+    };
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+      {
+        double L0 = far[i][0], Delta = far[i][1];
+        int dir = (int) far[i][2];
+        q128 l = dir > 0 ? (q128) L0 : (q128) L0 + Delta;
+        double want = (double) (1 / (1 + l * l));
+        ck_assert_ok (chaplygin_discrete_ratio_lower_bound (L0, Delta, dir, &rmin));
+        if (want >= DBL_MIN)
+          {
+            ck_assert_rel (rmin, want, 2 * DBL_EPSILON);
+            ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+            ck_assert_ok (lib_step (&sys, dir, beside (rmin, 8) / 2, 1.0, &rev));
+            ck_assert_status (lib_step (&sys, dir, beside (rmin, -8) / 2, 1.0, &rev),
+                              CHAPLYGIN_ESTATE);
+          }
+        else
+          ck_assert_msg (fabs (rmin - want) <= 0x1p-1074, "rmin = %a, binary128 %a",
+                         rmin, want);
+      }
+  }
+  /* far, but rmin underflows to 0 (1e-400; 2^-1076): ERANGE; beyond the
+     cap and not far (an end at 1 with the other at 2^501; opposite
+     signs): ERANGE; rmin untouched */
+  rmin = 7;
+  ck_assert_status (chaplygin_discrete_ratio_lower_bound (1e200, 1, 1, &rmin), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_ratio_lower_bound (0x1p538, 1, 1, &rmin), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_ratio_lower_bound (1, 0x1p501, -1, &rmin), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_ratio_lower_bound (-0x1p501, 0x1p502, 1, &rmin), CHAPLYGIN_ERANGE);
+  ck_assert (rmin == 7);
 }
 END_TEST
 
@@ -415,7 +455,33 @@ START_TEST (eq_B_7)
   ck_assert_status (chaplygin_discrete_c3 (1, 1, 1, NULL), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_c3 (1, NAN, 1, &C3), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_c3 (1, -2, 1, &C3), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_c3 (0x1p502, 1, 1, &C3), CHAPLYGIN_ERANGE);
+  /* Far slots: a value, no longer ERANGE.  Reference: (B.7) in binary128
+     as above (2 L0 + Delta and l_f exact but for the dropped 1 of 2^502 +
+     1, a relative 2^-502; l_f^2 ~ 1e600 in range), 4 eps as above.  (The
+     doubles 5e299 and -1e300 differ by exactly a factor -2: there C3 =
+     3/4 (dir -1) and -3 (dir +1) to a relative 1e-600.) */
+  {
+    const double far[][2] = {
+      { 0x1p502, 1 }, { -0x1p502, 1 }, { -1e300, 5e299 }, { 1e300, 1 },
+      { 0x1p501, 0x1.8p501 }, { -0x1p900, 0x1p600 }
+    };
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+      for (int dir = -1; dir <= 1; dir += 2)
+        {
+          double L0 = far[i][0], Delta = far[i][1];
+          q128 ls, lf;
+          q_ends (L0, Delta, dir, &ls, &lf);
+          q128 C3q = dir * (q128) Delta * (2 * (q128) L0 + Delta) / (1 + lf * lf);
+          ck_assert_ok (chaplygin_discrete_c3 (L0, Delta, dir, &C3));
+          ck_assert_rel (C3, (double) C3q, 4 * DBL_EPSILON);
+        }
+  }
+  /* beyond the cap and not far: ERANGE, C3 untouched */
+  C3 = 7;
+  ck_assert_status (chaplygin_discrete_c3 (1, 0x1p501, 1, &C3), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_c3 (-0x1p501, 0x1p502, -1, &C3), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_c3 (-0x1p501, 0x1p501, 1, &C3), CHAPLYGIN_ERANGE);
+  ck_assert (C3 == 7);
 }
 END_TEST
 
@@ -783,8 +849,67 @@ START_TEST (eq_B_6)
   chaplygin_discrete bad = sys;
   bad.Delta = -1;
   ck_assert_status (chaplygin_discrete_collisions_before_reversal (&bad, 1, 1, 1, &rev, &n), CHAPLYGIN_EDOM);
+  /* Far slots (an end beyond 2^500, one strict sign, max |l| <= 2^400 min
+     |l|): a count, no longer ERANGE.  (2^501, 1) from (dir +1, E = 1, H =
+     1): receding from the mass centre with 0 < C2 < 1, it never reverses
+     ((3.13): only dir -1 can, for L0 > 0); n untouched. */
   ck_assert_ok (chaplygin_discrete_init (&sys, 0x1p501, 1.0));
+  n = 12345;
+  ck_assert_ok (chaplygin_discrete_collisions_before_reversal (&sys, 1, 1, 1, &rev, &n));
+  ck_assert (rev == 0 && n == 12345);
+  /* Slots of length ~ |L0| far out, states moving towards the mass centre
+     with r = 2E/H^2 from 0.6 to 300 times rho = 1/(1 + m^2), H = 2^600:
+     C2^2 = 4 (the first two) or 16/9 (the last two) to a relative
+     2^-1000, so the counts are small.  Reference: q_count, the binary128
+     iteration of the printed (B.3)/(B.4) map (its exponent range holds
+     E (1 + l^2) ~ 2^1200; the 1 of 1 + l^2 is below its rounding, a
+     relative 2^-1000, far below the margin 1e-9 required). */
+  {
+    const double far[][3] = {
+      { 0x1p501, 0x1p501, -1 }, { -0x1p502, 0x1p501, 1 },
+      { 0x1.8p700, 0x1p699, -1 }, { -0x1p510, 0x1p508, 1 }
+    };
+    int nfar = 0;
+    unsigned long nfar_max = 0;
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+      {
+        double L0 = far[i][0], Delta = far[i][1];
+        int dir = (int) far[i][2];
+        ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+        q128 rho = q_rho (L0, Delta, dir);
+        for (double m = 0.6; m < 300; m *= 1.37)
+          {
+            double H = 0x1p600, E = (double) (m * rho * H * H / 2), margin;
+            enum fate kt;
+            unsigned long nt = q_count (L0, Delta, dir, E, H, 1000, &kt, &margin);
+            n = 12345;
+            int st = chaplygin_discrete_collisions_before_reversal (&sys, dir, E, H, &rev, &n);
+            if (kt == F_REV && margin > 1e-9)
+              {
+                ck_assert_msg (st == CHAPLYGIN_SUCCESS && rev == 1 && n == nt,
+                               "L0 %a Delta %a dir %d E %a H %a: status %d rev %d n %lu, binary128 %lu",
+                               L0, Delta, dir, E, H, st, rev, n, nt);
+                nfar++;
+                if (nt > nfar_max)
+                  nfar_max = nt;
+              }
+            else
+              ck_assert_msg (kt == F_REV, "L0 %a: binary128 fate %d", L0, (int) kt);
+          }
+      }
+    fprintf (stderr, "# eq_B_6: far slots, %d counts (n up to %lu) as binary128\n",
+             nfar, nfar_max);
+    ck_assert_int_ge (nfar, 50);
+  }
+  /* beyond the cap and not far (ends 1 and 2^501; opposite signs):
+     ERANGE, rev and n untouched */
+  rev = 7;
+  n = 12345;
+  ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 0x1p501));
   ck_assert_status (chaplygin_discrete_collisions_before_reversal (&sys, 1, 1, 1, &rev, &n), CHAPLYGIN_ERANGE);
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0x1p501, 0x1p502));
+  ck_assert_status (chaplygin_discrete_collisions_before_reversal (&sys, 1, 1, 1, &rev, &n), CHAPLYGIN_ERANGE);
+  ck_assert (rev == 7 && n == 12345);
 }
 END_TEST
 
@@ -872,8 +997,38 @@ START_TEST (eq_B_8)
   ck_assert_status (chaplygin_discrete_two_turning_points (-1, 3, 0.3, INFINITY, &two), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_two_turning_points (-1, 3, 0.0, 1, &two), CHAPLYGIN_ESTATE);
   ck_assert_status (chaplygin_discrete_two_turning_points (-1, 3, 1e-300, 1e300, &two), CHAPLYGIN_ERANGE);
-  ck_assert_status (chaplygin_discrete_two_turning_points (-0x1p502, 3, 1, 1, &two), CHAPLYGIN_ERANGE);
+  /* Far slots (an end beyond 2^500, one strict sign, max |l| <= 2^400 min
+     |l|): an answer, no longer ERANGE, and it is 0: the mass centre is
+     not in the slot (-Delta < L0 < 0 fails), so (B.8) and the MAX form
+     in binary128 say 0 for every r -- also for r between both bounds
+     1/(1 + l^2) and 1 (the 2nd and 3rd rows: r = 2^-999, 0.5). */
+  {
+    const double far[][4] = {
+      { -0x1p502, 3, 1, 1 }, { 0x1p500, 0x1p500, 0x1p200, 0x1p600 },
+      { -0x1.8p600, 0x1p600, 0.25, 1 }, { 1e300, 1e300, 1e-300, 1e-150 }
+    };
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+      {
+        double L0 = far[i][0], Delta = far[i][1], E = far[i][2], H = far[i][3];
+        q128 a = 1 / (1 + (q128) L0 * L0), b = (q128) L0 + Delta;
+        b = 1 / (1 + b * b);
+        q128 rq = 2 * (q128) E / ((q128) H * H);
+        int in_slot = L0 < 0 && -L0 < Delta;
+        int maxf = in_slot && rq > (a > b ? a : b) && rq < 1;
+        two = 7;
+        ck_assert_ok (chaplygin_discrete_two_turning_points (L0, Delta, E, H, &two));
+        ck_assert_int_eq (two, maxf);
+        ck_assert_int_eq (two, 0);
+      }
+  }
+  /* beyond the cap and not far: ERANGE, *two untouched -- ends 1 and
+     2^501 (max |l| > 2^400 min |l|), opposite signs (the mass centre in
+     the slot, where the answer could be 1), an end at 0 */
+  two = 7;
   ck_assert_status (chaplygin_discrete_two_turning_points (1, 0x1p501, 1, 1, &two), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_two_turning_points (-0x1p501, 0x1p502, 1, 1, &two), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_two_turning_points (-0x1p501, 0x1p501, 1, 1, &two), CHAPLYGIN_ERANGE);
+  ck_assert_int_eq (two, 7);
 }
 END_TEST
 

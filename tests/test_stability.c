@@ -13,6 +13,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_matrix.h>
 #include <quadmath.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "internal.h"
@@ -300,8 +301,51 @@ START_TEST (eq_3_10)
                     CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_sigma4 (NAN, 1, 1, &s, NULL),
                     CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_sigma4 (1e200, 1, 1, &s, NULL),
-                    CHAPLYGIN_ERANGE);
+  /* The far slot (an end beyond 2^500, both ends of one sign, max |l| <=
+     2^400 min |l|): a value, no longer ERANGE.  Reference: (3.10) in
+     binary128, whose exponent range holds l^2 ~ 1e600; L0 + Delta is
+     exact there for these doubles (exponents within 3 of each other) but
+     for (1e200, 1), where the binary128 sum drops the 1 (relative 1e-200,
+     below every rounding: sigma4 = 1 - 1e-200 rounds to 1 either way).
+     Tolerance 4 eps, as for ref_sigma4 above: the library solves a
+     problem scaled by an exact power of two, which differs from this one
+     by a relative O(2^-200). */
+  {
+    const double far[][3] = {
+      { 1e200, 1, 1 }, { 1e200, 1, -1 }, { 1e200, 3e199, 1 },
+      { 1e200, 3e199, -1 }, { -0x1.8p600, 0x1p599, 1 },
+      { -0x1.8p600, 0x1p599, -1 }, { 1e300, 1e300, 1 }, { -3e300, 1e300, -1 }
+    };
+    for (size_t i = 0; i < NELEM (far); i++)
+      {
+        double L0 = far[i][0], Delta = far[i][1], sig[4];
+        int dir = (int) far[i][2];
+        __float128 l = L0, d = Delta, n = 1 + l * (l + d);
+        __float128 den = dir > 0 ? 1 + (l + d) * (l + d) : 1 + l * l;
+        ck_assert_ok (chaplygin_discrete_sigma4 (L0, Delta, dir, &s, sig));
+        ck_assert_eps (s, (double) (n / den), 4);
+        ck_assert (sig[0] == 0.0 && sig[1] == 1.0 && sig[2] == 1.0
+                   && sig[3] == s);
+      }
+  }
+  /* beyond the cap but not far: ERANGE, outputs untouched -- ends of
+     opposite sign (the mass centre inside the slot), one end at 0, and
+     ends 1 and 2^501 (max |l| > 2^400 min |l|) */
+  {
+    const double notfar[][2] = {
+      { -1e200, 2e200 }, { -0x1p501, 0x1p501 }, { 1, 0x1p501 }
+    };
+    for (size_t i = 0; i < NELEM (notfar); i++)
+      for (int dir = -1; dir <= 1; dir += 2)
+        {
+          double sig[4] = { 7, 7, 7, 7 };
+          s = 7;
+          ck_assert_status (chaplygin_discrete_sigma4 (notfar[i][0], notfar[i][1],
+                                                       dir, &s, sig),
+                            CHAPLYGIN_ERANGE);
+          ck_assert (s == 7 && sig[0] == 7 && sig[3] == 7);
+        }
+  }
 }
 END_TEST
 
@@ -422,11 +466,40 @@ START_TEST (eq_3_11)
   ck_assert_status (chaplygin_discrete_stable (1, 1, 2, &st), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_stable (1, 1, 1, NULL), CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_stable (1, -1, 1, &st), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_stable (1e300, 1, 1, &st),
+  /* Far slots (the same domain as sigma4): decided, no longer ERANGE.
+     Reference: the factorisation of (3.10) (exact, no rounding to
+     decide), with l_f = L0 + Delta:
+       dir +1:  1 - sigma4 = Delta l_f/(1 + l_f^2),
+                1 + sigma4 = (2 + l_f (2 L0 + Delta))/(1 + l_f^2);
+       dir -1:  1 - sigma4 = -L0 Delta/(1 + L0^2),
+                1 + sigma4 = (2 + L0 (2 L0 + Delta))/(1 + L0^2);
+     on a far slot l_f (2 L0 + Delta) > 0 and L0 (2 L0 + Delta) > 0 (both
+     ends of one sign), so stable iff 1 - sigma4 > 0: dir +1 iff the ends
+     are positive, dir -1 iff they are negative.  (The binary128 sigma4 of
+     stable_by_eigenvalue would round (1e300, 1) to sigma4 = 1.) */
+  {
+    const double far[][2] = {
+      { 1e300, 1 }, { -1e300, 1 }, { 0x1p500, 0x1p500 }, { 0x1p501, 1 },
+      { -0x1p502, 0x1p501 }, { 1e200, 3e199 }, { -0x1p1000, 0x1p700 }
+    };
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+      for (int dir = -1; dir <= 1; dir += 2)
+        {
+          st = 7;
+          ck_assert_ok (chaplygin_discrete_stable (far[i][0], far[i][1], dir, &st));
+          ck_assert_int_eq (st, dir > 0 ? far[i][0] > 0 : far[i][0] < 0);
+        }
+  }
+  /* beyond the cap and not far (opposite signs, an end at 0, max |l| >
+     2^400 min |l|): still ERANGE, *stable untouched */
+  st = 7;
+  ck_assert_status (chaplygin_discrete_stable (-1e200, 2e200, 1, &st),
                     CHAPLYGIN_ERANGE);
-  /* the same range test as sigma4: |L0 + Delta| > 2^500 */
-  ck_assert_status (chaplygin_discrete_stable (0x1p500, 0x1p500, 1, &st),
+  ck_assert_status (chaplygin_discrete_stable (-0x1p501, 0x1p501, -1, &st),
                     CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_stable (1, 0x1p501, 1, &st),
+                    CHAPLYGIN_ERANGE);
+  ck_assert_int_eq (st, 7);
   ck_assert_status (chaplygin_discrete_stability_boundary (1, NAN, &ok, &ymin),
                     CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_stability_boundary (0, 1, &ok, &ymin),
@@ -539,8 +612,65 @@ START_TEST (eq_4_1)
                     CHAPLYGIN_EINVAL);
   ck_assert_status (chaplygin_discrete_xi4_taylor (INFINITY, 1, c),
                     CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_xi4_taylor (1e200, 1, c),
-                    CHAPLYGIN_ERANGE);
+  /* No cap on the Taylor coefficients: any finite L0 (they underflow
+     gradually far out).  Reference: the closed forms, from the series of
+     log sigma4 in Delta (a = 1 + L0^2):
+       dir +1:  c0 = -L0/a, c1 = (L0^2 - 2)/(2 a^2), c2 = L0 (6 - L0^2)/(3 a^3),
+       dir -1:  c0 = -L0/a, c1 = L0^2/(2 a^2),       c2 = -L0^3/(3 a^3),
+     checked here against the mpmath table first (where 1 + L0^2 matters),
+     then evaluated in binary128 (exponent range to 1e+-4932: nothing
+     overflows or underflows before the final conversion, which rounds
+     correctly also into the subnormals).  Tolerance: 8 eps as above for a
+     normal reference; for a subnormal one the format's own spacing
+     2^-1074 takes over -- at most 2 of them (each of the library's last
+     roundings into the subnormal range is worth half of one). */
+  {
+    for (size_t i = 0; i < NELEM (ref_taylor); i++)
+      {
+        __float128 L = ref_taylor[i].L0, a = 1 + L * L, cq[3];
+        int dir = ref_taylor[i].dir;
+        cq[0] = -L / a;
+        cq[1] = dir > 0 ? (L * L - 2) / (2 * a * a) : L * L / (2 * a * a);
+        cq[2] = dir > 0 ? L * (6 - L * L) / (3 * a * a * a) : -L * L * L / (3 * a * a * a);
+        ck_assert_eps ((double) cq[0], ref_taylor[i].c0, 2);
+        ck_assert_eps ((double) cq[1], ref_taylor[i].c1, 2);
+        ck_assert_eps ((double) cq[2], ref_taylor[i].c2, 2);
+      }
+    /* 1e200 (the old cap's test point: c1 ~ 5e-401 and c2 underflow to
+       0), 2^501 (c1 = 2^-1003 normal), c1 subnormal (2^515, 1.5 2^512),
+       c0 subnormal (1e308), c2 subnormal (1.1875 2^341, inside the old
+       cap), c1 rounding to 0 at the tie 2^-1075 (2^537) */
+    const double Ls[] = { 1e200, 0x1p501, -0x1.8p505, 0x1p515, 0x1.8p512,
+                          -0x1.8p512, 1e300, 1e308, -DBL_MAX, 0x1.3p341,
+                          0x1p537, -0x1p538 };
+    double worst = 0;
+    for (size_t i = 0; i < NELEM (Ls); i++)
+      for (int dir = -1; dir <= 1; dir += 2)
+        {
+          __float128 L = Ls[i], a = 1 + L * L, cq[3];
+          cq[0] = -L / a;
+          cq[1] = dir > 0 ? (L * L - 2) / (2 * a * a) : L * L / (2 * a * a);
+          cq[2] = dir > 0 ? L * (6 - L * L) / (3 * a * a * a) : -L * L * L / (3 * a * a * a);
+          ck_assert_ok (chaplygin_discrete_xi4_taylor (Ls[i], dir, c));
+          for (int j = 0; j < 3; j++)
+            {
+              double want = (double) cq[j];
+              double err = fabs (c[j] - want);
+              double tol = fabs (want) >= DBL_MIN ? 8 * DBL_EPSILON * fabs (want)
+                : 2 * 0x1p-1074;
+              ck_assert_msg (err <= tol, "xi4_taylor (%a, %d): c%d = %a, binary128 %a",
+                             Ls[i], dir, j, c[j], want);
+              worst = fmax (worst, fabs (want) >= DBL_MIN ? err / (DBL_EPSILON * fabs (want))
+                            : err / 0x1p-1074);
+            }
+        }
+    printf ("# eq_4_1: far Taylor coefficients, worst error %.2g (eps or subnormal units)\n",
+            worst);
+  }
+  ck_assert_status (chaplygin_discrete_xi4_taylor (-INFINITY, -1, c),
+                    CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_xi4_taylor (NAN, 1, c),
+                    CHAPLYGIN_EDOM);
   /* found in review: sigma4 near 0 (u = sigma4 - 1 cancels) and u in
      the subnormal range; references: binary128 log of the exact sigma4
      (quadmath), and -L0/(1 + L0^2) (to O(Delta)) */

@@ -59,8 +59,10 @@
    centre in the slot), tiny Delta (1e-12..1e-6), huge Delta (1e3..1e6),
    large |L0| (1e3..1e12 or ..1e100), tiny |L0| (1e-12..1e-3), and the
    extremes of issue 6: extreme |L0| (1e100 to the cap 2^500 of
-   lib/internal.h, and above it to 1e200, where the library must refuse
-   with CHAPLYGIN_ERANGE), tiny H (1e-300..1e-200, subnormal, +-0),
+   lib/internal.h, and above it to 1e200: far slots, which the library
+   solves by exact scaling (lib/far.c) and which are checked like the
+   others, and slots near the mass centre, which it must refuse with
+   CHAPLYGIN_ERANGE), tiny H (1e-300..1e-200, subnormal, +-0),
    reversal at an ulp (a turning point within a few ulps of the far end,
    or exactly on it) and spinning at an ulp (2E/H^2 = 1 +- k ulps,
    k = 1..4).  Quantities: the heading and time of
@@ -73,7 +75,8 @@
    Checks (TAP): the oracle reached its accuracy everywhere; its two
    routes agree; the library succeeded wherever the motion is defined
    (two documented refusals are counted instead: see run_legs) and refused
-   beyond the cap as documented (counted: see beyond_cap); reversal
+   beyond the cap where not far, as documented (counted: see beyond_cap);
+   reversal
    flags and CHAPLYGIN_ESPIN exactly as the oracle decides them; the ODE
    method never refuses a valid state with CHAPLYGIN_ESTATE (it did with a
    turning point within ulps of the far end, and lost its relative
@@ -1053,10 +1056,12 @@ gen_params (int set, unsigned long long *seed, double *L0, double *Delta)
     case S_XL:
       /* |L0| from 1e100 to the library's cap |L0 + D| <= 2^500 ~ 3.27e150
          (CHP_L_MAX, lib/internal.h); one in ten within 3 ulps of the cap
-         on either side, one in five above it, up to 1e200 (documented
-         refusal, CHAPLYGIN_ERANGE); a third of them with the slot on the
-         scale of |L0| (L0/Delta in [-1.5, 0.5]: the mass centre can be in
-         the slot, and legs run from |l| ~ 1e150 to l = 0) */
+         on either side, two in five above it, up to 1e200 (a far slot,
+         lib/far.c, unless on the scale of |L0| with the mass centre near:
+         documented refusal, CHAPLYGIN_ERANGE); a third of them with the
+         slot on the scale of |L0| (L0/Delta in [-1.5, 0.5]: the mass
+         centre can be in the slot, and legs run from |l| ~ 1e150 to
+         l = 0) */
       {
         double u = tap_uniform (seed, 0, 1), mag;
         if (u < 0.1)
@@ -1066,7 +1071,7 @@ gen_params (int set, unsigned long long *seed, double *L0, double *Delta)
                  k += k > 0 ? -1 : 1)
               mag = nextafter (mag, k > 0 ? HUGE_VAL : 0.0);
           }
-        else if (u < 0.3)
+        else if (u < 0.5)
           mag = log_uniform (seed, 150.52, 200);
         else
           mag = log_uniform (seed, 100, 150.5);
@@ -1300,6 +1305,8 @@ static long n_oracle_fail, n_lib_fail, n_mismatch, n_spin_ok, n_spin_bad;
 static long n_legs, n_steps, n_params, n_reversals, n_turning_legs;
 static long n_ode_declined, n_reject_rounding[NM], n_refused_cap[NM];
 static long n_refused_sigma4;
+/* legs and steps of far slots beyond the cap, checked (lib/far.c) */
+static long n_far_legs, n_far_steps;
 static double kappa_max[NS];
 
 static const double FD_STEP = 0x1p-100;
@@ -1406,13 +1413,20 @@ static const chaplygin_options opt_of[NM] = {
 static int use_method[NM] = { 1, 1, 1 };
 
 /* The library's documented refusal: |L0 + D| above 2^500 (CHP_L_MAX of
-   lib/internal.h) at either end of a leg or of the slot, as the library
-   forms it (rounded): chaplygin_discrete_heading and chaplygin_discrete_step
-   return CHAPLYGIN_ERANGE there and write nothing. */
+   lib/internal.h) at an end of a leg or of the slot, as the library forms
+   it (rounded), unless the path is far (lib/far.c: both ends of one
+   strict sign, max |l| <= 2^400 min |l|), which the library solves by
+   exact scaling and the oracle checks like any other;
+   chaplygin_discrete_heading and chaplygin_discrete_step return
+   CHAPLYGIN_ERANGE there and write nothing. */
 static int
 beyond_cap (double L0, double Da, double Db)
 {
-  return fabs (L0 + Da) > 0x1p500 || fabs (L0 + Db) > 0x1p500;
+  const double a = L0 + Da, b = L0 + Db;
+  const double hi = fmax (fabs (a), fabs (b)), lo = fmin (fabs (a), fabs (b));
+  const int far = ((a > 0 && b > 0) || (a < 0 && b < 0))
+    && hi <= 0x1p400 * lo;
+  return hi > 0x1p500 && !far;
 }
 
 /* Beyond the cap every method must refuse, outputs untouched (a sentinel
@@ -1540,6 +1554,8 @@ run_legs (int set, int n, unsigned long long *seed)
         D = D0 + tap_uniform (seed, 0.05, turn ? 0.75 : 0.95) * (mid_d (Dc) - D0);
       if (!(s * (D - D0) > 0))
         continue;
+      n_far_legs += fmax (fabs (L0 + D0), fabs (L0 + D)) > 0x1p500
+        && !beyond_cap (L0, D0, D);
       if (beyond_cap (L0, D0, D))
         {
           for (int me = 0; me < NM; me++)
@@ -1709,6 +1725,8 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
           n_lib_fail++;
           continue;
         }
+      n_far_steps += fmax (fabs (L0), fabs (L0 + Delta)) > 0x1p500
+        && !beyond_cap (L0, 0.0, Delta);
       if (beyond_cap (L0, 0.0, Delta))
         {
           for (int me = 0; me < NM; me++)
@@ -2093,11 +2111,13 @@ write_table (const char *path, int level)
 "@item extreme @math{|L_0|}\n"
 "@math{|L_0|} from @math{10^100} to the library's cap\n"
 "@math{|L_0 + D| <= 2^500} (about @math{3.27 10^150}; one point in ten\n"
-"within 3 ulps of @math{2^500}, on either side), and one in five above\n"
-"it, up to @math{10^200}, where @code{chaplygin_discrete_heading},\n"
-"@code{chaplygin_discrete_step} and @code{chaplygin_discrete_sigma4}\n"
-"must refuse with @code{CHAPLYGIN_ERANGE} (counted below, not in the\n"
-"tables); @math{Delta} in @math{[0.1, 3]}, or for a third of the points\n"
+"within 3 ulps of @math{2^500}, on either side), and two in five above\n"
+"it, up to @math{10^200}: there a far slot (both ends of one sign,\n"
+"@math{max |l| <= 2^400 min |l|}) is solved by exact scaling and is in\n"
+"the tables, and any other must be refused by\n"
+"@code{chaplygin_discrete_heading}, @code{chaplygin_discrete_step} and\n"
+"@code{chaplygin_discrete_sigma4} with @code{CHAPLYGIN_ERANGE} (counted\n"
+"below, not in the tables); @math{Delta} in @math{[0.1, 3]}, or for a third of the points\n"
 "on the scale of @math{|L_0|} with @math{L_0/Delta} in\n"
 "@math{[-1.5, 0.5]} (legs from @math{|l| ~ 10^150} through or to\n"
 "@math{l = 0}, turning points in the slot).  States as for ordinary,\n"
@@ -2174,7 +2194,8 @@ write_table (const char *path, int level)
   if (n_refused_cap[M_CF] || n_refused_sigma4)
     fprintf (f, "@noindent\n"
              "Documented refusals, not in the tables: %ld legs and steps of\n"
-             "the extreme @math{|L_0|} set beyond @math{|L_0 + D| = 2^500},\n"
+             "the extreme @math{|L_0|} set beyond @math{|L_0 + D| = 2^500}\n"
+             "whose slot is not far (the mass centre within it or near),\n"
              "refused by every method with @code{CHAPLYGIN_ERANGE} and no\n"
              "output written, and %ld calls of\n"
              "@code{chaplygin_discrete_sigma4} refused likewise.\n\n",
@@ -2373,11 +2394,13 @@ main (int argc, char **argv)
              "CHAPLYGIN_ESTATE by closed form/quadrature/ODE, %ld ODE legs "
              "or steps declined with CHAPLYGIN_ENOCONV); and refused them, "
              "outputs untouched, with CHAPLYGIN_ERANGE beyond |L0 + D| = "
-             "2^500, as documented (%ld/%ld/%ld legs and steps; "
-             "chaplygin_discrete_sigma4 %ld times)",
+             "2^500 where not far, as documented (%ld/%ld/%ld legs and steps; "
+             "chaplygin_discrete_sigma4 %ld times; far slots beyond the "
+             "cap checked: %ld legs, %ld starts of steps)",
              n_reject_rounding[M_CF], n_reject_rounding[M_QUAD],
              n_reject_rounding[M_ODE], n_ode_declined, n_refused_cap[M_CF],
-             n_refused_cap[M_QUAD], n_refused_cap[M_ODE], n_refused_sigma4);
+             n_refused_cap[M_QUAD], n_refused_cap[M_ODE], n_refused_sigma4,
+             n_far_legs, n_far_steps);
   tap_check (n_mismatch == 0 && n_spin_bad == 0, n_mismatch + n_spin_bad, 0,
              "reversal flags and directions as the oracle decides them exactly; "
              "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
