@@ -716,7 +716,7 @@ check_trajectories (unsigned long long *seed, int nskates, int ncoll)
               to_library (Rr, &p, y, t, dir < 0, &sys, &sl, ql);
               sl.E = breakage (7, sl.E, 1e-12);
               /* the body: to the next collision, then the impulse */
-              int hit;
+              int hit = 0;        /* set by segment on success */
               double Tb, hb;
               kinetics (&Rr->B, y, p.P, &Tb, &hb, NULL, NULL);
               if (segment (&Rr->B, &p, Rr->ell0, Rr->delta, y, &t,
