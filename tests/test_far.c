@@ -34,7 +34,11 @@
    holds l^2 = 1e600) from the double inputs of each call.  The
    reference's own error (~1e-31 relative; 1e-28 where it cancels next to
    a turning point) and that of rho = 0 (< 1e-300) are far below the
-   tolerances.  far_reference_in_cap checks the reference's conventions
+   tolerances.  far_flow checks (B.1) over far legs against (B.1) itself
+   in binary128; far_basins the fate and basins of a far slot against the
+   geometry of its two directions (and against each other); far_statuses
+   the documented statuses of the far paths.
+   far_reference_in_cap checks the reference's conventions
    (signs, ends, directions) against the library's ordinary path at
    |l| ~ 2^450, where rho = 0 is as good.
 
@@ -1178,6 +1182,160 @@ START_TEST (far_refusals)
 }
 END_TEST
 
+/* ---- (B.1) over a far leg ---------------------------------------------- */
+
+START_TEST (far_flow)
+{
+  /* chaplygin_discrete_flow (B.1) against (B.1) itself in binary128, where
+     1 + l^2 is representable (an independent evaluation: the library
+     scales the leg onto one within the cap).  V(D)^2 = V0^2 + inc with
+     inc = (D - D0)(2 L0 + D + D0)(1 + l0^2) Omega0^2/(1 + l^2); its
+     condition is kappa = (V0^2 + |inc|)/V(D)^2 (cancellation towards
+     l = 0): 8 eps (1 + kappa); Omega(D) a product and a quotient, 8 eps. */
+  static const double L0s[] = { 1e200, -1e200, 0x1p501, -0x1p501, 3e300,
+    -0x1p1000 };
+  static const double Ds[] = { 1.0, 1e6, 0.25 };     /* 0.25: times |L0| */
+  static const double ws[] = { 0.0, 0.3, 0.7 };      /* |l0| Omega0/V0 */
+  int n = 0;
+  for (size_t a = 0; a < NELEM (L0s); a++)
+    for (size_t b = 0; b < NELEM (Ds); b++)
+      for (size_t c = 0; c < NELEM (ws); c++)
+        {
+          const double L0 = L0s[a], D0 = 0.0;
+          const double D = b == 2 ? 0.25 * fabs (L0) : Ds[b];
+          const double V0 = 1.5, Om0 = ws[c] * V0 / fabs (L0);
+          q128 l0 = L0, l = (q128) L0 + D, n0 = 1 + l0 * l0, nl = 1 + l * l;
+          q128 inc = ((q128) D - D0) * (2 * (q128) L0 + D + D0) * n0
+            * (q128) Om0 * Om0 / nl;
+          q128 v2 = (q128) V0 * V0 + inc, om = (q128) Om0 * n0 / nl;
+          double kappa = (double) (((q128) V0 * V0 + fabsq (inc)) / v2);
+          double V2 = SENT, Om = SENT;
+          ck_assert_msg (v2 > 0, "the test's leg must be reachable");
+          ck_assert_ok (chaplygin_discrete_flow (L0, D0, V0, Om0, D, &V2,
+                                                 &Om));
+          ck_assert_rel (V2, (double) v2, 8 * EPS * (1 + kappa));
+          if (Om0 == 0)
+            ck_assert (Om == 0);
+          else
+            ck_assert_rel (Om, (double) om, 8 * EPS);
+          n++;
+        }
+  ck_assert_int_eq (n, 54);
+  /* a leg whose end is not representable in the scaled problem (D = 1e-300
+     beside L0 = 1e300: 2^-k D is subnormal): refused, nothing written;
+     the heading likewise */
+  double V2 = SENT, Om = SENT, th = SENT, ta = SENT;
+  ck_assert_status (chaplygin_discrete_flow (1e300, 0.0, 1.0, 1e-301, 1e-300,
+                                             &V2, &Om), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_discrete_heading (1e300, 0.0, 1.0, 1e-301,
+                                                1e-300, NULL, &th, &ta),
+                    CHAPLYGIN_ERANGE);
+  ck_assert (V2 == SENT && Om == SENT && th == SENT && ta == SENT);
+}
+END_TEST
+
+/* ---- the fate and the basins of a far slot ------------------------------ */
+
+START_TEST (far_basins)
+{
+  /* L0 = 1e200, Delta = 1e200 (ends 1e200, 2e200), Omega0 = 0.3/1e200.
+     V > 0 (from the front, away from the mass centre, C2 = 1/2): straight
+     forward at once, no collision needed: E_final = E (the losses are a
+     relative 1e-400), V_final = sqrt(2 E), E = (V^2 + (1 + L0^2)
+     Omega0^2)/2 in binary128.  V < 0 (from the rear towards the mass
+     centre, C2 = 2 for that direction): h = |H|/sqrt(2E) doubles at the
+     collision at the front end, the next path turns (h > 1e200 = |l| at
+     the front) and the motion leaves forward for good: one reversal.
+     Each point of the basins also against chaplygin_discrete_fate_phase
+     (a separate scaling of the same state): identical. */
+  chaplygin_discrete sys;
+  const double L0 = 1e200, Delta = 1e200, Om0 = 0.3 / 1e200;
+  ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+  chaplygin_fate f[4], g;
+  ck_assert_ok (chaplygin_discrete_basins (&sys, Om0, 0.25, 1.0, 4, 1000, f));
+  for (int i = 0; i < 4; i++)
+    {
+      const double V = 0.25 + 0.25 * i;
+      const q128 E = ((q128) V * V + (1 + (q128) L0 * L0) * (q128) Om0 * Om0)
+        / 2;
+      ck_assert (f[i].kind == CHAPLYGIN_FATE_FORWARD && f[i].reversals == 0
+                 && f[i].collisions == 0);
+      ck_assert_rel (f[i].E_final, (double) E, 4 * EPS);
+      ck_assert_rel (f[i].V_final, (double) sqrtq (2 * E), 4 * EPS);
+      double q[4] = { 0.0, V, 0.0, Om0 };
+      ck_assert_ok (chaplygin_discrete_fate_phase (&sys, q, 1000, NULL, 0,
+                                                   &g));
+      ck_assert (g.kind == f[i].kind && g.collisions == f[i].collisions
+                 && g.E_final == f[i].E_final && g.V_final == f[i].V_final);
+    }
+  ck_assert_ok (chaplygin_discrete_basins (&sys, Om0, -1.0, -0.25, 4, 1000,
+                                           f));
+  for (int i = 0; i < 4; i++)
+    {
+      const double V = -1.0 + 0.25 * i;
+      double q[4] = { Delta, V, 0.0, Om0 };
+      ck_assert (f[i].kind == CHAPLYGIN_FATE_FORWARD && f[i].reversals == 1);
+      ck_assert_ok (chaplygin_discrete_fate_phase (&sys, q, 1000, NULL, 0,
+                                                   &g));
+      ck_assert (g.kind == f[i].kind && g.collisions == f[i].collisions
+                 && g.reversals == f[i].reversals
+                 && g.E_final == f[i].E_final && g.V_final == f[i].V_final);
+    }
+  /* no boundary among fates that are all forward */
+  double Vb[2] = { SENT, SENT };
+  size_t count = 99;
+  ck_assert_ok (chaplygin_discrete_basin_boundaries (&sys, Om0, -1.0, -0.25,
+                                                     4, 1000, Vb, 2, &count));
+  ck_assert (count == 0 && Vb[0] == SENT);
+  ck_assert_ok (chaplygin_discrete_basin_boundaries (&sys, Om0, 0.25, 1.0, 4,
+                                                     1000, Vb, 2, &count));
+  ck_assert (count == 0);
+  /* documented statuses in the far path */
+  ck_assert_status (chaplygin_discrete_basins (&sys, NAN, 0.25, 1.0, 4, 10,
+                                               f), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_basin_boundaries (&sys, INFINITY, 0.25,
+                                                         1.0, 4, 10, Vb, 2,
+                                                         &count),
+                    CHAPLYGIN_EDOM);
+}
+END_TEST
+
+/* ---- statuses of the far paths ----------------------------------------- */
+
+START_TEST (far_statuses)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, 1e200, 1.0));
+  chaplygin_discrete_state s = { 1, 0.0, 0.0, 0, 0, { 0, 0 } }, o;
+  /* E = 0: at rest, CHAPLYGIN_ESTATE (as inside the cap) */
+  ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL),
+                    CHAPLYGIN_ESTATE);
+  double pm[4] = { 0.0, 0.0, 0.0, 0.0 }, pp[4];
+  ck_assert_status (chaplygin_discrete_collide_eh (1e200, 1.0, pm, pp),
+                    CHAPLYGIN_ESTATE);
+  /* E < 0: CHAPLYGIN_EDOM from the series */
+  double En, Hn, Ef;
+  ck_assert_status (chaplygin_discrete_energy_after (&sys, 1, -1.0, 0.0, 1,
+                                                     &En, &Hn),
+                    CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_final_energy (&sys, 1, -1.0, 0.0, &Ef),
+                    CHAPLYGIN_EDOM);
+  /* a far slot whose length is not a normal double once scaled (1e-300
+     beside 1e300): CHAPLYGIN_ERANGE */
+  double s4 = SENT;
+  ck_assert_status (chaplygin_discrete_sigma4 (1e300, 1e-300, 1, &s4, NULL),
+                    CHAPLYGIN_ERANGE);
+  ck_assert (s4 == SENT);
+  /* inside the cap, a speed scaling that is not exact (V0 = 2^-1074
+     beside |l0 Omega0| = 2^499): CHAPLYGIN_ERANGE, not a heading of 0 */
+  double th = SENT, ta = SENT;
+  ck_assert_status (chaplygin_discrete_heading (0x1p499, 0.0, 0x1p-1074, 1.0,
+                                                1.0, NULL, &th, &ta),
+                    CHAPLYGIN_ERANGE);
+  ck_assert (th == SENT && ta == SENT);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1191,5 +1349,8 @@ main (void)
   tu_add (s, "far_collide_eh", far_collide_eh);
   tu_add (s, "far_phase", far_phase);
   tu_add (s, "far_refusals", far_refusals);
+  tu_add (s, "far_flow", far_flow);
+  tu_add (s, "far_basins", far_basins);
+  tu_add (s, "far_statuses", far_statuses);
   return tu_run (s);
 }
