@@ -276,6 +276,16 @@ valid_energy (const chaplygin_discrete *sys, int iplus, double E1, double H1)
   return E1;
 }
 
+/* The new peg P' = P + shift (cos theta', sin theta'), shift = D- - D+'. */
+static void
+move_peg (const double peg[2], double shift, double theta1, double out[2])
+{
+  double sn, cs;
+  sincos (theta1, &sn, &cs);
+  out[0] = peg[0] + shift * cs;
+  out[1] = peg[1] + shift * sn;
+}
+
 static int step_core (const chaplygin_discrete *sys,
                       const chaplygin_discrete_state *in,
                       const double *g0_phase, unsigned request,
@@ -322,12 +332,8 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
     r.tau = in->tau + dtau;
   const double Dminus = se.Dminus == 0.0 ? 0.0 : sys->Delta;
   if (request & CHAPLYGIN_WANT_PEG)
-    {
-      double sn, cs, shift = Dminus != 0.0 ? sys->Delta : -sys->Delta;
-      sincos (theta1, &sn, &cs);
-      r.peg[0] = in->peg[0] + shift * cs;
-      r.peg[1] = in->peg[1] + shift * sn;
-    }
+    move_peg (in->peg, Dminus != 0.0 ? sys->Delta : -sys->Delta, theta1,
+              r.peg);
   const double Vminus = ldexp (se.Vminus, -f.m);
   const double Dc = se.reversal ? ldexp (se.Dc, f.k) : 0.0;
   if (!chp_finite4 (r.E, r.H, r.theta, r.tau)
@@ -495,12 +501,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (want_tau)
     r.tau = in->tau + dtau;
   if (request & CHAPLYGIN_WANT_PEG)
-    {
-      double sn, cs, shift = iminus ? Delta : -Delta;   /* D- - D+' */
-      sincos (theta1, &sn, &cs);
-      r.peg[0] = in->peg[0] + shift * cs;
-      r.peg[1] = in->peg[1] + shift * sn;
-    }
+    move_peg (in->peg, iminus ? Delta : -Delta, theta1, r.peg);
   if (!chp_finite4 (r.theta, r.tau, r.peg[0], r.peg[1]) || !isfinite (dtheta)
       || !isfinite (dtau))
     return CHAPLYGIN_ERANGE;
