@@ -25,7 +25,9 @@
        every state for each row:
          baseline     a bare loop doing the (E, H) update's arithmetic with
                       the system's C1, C2: the physical limit;
-         eh-only      chaplygin_discrete_step, E and H only;
+         eh-only      chaplygin_discrete_step, E and H only ("-"), and
+                      chaplygin_discrete_step_eh_n, a scene's orbit in
+                      one call ("n steps");
          closed-form  heading and time too, Carlson integrals at double and
                       single precision;
          quadrature   at relative tolerances 1e-3 .. 1e-15;
@@ -42,7 +44,10 @@
        over all rows, and the minimum and the median over repetitions are
        reported, in ns per collision.  Diagnostic rows (printed and in the
        manual's text, not in the CSV) time baseline and eh-only as one
-       step from each of the independent states instead.  All rows run in one process, one after the other, so
+       step from each of the independent states instead, and along orbits
+       of LONG_ORBIT collisions from each scene's first state (the scenes'
+       own orbits are only as long as their step sets).  All rows run in
+       one process, one after the other, so
        that their ratios are meaningful.  Errors are relative,
        |lib - ref|/|ref| with ref = hi + lo, of E' and H' (every row) and of
        the heading and time increments (rows that compute them); a step
@@ -310,8 +315,13 @@ typedef enum
 {
   ROW_BASELINE,
   ROW_EH,
+  ROW_EHN,                      /* chaplygin_discrete_step_eh_n */
   ROW_FULL
 } row_kind;
+
+/* The collisions of a long orbit (diagnostic rows): from each scene's
+   first state, as a user iterating the map would. */
+#define LONG_ORBIT 256
 
 /* The physical limit: the arithmetic of the (E, H) update of (B.3)/(B.4)
    inline, with the system's C1, C2 indexed by the end the peg leaves
@@ -396,10 +406,98 @@ chain_eh (bench *b, const chaplygin_options *opt)
   chain_step (b, opt, 0);
 }
 
+/* The orbits in one call each: chaplygin_discrete_step_eh_n. */
+static void __attribute__ ((noinline))
+chain_ehn (bench *b, const chaplygin_options *opt)
+{
+  (void) opt;
+  for (size_t k = 0; k < b->nscenes; k++)
+    {
+      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
+      chaplygin_discrete_state st = b->st[i0];
+      int rc = chaplygin_discrete_step_eh_n (b->sys[i0], &st, i1 - i0, NULL);
+      b->E1[i1 - 1] = st.E;
+      b->H1[i1 - 1] = st.H;
+      b->rc[i1 - 1] = rc;
+    }
+}
+
+/* Long orbits (LONG_ORBIT collisions from each scene's first state) by the
+   baseline, by chaplygin_discrete_step and by chaplygin_discrete_step_eh_n:
+   timing only, no reference (the outputs are stored so that the work
+   cannot be dropped). */
+static void __attribute__ ((noinline))
+long_baseline (bench *b, const chaplygin_options *opt)
+{
+  (void) opt;
+  for (size_t k = 0; k < b->nscenes; k++)
+    {
+      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
+      const chaplygin_discrete *s = b->sys[i0];
+      int dir = b->st[i0].dir;
+      double E = b->st[i0].E, H = b->st[i0].H;
+      for (int j = 0; j < LONG_ORBIT; j++)
+        baseline_update (s, &dir, &E, &H);
+      b->E1[i1 - 1] = E;
+      b->H1[i1 - 1] = H;
+    }
+}
+
+static void __attribute__ ((noinline))
+long_eh (bench *b, const chaplygin_options *opt)
+{
+  for (size_t k = 0; k < b->nscenes; k++)
+    {
+      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
+      chaplygin_discrete_state st = b->st[i0];
+      int rc = 0;
+      for (int j = 0; j < LONG_ORBIT && !rc; j++)
+        rc = chaplygin_discrete_step (b->sys[i0], &st, 0, opt, &st, NULL);
+      b->E1[i1 - 1] = st.E;
+      b->H1[i1 - 1] = st.H;
+      b->rc[i1 - 1] = rc;
+    }
+}
+
+static void __attribute__ ((noinline))
+long_ehn (bench *b, const chaplygin_options *opt)
+{
+  (void) opt;
+  for (size_t k = 0; k < b->nscenes; k++)
+    {
+      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
+      chaplygin_discrete_state st = b->st[i0];
+      int rc = chaplygin_discrete_step_eh_n (b->sys[i0], &st, LONG_ORBIT,
+                                             NULL);
+      b->E1[i1 - 1] = st.E;
+      b->H1[i1 - 1] = st.H;
+      b->rc[i1 - 1] = rc;
+    }
+}
+
 static void __attribute__ ((noinline))
 chain_full (bench *b, const chaplygin_options *opt)
 {
   chain_step (b, opt, CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
+}
+
+/* One step from every state by chaplygin_discrete_step_eh_n (n = 1): its
+   outputs are those of pass_eh, bit for bit (its contract). */
+static void __attribute__ ((noinline))
+pass_ehn (bench *b, const chaplygin_options *opt)
+{
+  (void) opt;
+  for (size_t i = 0; i < b->n; i++)
+    {
+      chaplygin_discrete_state o = b->st[i];
+      int rc = chaplygin_discrete_step_eh_n (b->sys[i], &o, 1, NULL);
+      if (rc)
+        o.E = o.H = NAN, o.dir = 0;
+      b->E1[i] = o.E;
+      b->H1[i] = o.H;
+      b->dir1[i] = o.dir;
+      b->rc[i] = rc;
+    }
 }
 
 static void __attribute__ ((noinline))
@@ -449,7 +547,8 @@ typedef struct
   chaplygin_options opt;
   bench *b;                     /* the states it steps from */
   int diag;                     /* a diagnostic row (not in the CSV):
-                                   timed on independent states */
+                                   timed on independent states (1) or
+                                   on long orbits (2) */
   size_t chain_failures;        /* orbits cut short by an error status */
   /* timing */
   double ns_min, ns_med, ns[REPS];
@@ -461,7 +560,7 @@ typedef struct
   size_t failures, mismatches;
 } row_t;
 
-#define MAX_ROWS 24
+#define MAX_ROWS 32
 
 static row_t *
 add_row (row_t *rows, int *n, const char *method, const char *setting,
@@ -489,6 +588,7 @@ make_rows (row_t *rows, bench *b)
   int n = 0;
   add_row (rows, &n, "baseline", "-", ROW_BASELINE, b);
   add_row (rows, &n, "eh-only", "-", ROW_EH, b);
+  add_row (rows, &n, "eh-only", "n steps", ROW_EHN, b);
   add_row (rows, &n, "closed-form", "double", ROW_FULL, b);
   add_row (rows, &n, "closed-form", "single", ROW_FULL, b)->opt.precision
     = CHAPLYGIN_PREC_SINGLE;
@@ -508,6 +608,9 @@ make_rows (row_t *rows, bench *b)
     }
   add_row (rows, &n, "baseline", "indep.", ROW_BASELINE, b)->diag = 1;
   add_row (rows, &n, "eh-only", "indep.", ROW_EH, b)->diag = 1;
+  add_row (rows, &n, "baseline", "orbit", ROW_BASELINE, b)->diag = 2;
+  add_row (rows, &n, "eh-only", "orbit", ROW_EH, b)->diag = 2;
+  add_row (rows, &n, "eh-only", "orbit n", ROW_EHN, b)->diag = 2;
   return n;
 }
 
@@ -597,7 +700,7 @@ static pass_fn
 pass_of (const row_t *r)
 {
   return r->kind == ROW_BASELINE ? pass_baseline
-    : r->kind == ROW_EH ? pass_eh : pass_full;
+    : r->kind == ROW_EH ? pass_eh : r->kind == ROW_EHN ? pass_ehn : pass_full;
 }
 
 /* What is timed: the orbits of the scenes, or (diagnostic rows) the
@@ -605,10 +708,14 @@ pass_of (const row_t *r)
 static pass_fn
 timed_pass_of (const row_t *r)
 {
-  if (r->diag)
+  if (r->diag == 1)
     return pass_of (r);
+  if (r->diag == 2)
+    return r->kind == ROW_BASELINE ? long_baseline
+      : r->kind == ROW_EH ? long_eh : long_ehn;
   return r->kind == ROW_BASELINE ? chain_baseline
-    : r->kind == ROW_EH ? chain_eh : chain_full;
+    : r->kind == ROW_EH ? chain_eh : r->kind == ROW_EHN ? chain_ehn
+    : chain_full;
 }
 
 /* The warm-up pass, whose outputs are the ones measured, then the number
@@ -643,7 +750,9 @@ time_rep (row_t *r, long k)
   double t0 = now ();
   for (long j = 0; j < r->passes; j++)
     pass (r->b, &r->opt);
-  r->ns[k] = (now () - t0) * 1e9 / ((double) r->passes * (double) r->b->n);
+  const double per_pass = r->diag == 2
+    ? (double) r->b->nscenes * LONG_ORBIT : (double) r->b->n;
+  r->ns[k] = (now () - t0) * 1e9 / ((double) r->passes * per_pass);
   r->reps = k + 1;
 }
 
@@ -687,6 +796,8 @@ typedef struct
   const row_t *base, *eh, *cf, *ode;
   int ode_reaches;              /* ode's error is at most cf's */
   const row_t *ibase, *ieh;     /* diagnostic rows: independent states */
+  const row_t *ehn;             /* eh-only in n steps per call */
+  const row_t *lbase, *leh, *lehn;      /* diagnostic rows: long orbits */
 } targets_t;
 
 static targets_t
@@ -695,17 +806,28 @@ find_targets (const row_t *rows, int n)
   targets_t t;
   memset (&t, 0, sizeof t);
   for (int i = 0; i < n; i++)
-    if (rows[i].diag)
+    if (rows[i].diag == 1)
       {
         if (rows[i].kind == ROW_BASELINE)
           t.ibase = &rows[i];
         else
           t.ieh = &rows[i];
       }
+    else if (rows[i].diag == 2)
+      {
+        if (rows[i].kind == ROW_BASELINE)
+          t.lbase = &rows[i];
+        else if (rows[i].kind == ROW_EH)
+          t.leh = &rows[i];
+        else
+          t.lehn = &rows[i];
+      }
     else if (rows[i].kind == ROW_BASELINE)
       t.base = &rows[i];
     else if (rows[i].kind == ROW_EH)
       t.eh = &rows[i];
+    else if (rows[i].kind == ROW_EHN)
+      t.ehn = &rows[i];
     else if (!strcmp (rows[i].method, "closed-form")
              && rows[i].opt.precision == CHAPLYGIN_PREC_DOUBLE)
       t.cf = &rows[i];
@@ -738,6 +860,19 @@ print_targets (FILE *f, const targets_t *t, int texi)
         fprintf (f, "; one step from each of the independent states instead "
                  "of along the orbits: %.3g ns / %.3g ns = %.2f", t->ieh->ns_min,
                  t->ibase->ns_min, t->ieh->ns_min / t->ibase->ns_min);
+      if (t->ehn)
+        fprintf (f, "; the orbits in one call each "
+                 "(chaplygin_discrete_step_eh_n): %.3g ns / %.3g ns = %.2f "
+                 "(%s)", t->ehn->ns_min, t->base->ns_min,
+                 t->ehn->ns_min / t->base->ns_min,
+                 t->ehn->ns_min <= 3 * t->base->ns_min ? "met" : "NOT met");
+      if (t->lbase && t->leh && t->lehn)
+        fprintf (f, "; along orbits of %d collisions: step %.3g ns, "
+                 "step_eh_n %.3g ns, baseline %.3g ns: %.2f and %.2f (%s)",
+                 LONG_ORBIT, t->leh->ns_min, t->lehn->ns_min,
+                 t->lbase->ns_min, t->leh->ns_min / t->lbase->ns_min,
+                 t->lehn->ns_min / t->lbase->ns_min,
+                 t->lehn->ns_min <= 3 * t->lbase->ns_min ? "met" : "NOT met");
       fprintf (f, "\n");
     }
   if (t->cf && t->ode)
@@ -920,9 +1055,13 @@ print_table (const bench *b, const row_t *rows, int n)
   for (int i = 0; i < n; i++)
     {
       const row_t *r = &rows[i];
-      if (r->diag && !rows[i - 1].diag)
+      if (r->diag == 1 && !rows[i - 1].diag)
         printf ("diagnostic rows (not in the CSV): one step from each "
                 "independent state\n");
+      if (r->diag == 2 && rows[i - 1].diag != 2)
+        printf ("diagnostic rows (not in the CSV): orbits of %d collisions "
+                "from each scene's first state (timing only; errors: one "
+                "step from each state)\n", LONG_ORBIT);
       printf ("%-11s %-7s %9.4g %9.4g %7.3g %9.2e %9.2e %9.2e ", r->method,
               r->setting, r->ns_min, r->ns_med, r->ns_min / rows[0].ns_min,
               r->max_err, r->med_err, r->max_eh);
@@ -931,7 +1070,8 @@ print_table (const bench *b, const row_t *rows, int n)
       else
         printf ("%9s %10s ", "-", "-");
       printf ("%5zu %5zu %ld x %ld\n", r->failures, r->mismatches, r->reps,
-              r->passes * (long) r->b->n);
+              r->passes * (r->diag == 2 ? (long) r->b->nscenes * LONG_ORBIT
+                           : (long) r->b->n));
     }
 }
 

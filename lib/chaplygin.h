@@ -345,6 +345,14 @@ int chaplygin_discrete_step (const chaplygin_discrete *sys,
                              chaplygin_discrete_state *out,
                              chaplygin_discrete_event *ev);
 
+/* n steps of (B.3)/(B.4) for E and H only (default options), in place:
+   bit for bit n calls of chaplygin_discrete_step (sys, st, 0, NULL, st,
+   NULL), validated once.  *done (may be NULL): the steps made; on a
+   failure *st is the state after the last successful one. */
+int chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
+                                  chaplygin_discrete_state *st,
+                                  unsigned long n, unsigned long *done);
+
 /* (3.5) the Poincare map f = h o p in phase form: qplus = {D+, V+, theta+,
    Omega+} just after a collision (D+ = 0 if V+ > 0, Delta if V+ < 0) to the
    state just after the next; *dtau (may be NULL) the time between them. */

@@ -590,6 +590,48 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
   return step_core (sys, in, NULL, request, opt, out, ev);
 }
 
+/* chaplygin_discrete_step_eh_n: (B.3)/(B.4), n steps of the return map
+   for E and H only (default options), in place: the same as n calls of
+   chaplygin_discrete_step (sys, st, 0, NULL, st, NULL), bit for bit, with
+   the system validated once and the state kept in registers between
+   collisions.  *done (may be NULL) receives the number of steps made; on
+   a failure *st is the state after the last successful step and the
+   status is that step's.  n = 0 validates and returns.
+   Errors: CHAPLYGIN_EINVAL (NULL sys or st), and those of
+   chaplygin_discrete_step. */
+int
+chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
+                              chaplygin_discrete_state *st, unsigned long n,
+                              unsigned long *done)
+{
+  if (!sys || !st)
+    return CHAPLYGIN_EINVAL;
+  chaplygin_discrete_state s = *st;
+  unsigned long i = 0;
+  int status = check_state (sys, &s);
+  const int in_cap = fabs (sys->l_end[0]) <= CHP_L_MAX
+    && fabs (sys->l_end[1]) <= CHP_L_MAX;
+  while (status == CHAPLYGIN_SUCCESS && i < n)
+    {
+      double E1, H1;
+      int rev;
+      /* eh_fast's outputs are finite: the state stays valid for it */
+      if (in_cap && eh_fast (sys, &s, s.dir > 0 ? 0 : 1, &E1, &H1, &rev))
+        {
+          s.dir = rev ? -s.dir : s.dir;
+          s.E = E1;
+          s.H = H1;
+        }
+      else
+        status = step_core (sys, &s, NULL, 0, NULL, &s, NULL);
+      i += status == CHAPLYGIN_SUCCESS;
+    }
+  *st = s;
+  if (done)
+    *done = i;
+  return status;
+}
+
 /* chaplygin_discrete_state_from_phase: {D+, V+, theta+, Omega+} -> map
    state: dir = sgn V+, E by (3.3), H by (3.4).  D+ must be 0 for V+ > 0
    and Delta for V+ < 0 exactly.  Errors: CHAPLYGIN_EINVAL (NULL),

@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "internal.h"
 #include "ref_map.h"
@@ -781,6 +782,93 @@ START_TEST (test_step_errors)
 }
 END_TEST
 
+/* Two states equal bit for bit, field by field (not memcmp of the
+   structs: their padding is not a value). */
+static int
+same_state (const chaplygin_discrete_state *a,
+            const chaplygin_discrete_state *b)
+{
+  const double x[6] = { a->E, a->H, a->theta, a->tau, a->peg[0], a->peg[1] };
+  const double y[6] = { b->E, b->H, b->theta, b->tau, b->peg[0], b->peg[1] };
+  return a->dir == b->dir && memcmp (x, y, sizeof x) == 0;
+}
+
+/* chaplygin_discrete_step_eh_n: its contract is n calls of
+   chaplygin_discrete_step (sys, st, 0, NULL, st, NULL), bit for bit, the
+   state after the last successful step on a failure; the reference here
+   is that loop (whose values the other tests check against binary128 and
+   the oracle).  Random slots within the cap and far ones, states of
+   either direction with |h| up to past the turning points, n up to 60. */
+START_TEST (test_step_eh_n)
+{
+  tu_rng rng;
+  tu_rng_seed (&rng, 20261125);
+  int compared = 0, failed_midway = 0;
+  for (int c = 0; c < 400; c++)
+    {
+      const int far = c % 8 == 7;
+      const double L0 = far ? (c % 16 == 7 ? 1e200 : -1e200)
+        : tu_uniform (&rng, -3.0, 3.0);
+      const double Delta = far ? 1.0 : tu_uniform (&rng, 0.1, 3.0);
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+      const int dir = tu_uniform (&rng, 0, 1) < 0.5 ? 1 : -1;
+      const double ls = dir > 0 ? L0 : L0 + Delta;
+      /* |H| = u sqrt(2E (1 + ls^2)), u < 1: a valid state */
+      const double E = tu_uniform (&rng, 0.1, 10.0);
+      const double u = tu_uniform (&rng, -0.999, 0.999);
+      chaplygin_discrete_state st = { dir, E, u * sqrt (2 * E) * hypot (1.0, ls),
+                                      0.25, 1.5, { -1.0, 2.0 } };
+      const unsigned long n = 1 + (unsigned long) tu_uniform (&rng, 0, 60);
+      chaplygin_discrete_state ref = st, got = st;
+      unsigned long done = 99, k = 0;
+      int rc_ref = 0;
+      for (; k < n; k++)
+        if ((rc_ref = chaplygin_discrete_step (&sys, &ref, 0, NULL, &ref,
+                                               NULL)))
+          break;
+      int rc = chaplygin_discrete_step_eh_n (&sys, &got, n, &done);
+      ck_assert_int_eq (rc, rc_ref);
+      ck_assert_uint_eq (done, k);
+      ck_assert_msg (same_state (&got, &ref),
+                     "L0 %g Delta %g dir %d E %g H %g n %lu: E %a/%a H %a/%a "
+                     "dir %d/%d", L0, Delta, dir, st.E, st.H, n, got.E, ref.E,
+                     got.H, ref.H, got.dir, ref.dir);
+      failed_midway += rc_ref != 0 && k > 0;
+      compared++;
+    }
+  ck_assert_int_eq (compared, 400);
+  (void) failed_midway;
+  /* statuses: nothing done, the state untouched */
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+  chaplygin_discrete_state st = { 1, 0.5, 1.0, 0, 0, { 0, 0 } }, keep;
+  unsigned long done = 99;
+  ck_assert_status (chaplygin_discrete_step_eh_n (NULL, &st, 1, &done),
+                    CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_step_eh_n (&sys, NULL, 1, &done),
+                    CHAPLYGIN_EINVAL);
+  ck_assert (done == 99);
+  /* 2E = H^2 on a path through l = 0: the spinning state, at once */
+  keep = st;
+  ck_assert_status (chaplygin_discrete_step_eh_n (&sys, &st, 5, &done),
+                    CHAPLYGIN_ESPIN);
+  ck_assert (done == 0 && same_state (&st, &keep));
+  st.E = NAN;
+  ck_assert_status (chaplygin_discrete_step_eh_n (&sys, &st, 5, &done),
+                    CHAPLYGIN_EDOM);
+  st.E = 0.5, st.dir = 0;
+  ck_assert_status (chaplygin_discrete_step_eh_n (&sys, &st, 5, &done),
+                    CHAPLYGIN_EINVAL);
+  /* n = 0: validation only; done may be NULL */
+  st.dir = -1, st.H = 0.25;
+  keep = st;
+  ck_assert_ok (chaplygin_discrete_step_eh_n (&sys, &st, 0, &done));
+  ck_assert (done == 0 && same_state (&st, &keep));
+  ck_assert_ok (chaplygin_discrete_step_eh_n (&sys, &st, 3, NULL));
+}
+END_TEST
+
 int
 main (void)
 {
@@ -796,6 +884,7 @@ main (void)
   tcase_set_timeout (t, 60);
   tcase_add_test (t, eq_B_3);
   tcase_add_test (t, test_eh_update);
+  tcase_add_test (t, test_step_eh_n);
   suite_add_tcase (s, t);
   t = tcase_create ("eq_B_4");
   tcase_add_test (t, eq_B_4);
