@@ -33,5 +33,5 @@ plot csv using (sel('ode')):'ns_per_collision' with linespoints pt 7 ps 1 lw 1.5
      csv using (sel('quadrature')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#1f3b73' notitle, \
      csv using (sel('closed-form')):'ns_per_collision' with linespoints pt 9 ps 1.6 lw 1.5 lc rgb '#27ae60' title 'closed-form (Carlson), precision', \
      csv using (sel('closed-form')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#27ae60' notitle, \
-     csv using (sel('eh-only')):'ns_per_collision' with points pt 13 ps 1.6 lc rgb '#8e44ad' title 'eh-only (E, H only)', \
+     csv using (sel('eh-only')):'ns_per_collision' with points pt 13 ps 1.6 lc rgb '#8e44ad' title 'eh-only (E, H only; lower: n steps per call)', \
      csv using (sel('baseline')):'ns_per_collision' with points pt 3 ps 1.6 lc rgb 'black' title 'baseline (bare (E, H) arithmetic)'
