@@ -13,9 +13,16 @@
    lies in [2^99, 2^100) and largest below 2^500 (within the range where
    every routine works), and scale the answer back.  rho = 1 at |l| >=
    2^99 is again rho = 0 up to a relative O(2^-198), so the two problems
-   agree far below the rounding of double.  (A smaller scaled |l| would not do: the quadrature
-   integrands of the heading are ~ 1/l^2, and at 2^400 a short leg's
-   integral underflows.)
+   agree far below the rounding of double.  (A larger scaled |l| would
+   not do: quantities ~ 1/l^2 of a short leg, such as the heading's
+   integrands, underflow at 2^400.)  The energy factor a brings E (or a
+   phase state's speed) near 1, so that times, lengths over speeds, stay
+   in range as lengths do.  Where sqrt(a) s H would still be below
+   2^-570, h = H/sqrt(2E) is below 2^-570 of the smallest |l|: the
+   motion is linear in H to far below rounding (no turning point, V^2 =
+   2E (1 - h^2/(1 + l^2))), and routines whose results are linear in H
+   there (the return map, the collision, the Jacobian) scale H alone by
+   a further 2^j, the others raise a instead (chp_far_eh).
 
    The signs that decide validity and reversal agree too where the slot
    end is a double (L0 itself): H^2 - 2E l^2 is then 0 or a multiple of
