@@ -211,6 +211,7 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
     return CHAPLYGIN_ESTATE;
   double b, eb, bp = L0 + (Delta - Dm);
   chp_two_sum (L0, Dm, &b, &eb);        /* b + eb = L0 + D- exactly */
+  double Ep, Hp;
   if (fabs (b) > CHP_L_MAX || fabs (bp) > CHP_L_MAX)
     {
       /* far (lib/far.c): the collision of the exactly scaled system */
@@ -222,26 +223,22 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
       CHP_TRY (chp_far_eh (&f, E, H, 1, &ps[CHAPLYGIN_E],
                            &ps[CHAPLYGIN_H]));
       CHP_TRY (chaplygin_discrete_collide_eh (f.L0, f.Delta, ps, qs));
-      double Ep = ldexp (qs[CHAPLYGIN_E], -2 * f.m);
-      double Hp = ldexp (qs[CHAPLYGIN_H], f.k - f.m - f.j);
-      if (!isfinite (Ep) || !isfinite (Hp))
-        return CHAPLYGIN_ERANGE;
-      pplus[CHAPLYGIN_D] = Delta - Dm;
-      pplus[CHAPLYGIN_E] = Ep;
-      pplus[CHAPLYGIN_THETA] = pminus[CHAPLYGIN_THETA];
-      pplus[CHAPLYGIN_H] = Hp;
-      return CHAPLYGIN_SUCCESS;
+      Ep = ldexp (qs[CHAPLYGIN_E], -2 * f.m);
+      Hp = ldexp (qs[CHAPLYGIN_H], f.k - f.m - f.j);
     }
-  /* g = (1 + b^2) V-^2/(2E), error-free (b's own rounding included) */
-  chp_motion m;
-  CHP_TRY (chp_motion_init (E, H, &m));
-  double g = chp_motion_g_exact (&m, b, eb);
-  if (!(g > 0.0))
-    return CHAPLYGIN_ESTATE;
-  double C1, C2;
-  chp_collision_coefficients (L0, Delta, Dm, &C1, &C2);
-  double Hp = C2 * H;
-  double Ep = chp_post_collision_energy (E, g, b, Hp, bp);
+  else
+    {
+      /* g = (1 + b^2) V-^2/(2E), error-free (b's own rounding included) */
+      chp_motion m;
+      CHP_TRY (chp_motion_init (E, H, &m));
+      double g = chp_motion_g_exact (&m, b, eb);
+      if (!(g > 0.0))
+        return CHAPLYGIN_ESTATE;
+      double C1, C2;
+      chp_collision_coefficients (L0, Delta, Dm, &C1, &C2);
+      Hp = C2 * H;
+      Ep = chp_post_collision_energy (E, g, b, Hp, bp);
+    }
   if (!isfinite (Ep) || !isfinite (Hp))
     return CHAPLYGIN_ERANGE;
   pplus[CHAPLYGIN_D] = Delta - Dm;
