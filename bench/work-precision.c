@@ -360,20 +360,27 @@ pass_baseline (bench *b, const chaplygin_options *opt)
     }
 }
 
-/* The orbits: each scene from its first state, as many collisions as it
-   has states; the last state of each is stored (so that the work cannot
-   be dropped), in the outputs of the scene's last step. */
-static void __attribute__ ((noinline))
-chain_baseline (bench *b, const chaplygin_options *opt)
+/* The orbits: each scene from its first state, LEN collisions (0: as many
+   as the scene has states; LONG_ORBIT for the diagnostic rows); the last
+   state of each is stored (so that the work cannot be dropped), in the
+   outputs of the scene's last step. */
+static size_t
+orbit_length (const bench *b, size_t k, int len)
 {
-  (void) opt;
+  return len ? (size_t) len : b->scene[k + 1] - b->scene[k];
+}
+
+static void
+orbit_baseline (bench *b, int len)
+{
   for (size_t k = 0; k < b->nscenes; k++)
     {
       const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
+      const size_t n = orbit_length (b, k, len);
       const chaplygin_discrete *s = b->sys[i0];
       int dir = b->st[i0].dir;
       double E = b->st[i0].E, H = b->st[i0].H;
-      for (size_t i = i0; i < i1; i++)
+      for (size_t i = 0; i < n; i++)
         baseline_update (s, &dir, &E, &H);
       b->E1[i1 - 1] = E;
       b->H1[i1 - 1] = H;
@@ -381,16 +388,18 @@ chain_baseline (bench *b, const chaplygin_options *opt)
     }
 }
 
-static void __attribute__ ((noinline))
-chain_step (bench *b, const chaplygin_options *opt, unsigned request)
+static void
+orbit_step (bench *b, const chaplygin_options *opt, unsigned request,
+            int len)
 {
   for (size_t k = 0; k < b->nscenes; k++)
     {
       const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
+      const size_t n = orbit_length (b, k, len);
       const chaplygin_discrete *s = b->sys[i0];
       chaplygin_discrete_state st = b->st[i0];
       int rc = 0;
-      for (size_t i = i0; i < i1 && !rc; i++)
+      for (size_t i = 0; i < n && !rc; i++)
         rc = chaplygin_discrete_step (s, &st, request, opt, &st, NULL);
       b->E1[i1 - 1] = st.E;
       b->H1[i1 - 1] = st.H;
@@ -400,85 +409,67 @@ chain_step (bench *b, const chaplygin_options *opt, unsigned request)
     }
 }
 
-static void __attribute__ ((noinline))
-chain_eh (bench *b, const chaplygin_options *opt)
-{
-  chain_step (b, opt, 0);
-}
-
 /* The orbits in one call each: chaplygin_discrete_step_eh_n. */
-static void __attribute__ ((noinline))
-chain_ehn (bench *b, const chaplygin_options *opt)
+static void
+orbit_ehn (bench *b, int len)
 {
-  (void) opt;
   for (size_t k = 0; k < b->nscenes; k++)
     {
       const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
       chaplygin_discrete_state st = b->st[i0];
-      int rc = chaplygin_discrete_step_eh_n (b->sys[i0], &st, i1 - i0, NULL);
+      int rc = chaplygin_discrete_step_eh_n (b->sys[i0], &st,
+                                             orbit_length (b, k, len), NULL);
       b->E1[i1 - 1] = st.E;
       b->H1[i1 - 1] = st.H;
       b->rc[i1 - 1] = rc;
     }
 }
 
-/* Long orbits (LONG_ORBIT collisions from each scene's first state) by the
-   baseline, by chaplygin_discrete_step and by chaplygin_discrete_step_eh_n:
-   timing only, no reference (the outputs are stored so that the work
-   cannot be dropped). */
+static void __attribute__ ((noinline))
+chain_baseline (bench *b, const chaplygin_options *opt)
+{
+  (void) opt;
+  orbit_baseline (b, 0);
+}
+
+static void __attribute__ ((noinline))
+chain_eh (bench *b, const chaplygin_options *opt)
+{
+  orbit_step (b, opt, 0, 0);
+}
+
+static void __attribute__ ((noinline))
+chain_ehn (bench *b, const chaplygin_options *opt)
+{
+  (void) opt;
+  orbit_ehn (b, 0);
+}
+
+/* Long orbits (diagnostic rows): timing only, no reference. */
 static void __attribute__ ((noinline))
 long_baseline (bench *b, const chaplygin_options *opt)
 {
   (void) opt;
-  for (size_t k = 0; k < b->nscenes; k++)
-    {
-      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
-      const chaplygin_discrete *s = b->sys[i0];
-      int dir = b->st[i0].dir;
-      double E = b->st[i0].E, H = b->st[i0].H;
-      for (int j = 0; j < LONG_ORBIT; j++)
-        baseline_update (s, &dir, &E, &H);
-      b->E1[i1 - 1] = E;
-      b->H1[i1 - 1] = H;
-    }
+  orbit_baseline (b, LONG_ORBIT);
 }
 
 static void __attribute__ ((noinline))
 long_eh (bench *b, const chaplygin_options *opt)
 {
-  for (size_t k = 0; k < b->nscenes; k++)
-    {
-      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
-      chaplygin_discrete_state st = b->st[i0];
-      int rc = 0;
-      for (int j = 0; j < LONG_ORBIT && !rc; j++)
-        rc = chaplygin_discrete_step (b->sys[i0], &st, 0, opt, &st, NULL);
-      b->E1[i1 - 1] = st.E;
-      b->H1[i1 - 1] = st.H;
-      b->rc[i1 - 1] = rc;
-    }
+  orbit_step (b, opt, 0, LONG_ORBIT);
 }
 
 static void __attribute__ ((noinline))
 long_ehn (bench *b, const chaplygin_options *opt)
 {
   (void) opt;
-  for (size_t k = 0; k < b->nscenes; k++)
-    {
-      const size_t i0 = b->scene[k], i1 = b->scene[k + 1];
-      chaplygin_discrete_state st = b->st[i0];
-      int rc = chaplygin_discrete_step_eh_n (b->sys[i0], &st, LONG_ORBIT,
-                                             NULL);
-      b->E1[i1 - 1] = st.E;
-      b->H1[i1 - 1] = st.H;
-      b->rc[i1 - 1] = rc;
-    }
+  orbit_ehn (b, LONG_ORBIT);
 }
 
 static void __attribute__ ((noinline))
 chain_full (bench *b, const chaplygin_options *opt)
 {
-  chain_step (b, opt, CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
+  orbit_step (b, opt, CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU, 0);
 }
 
 /* One step from every state, E and H only: by chaplygin_discrete_step,

@@ -106,8 +106,12 @@ chp_far_eh (chp_far *f, double E, double H, int linear, double *Es,
      stay in range as lengths do */
   f->m = -(ilogb (E) / 2);
   if (H == 0.0)
-    return chp_exact_ldexp (E, 2 * f->m, Es) ? (*Hs = H, CHAPLYGIN_SUCCESS)
-      : CHAPLYGIN_ERANGE;
+    {
+      if (!chp_exact_ldexp (E, 2 * f->m, Es))
+        return CHAPLYGIN_ERANGE;
+      *Hs = H;
+      return CHAPLYGIN_SUCCESS;
+    }
   /* 2^(m-k) H must be exact, and C2 times it (C2 >= 2^-400 in a far
      slot) normal too: where it would be below 2^-570, h is below
      2^-570 of the smallest |l| and the motion is linear in H to far
