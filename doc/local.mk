@@ -2,12 +2,98 @@
 info_TEXINFOS = doc/chaplygin.texi
 doc_chaplygin_TEXINFOS = doc/notation.texi doc/conventions.texi \
 	doc/methods.texi doc/concordance.texi doc/errata.texi doc/api.texi \
-	doc/accuracy.texi doc/figures.texi doc/bench.texi doc/bench-table.texi
-# the figures of `make figures' (tools/local.mk), committed
-EXTRA_DIST += doc/figures/fig2a.png doc/figures/fig2b.png \
+	doc/api-printed.texi doc/accuracy.texi doc/figures.texi \
+	doc/bench.texi doc/bench-table.texi $(GENERATED_TEXINFOS)
+
+# Images are named by their file name alone (@image{fig6,...}) and found
+# in doc/figures: the HTML manual then holds them beside its pages.
+AM_MAKEINFOFLAGS = -I $(srcdir)/doc/figures
+
+# The figures of `make figures' (tools/local.mk) and the work-precision
+# diagram of `make bench' (bench/local.mk), committed.
+MANUAL_FIGURES = doc/figures/fig2a.png doc/figures/fig2b.png \
 	doc/figures/fig3.png doc/figures/fig4.png doc/figures/fig5.png \
 	doc/figures/fig6.png doc/figures/fig7.png doc/figures/fig8.png \
-	doc/figures/fig9.png doc/figures/fig10.png
-# the work-precision diagram of `make bench' (bench/local.mk), committed
-EXTRA_DIST += doc/figures/work-precision.png
+	doc/figures/fig9.png doc/figures/fig10.png \
+	doc/figures/work-precision.png
+EXTRA_DIST += $(MANUAL_FIGURES) doc/equations.txt doc/concordance.awk \
+	doc/man2texi.awk doc/check-html.pl doc/check-html.sh
 dist_doc_DATA = doc/concordance.tsv
+
+# ---- generated parts of the manual --------------------------------------
+# Written into the source tree and distributed (like version.texi), each
+# from its one source: the concordance chapter, the errata's audit table
+# and the library reference's links back to the concordance from
+# doc/concordance.tsv and doc/equations.txt (doc/concordance.awk); the
+# program reference from the man page's source (doc/man2texi.awk).  A
+# generator that fails leaves no file behind.
+GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
+	doc/concordance-macros.texi doc/program.texi
+CONCORDANCE_INPUTS = $(srcdir)/doc/concordance.tsv \
+	$(srcdir)/doc/equations.txt $(srcdir)/doc/accuracy.texi \
+	$(srcdir)/doc/errata.texi $(wildcard $(srcdir)/tests/*.c)
+CONCORDANCE_GEN = $(AWK) -f $(srcdir)/doc/concordance.awk
+
+$(srcdir)/doc/concordance-entries.texi: $(CONCORDANCE_INPUTS) \
+		$(srcdir)/doc/concordance.awk
+	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=entries $(CONCORDANCE_INPUTS) \
+	  > $@.tmp && mv $@.tmp $@
+$(srcdir)/doc/audit-table.texi: $(CONCORDANCE_INPUTS) \
+		$(srcdir)/doc/concordance.awk
+	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=audit $(CONCORDANCE_INPUTS) \
+	  > $@.tmp && mv $@.tmp $@
+$(srcdir)/doc/concordance-macros.texi: $(CONCORDANCE_INPUTS) \
+		$(srcdir)/doc/concordance.awk
+	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=macros $(CONCORDANCE_INPUTS) \
+	  > $@.tmp && mv $@.tmp $@
+# @pkgdatadir@ reads "pkgdatadir" in the manual (the man page gets the
+# configured directory).
+$(srcdir)/doc/program.texi: $(srcdir)/tools/chaplygin.1.in \
+		$(srcdir)/doc/man2texi.awk
+	$(AM_V_GEN)sed -e 's/@pkgdatadir@/\\fIpkgdatadir\\fP/g' \
+	  $(srcdir)/tools/chaplygin.1.in | $(AWK) -v source=tools/chaplygin.1.in \
+	  -f $(srcdir)/doc/man2texi.awk \
+	  > $@.tmp && mv $@.tmp $@
+
+# ---- the HTML manual ------------------------------------------------------
+# `make html' builds the split manual doc/chaplygin.html/ (automake's
+# rule); doc/html.stamp then puts the figures and a single-page edition,
+# one-page.html, into that directory, so that every image and link
+# resolves there, in the build tree as once installed (automake's
+# install-html installs every file of the directory).
+doc/one-page.html: $(srcdir)/doc/chaplygin.texi $(srcdir)/doc/version.texi \
+		$(doc_chaplygin_TEXINFOS)
+	$(AM_V_MAKEINFO)$(MKDIR_P) doc && $(MAKEINFOHTML) \
+	  $(AM_MAKEINFOHTMLFLAGS) $(MAKEINFOFLAGS) --no-split -I doc \
+	  -I $(srcdir)/doc -o $@.tmp $(srcdir)/doc/chaplygin.texi \
+	  && mv $@.tmp $@
+doc/html.stamp: $(HTMLS) doc/one-page.html $(MANUAL_FIGURES)
+	$(AM_V_GEN)for f in $(MANUAL_FIGURES); do \
+	  cp "$(srcdir)/$$f" doc/chaplygin.html/ || exit 1; \
+	done && cp doc/one-page.html doc/chaplygin.html/ && touch $@
+html-local: doc/html.stamp
+install-html-local: doc/html.stamp
+	@$(NORMAL_INSTALL)
+	$(MKDIR_P) "$(DESTDIR)$(htmldir)/chaplygin.html"
+	$(INSTALL_DATA) doc/chaplygin.html/one-page.html \
+	  "$(DESTDIR)$(htmldir)/chaplygin.html"
+	for f in $(MANUAL_FIGURES); do \
+	  $(INSTALL_DATA) "$(srcdir)/$$f" "$(DESTDIR)$(htmldir)/chaplygin.html" \
+	    || exit 1; \
+	done
+# `make install' installs the HTML manual too: it is the edition most
+# readers open (figures, links), not only the Info one.
+install-data-local: install-html
+uninstall-local: uninstall-html
+CLEANFILES += doc/one-page.html doc/html.stamp
+
+# `make check' builds the HTML manual and checks that every image and
+# every internal link of both editions resolves (doc/check-html.sh);
+# `make installcheck' checks the installed one.
+check_DATA = doc/html.stamp
+TESTS += doc/check-html.sh
+installcheck-local: installcheck-html
+installcheck-html:
+	CHAPLYGIN_HTML_DIR="$(DESTDIR)$(htmldir)/chaplygin.html" \
+	  top_srcdir="$(srcdir)" $(SHELL) $(srcdir)/doc/check-html.sh
+.PHONY: installcheck-html

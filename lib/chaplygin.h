@@ -707,6 +707,114 @@ int chaplygin_discrete_final_velocity (double L0, double Delta, double V,
 int chaplygin_discrete_spin_sequence (double Delta, unsigned long n,
                                       double *v2_over_omega2);
 
+/* ------------------------------------------------------------------ */
+/* The paper's printed forms (errata), for audit                       */
+/* chaplygin_printed_X evaluates the formula as the paper prints it,   */
+/* beside the corrected chaplygin_X (same signature where it makes     */
+/* sense).  Not the dynamics: see lib/printed.c and the errata.  Where */
+/* the printed formula is undefined as written (a division by zero, a  */
+/* logarithm of a number <= 0) they return CHAPLYGIN_EDOM; an output   */
+/* the paper gives no formula for must be NULL (CHAPLYGIN_EINVAL).     */
+/* ------------------------------------------------------------------ */
+
+/* (2.1) as printed (E1): dS/dtau = V, not |V|; the other components are
+   those of chaplygin_smooth_field. */
+int chaplygin_printed_smooth_field (double L, const double q[4],
+                                    double dq[4]);
+
+/* (A.1) as printed (E3): S_c = S0 - (1 + L^2)/(2L) ln(1 + V0^2/(Omega0^2
+   (1 + L^2))).  *reverses = 1 iff L < 0 (the paper's condition); *Sc is
+   written whenever the formula is defined (also for L > 0, where it lies
+   before S0).  CHAPLYGIN_EDOM for L = 0 or Omega0 = 0. */
+int chaplygin_printed_smooth_reversal (double L, const double q0[4],
+                                       int *reverses, double *Sc);
+
+/* (A.6) as printed (E3): S_c = S0 - (1 + L^2)/(2L) ln(2 E0 (1 + L^2)/H0^2),
+   *reverses = 1 iff L < 0, *Sc whenever defined (dir0 validated only).
+   CHAPLYGIN_EDOM for L = 0 or H0 = 0. */
+int chaplygin_printed_smooth_reversal_eh (double L, double S0, double E0,
+                                          double H0, int dir0,
+                                          int *reverses, double *Sc);
+
+/* (A.2) as printed (E4 read as intended; E5, E6): V = K sqrt(V0^2 +
+   Omega0^2 (1 + L^2)(1 - exp(-2 K a (S - S0)))), theta = theta0 +
+   K (sqrt(1 + L^2)/L)[arcsin(k) - arcsin(k exp(-K a (S - S0)))],
+   Omega = Omega0 exp(-K a (S - S0)), a = L/(1 + L^2), K the printed (A.3).
+   The paper gives no time: dtau must be NULL.  CHAPLYGIN_EDOM for L = 0
+   or Omega0 = 0. */
+int chaplygin_printed_smooth_closed_form (double L, const double q0[4],
+                                          double S, double q[4],
+                                          double *dtau);
+
+/* (A.3) as printed (E7): K = 1 for L > 0; for L < 0, 1 up to the printed
+   S_c (A.1) and -1 beyond it, for either sign of V0.  CHAPLYGIN_EDOM for
+   L = 0, or L < 0 with Omega0 = 0. */
+int chaplygin_printed_smooth_branch (double L, const double q0[4], double S,
+                                     int *K);
+
+/* (A.4) as printed (E5, E6): E = E0, the printed heading with
+   1/sqrt(2 E0 (1 + L^2)/H0^2) for k, H_C = H0 exp(-K a (S - S0)), K the
+   printed (A.3) with the S_c of (A.6).  CHAPLYGIN_EDOM for L = 0 or
+   H0 = 0. */
+int chaplygin_printed_smooth_closed_form_eh (double L, const double p0[4],
+                                             int dir0, double S,
+                                             double p[4]);
+
+/* (3.11), (3.12) as printed, read as chains (E12): the corrected criterion
+   and the middle expression > 0 (-1 < L0/Delta < -1/2 for dir +1,
+   -1/2 < L0/Delta < 0 for dir -1). */
+int chaplygin_printed_discrete_stable (double L0, double Delta, int dir,
+                                       int *stable);
+
+/* (4.1) as printed (E13): c0, c1 as corrected,
+   c2 = -(1/3) L0 (L0^2 - 2)/(1 + L0^2)^3 (1/24 at L0 = 1; correct 5/24).
+   The paper gives V* > 0 only: dir = -1 is CHAPLYGIN_EDOM. */
+int chaplygin_printed_discrete_xi4_taylor (double L0, int dir, double c[3]);
+
+/* (B.2) as printed (E9): the integral of a positive integrand from D0 to
+   D, dtheta = sgn(D - D0) |dtheta| (the heading turns with sgn Omega0).
+   No time: dtau must be NULL.  CHAPLYGIN_EDOM for Omega0 = 0. */
+int chaplygin_printed_discrete_heading (double L0, double D0, double V0,
+                                        double Omega0, double D,
+                                        const chaplygin_options *opt,
+                                        double *dtheta, double *dtau);
+
+/* (B.3) the heading increment f3(E, H) as printed (E10) for the
+   post-collision state (dir, E, H) of a segment without reversal:
+   Int_(D+)^(Delta - D+) of a positive integrand, f3 = dir |f3| whatever
+   the sign of H (the step's ev->dtheta is sgn(H) |f3|).  CHAPLYGIN_EDOM
+   for H = 0, CHAPLYGIN_ESTATE if the segment reverses. */
+int chaplygin_printed_discrete_f3 (const chaplygin_discrete *sys, int dir,
+                                   double E, double H,
+                                   const chaplygin_options *opt, double *f3);
+
+/* (B.6) as printed (E20): n = floor(log[1 + (1 - C2^2)/C3 (2E/H^2 (1 +
+   (L0 + D+)^2) - 1)]/log C2^2), C1, C2 of (B.3), C3 of (B.7) for dir;
+   *reverses = 1 and *n for a value >= 0, *reverses = 0 for a negative one.
+   CHAPLYGIN_EDOM where undefined (H = 0, C3 = 0, C2^2 = 1, C2 = 0, the
+   logarithm of a number <= 0). */
+int chaplygin_printed_discrete_collisions_before_reversal
+  (const chaplygin_discrete *sys, int dir, double E, double H, int *reverses,
+   unsigned long *n);
+
+/* (B.8) as printed (E21): -Delta < L0 < 0 and
+   MIN{1/(1 + L0^2), 1/(1 + (L0 + Delta)^2)} < 2E/H^2 < 1. */
+int chaplygin_printed_discrete_two_turning_points (double L0, double Delta,
+                                                   double E, double H,
+                                                   int *two);
+
+/* (B.9) as printed (E22): E_n = E + C1 H^2 Sum_(j=0)^n C2^2j (n + 1
+   terms) = corrected E_n + C1 H_n^2; H_n = C2^n H as corrected. */
+int chaplygin_printed_discrete_energy_after (const chaplygin_discrete *sys,
+                                             int dir, double E, double H,
+                                             unsigned long n, double *En,
+                                             double *Hn);
+
+/* (B.16) as printed (E17): C2 = L0 (L0 + 1)/(L0 + (1 - D+))^2 on every
+   segment, reversing or not (reversal validated only). */
+int chaplygin_printed_massless_coefficient (double L0, double Dplus,
+                                            int reversal, double *C2);
+
 #ifdef __cplusplus
 }
 #endif

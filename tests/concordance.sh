@@ -1,9 +1,15 @@
 #!/bin/sh
-# concordance.sh -- keep doc/concordance.tsv honest (TAP output).
-# Checks: the header; every equation label 2.1 ... B.17 (with A.4) present
-# once and in order; every function named is exported by the built library;
-# every unit test named is a TCase in tests/*.c; every verification check
-# named has a program verification/NAME.c.
+# concordance.sh -- keep doc/concordance.tsv and doc/equations.txt honest
+# (TAP output).  Checks: the header; every equation label 2.1 ... B.17
+# (with A.4) present once and in order, in both files; per row: every
+# function named (implementing, or evaluating the printed form) is
+# exported by the built library and has an entry in the library reference
+# (doc/api*.texi) with an anchor and the generated @implements_ call that
+# links it back to the concordance; every unit test named is a TCase in
+# tests/*.c; every verification check named has a program
+# verification/NAME.c; every erratum named has an entry in doc/errata.texi,
+# and they are the errata that `chaplygin eq --list' gives for the label.
+# (tools/test-eq.sh evaluates the eq call of every row.)
 set -u
 top_srcdir=${top_srcdir:-.}
 top_builddir=${top_builddir:-.}
@@ -36,7 +42,7 @@ expected="$expected 4.1 A.1 A.2 A.3 A.4 A.5 A.6"
 i=1; while [ $i -le 17 ]; do expected="$expected B.$i"; i=$((i + 1)); done
 
 header=$(head -n 1 "$tsv")
-if [ "$header" = "$(printf 'equation\tfunction\tunit_test\tverification')" ]; then
+if [ "$header" = "$(printf 'equation\tfunction\tunit_test\tverification\terratum\tprinted_function\teq')" ]; then
   ok "header"
 else
   notok "header is '$header'"
@@ -49,17 +55,49 @@ else
   notok "labels are: $labels"
 fi
 
+eqlabels=$(sed -n 's/^@ //p' "$top_srcdir/doc/equations.txt" | tr '\n' ' ' | sed 's/ $//')
+if [ "$eqlabels" = "$expected" ]; then
+  ok "doc/equations.txt: all 43 labels, once each, in order"
+else
+  notok "doc/equations.txt labels are: $eqlabels"
+fi
+
+# The library reference: FUNCTION's @deftypefun line followed by its
+# @implements_FUNCTION{} call, and an @anchor{FUNCTION} before it.
+api=$(cat "$top_srcdir"/doc/api.texi "$top_srcdir"/doc/api-printed.texi)
+api_entry () {
+  echo "$api" | awk -v f="$1" '
+    prev ~ "^@anchor\\{" f "\\}$" && $0 ~ "^@deftypefun .*[ *]" f " \\(" { d = 1; prev = $0; next }
+    d == 1 { ok = ($0 == "@implements_" f "{}"); d = 0 }
+    { prev = $0 }
+    END { exit !ok }'
+}
+prog=$top_builddir/tools/chaplygin
+eqerrata=$("$prog" eq --list --csv | awk -F, 'NR > 1 { e = $NF; gsub(/ /, ",", e); print $1 "\t" e }')
+
 tab=$(printf '\t')
 tail -n +2 "$tsv" > concordance.rows.tmp
-while IFS="$tab" read -r eq fn ut ver; do
+while IFS="$tab" read -r eq fn ut ver err pf call; do
   msg=""
-  nf=$(printf '%s\n' "$eq$tab$fn$tab$ut$tab$ver" | awk -F '\t' '{ print NF }')
-  [ "$nf" -eq 4 ] || msg="$msg [row has $nf fields]"
-  if [ "$fn" != "-" ]; then
-    for f in $(echo "$fn" | tr ',' ' '); do
-      echo "$symbols" | grep -qx "$f" || msg="$msg [function $f not exported]"
+  nf=$(printf '%s\n' "$eq$tab$fn$tab$ut$tab$ver$tab$err$tab$pf$tab$call" | awk -F '\t' '{ print NF }')
+  [ "$nf" -eq 7 ] || msg="$msg [row has $nf fields]"
+  fns=$fn
+  case $pf in -|same|none) ;; *) fns="$fns,$pf" ;; esac
+  for f in $(echo "$fns" | tr ',' ' '); do
+    echo "$symbols" | grep -qx "$f" || msg="$msg [function $f not exported]"
+    api_entry "$f" || msg="$msg [no @anchor/@deftypefun/@implements_ entry for $f in doc/api*.texi]"
+  done
+  if [ "$err" = "-" ]; then
+    [ "$pf" = "-" ] || msg="$msg [printed_function without erratum]"
+  else
+    [ "$pf" != "-" ] || msg="$msg [erratum without printed_function]"
+    for e in $(echo "$err" | tr ',' ' '); do
+      grep -q "^@node Erratum $e\$" "$top_srcdir/doc/errata.texi" || msg="$msg [no erratum $e]"
     done
   fi
+  want=$(echo "$eqerrata" | awk -F '\t' -v l="$eq" '($1 "") == (l "") { print $2 }')
+  [ "$want" = "$err" ] || msg="$msg [errata '$err', chaplygin eq --list: '$want']"
+  [ -n "$call" ] || msg="$msg [no eq call]"
   if [ "$ut" != "-" ]; then
     for t in $(echo "$ut" | tr ',' ' '); do
       echo "$tcases" | grep -qx "$t" || msg="$msg [no TCase $t in tests/]"
@@ -70,7 +108,7 @@ while IFS="$tab" read -r eq fn ut ver; do
       [ -r "$top_srcdir/verification/$v.c" ] || msg="$msg [no verification/$v.c]"
     done
   fi
-  if [ -z "$msg" ]; then ok "($eq) $fn | $ut | $ver"; else notok "($eq)$msg"; fi
+  if [ -z "$msg" ]; then ok "($eq) $fn | $ut | $ver | $err | $pf"; else notok "($eq)$msg"; fi
 done < concordance.rows.tmp
 rm -f concordance.rows.tmp
 echo "1..$n"

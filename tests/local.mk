@@ -26,7 +26,8 @@ UNIT_CHECKS = \
 	tests/test_threads \
 	tests/test_extremes \
 	tests/test_far \
-	tests/test_alloc
+	tests/test_alloc \
+	tests/test_printed
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh
 
@@ -94,6 +95,11 @@ tests_test_far_LDADD = $(TEST_LDADD) -lquadmath
 tests_test_alloc_SOURCES = tests/test_alloc.c
 tests_test_alloc_CFLAGS = $(TEST_CFLAGS)
 tests_test_alloc_LDADD = $(TEST_LDADD)
+# the paper's printed forms (lib/printed.c): values against the printed
+# formulas written out in binary128, the errata's numbers, statuses
+tests_test_printed_SOURCES = tests/test_printed.c
+tests_test_printed_CFLAGS = $(TEST_CFLAGS)
+tests_test_printed_LDADD = $(TEST_LDADD) -lquadmath
 
 # ---- robustness: the tests under sanitizers and valgrind ----------------
 # Each builds the distribution directory in a directory of its own (as

@@ -26,6 +26,8 @@
 #include <string.h>
 
 #include "chaplygin.h"
+#include "eq.h"
+#include "number.h"
 #include "run.h"
 #include "scene.h"
 #include "sweep.h"
@@ -43,6 +45,7 @@ static const char usage_text[] =
   "Usage: chaplygin run SCENE.ini [-o FILE] [--compare] [--stats]\n"
   "       chaplygin sweep SCENE.ini [--shard i/N] [--threads N] [-o FILE]\n"
   "       chaplygin skate [OPTION...]\n"
+  "       chaplygin eq LABEL [NAME=VALUE...] [--csv] | eq --list [--csv]\n"
   "       chaplygin --help | -h\n"
   "       chaplygin --version\n"
   "\n"
@@ -58,6 +61,9 @@ static const char usage_text[] =
   "             3), in parallel or in shards ('chaplygin sweep --help')\n"
   "  skate      iterate the discrete skate's return map (B.3)/(B.4) from a\n"
   "             post-collision state given by options (below)\n"
+  "  eq         evaluate one numbered equation of the paper (3.10, A.2, B.16\n"
+  "             ...) at the inputs given, with the paper's printed form\n"
+  "             beside it where an erratum gives one ('chaplygin eq --help')\n"
   "\n"
   "Options of run:\n"
   "  -o FILE    write the CSV to FILE, created only once the scene is read\n"
@@ -66,7 +72,11 @@ static const char usage_text[] =
   "             and time evaluations, closed-form evaluations (smooth), path\n"
   "             quadratures (smooth)\n"
   "\n"
-  "Scene files ('man chaplygin' has the full reference), INI:\n"
+  "Numbers (scene keys, options, eq inputs): decimal or hex floats, or exact\n"
+  "rationals p/q, correctly rounded; integers in any of these forms (1e3).\n"
+  "\n"
+  "Scene files ('man chaplygin' has the full reference), INI; the scenes of\n"
+  "the paper's figures are installed in " CHAPLYGIN_SCENES_DIR ":\n"
   "  [scene]       model = discrete | smooth | massless  (required)\n"
   "                compare = smooth (discrete), title = TEXT\n"
   "  [parameters]  L0 (discrete, massless), Delta > 0 (discrete),\n"
@@ -127,7 +137,7 @@ static const char usage_text[] =
   "\n"
   "A scene with a [sweep] section prints the sweep's CSV (see sweep --help).\n"
   "\n"
-  "Options of skate (NUMBER: a finite real accepted by strtod):\n"
+  "Options of skate (NUMBER: a decimal or hex float, or an exact p/q):\n"
   "  --L0 NUMBER        mass centre ahead of the slot front       [1]\n"
   "  --Delta NUMBER     slot length, > 0                          [1/3]\n"
   "  --V NUMBER         initial velocity along the slot, != 0     [1]\n"
@@ -220,40 +230,6 @@ print_help (void)
   return finish_output ();
 }
 
-/* A finite double from the whole of TEXT; 0 on success, -1 otherwise. */
-static int
-parse_double (const char *text, double *out)
-{
-  char *end;
-  double x;
-
-  if (*text == '\0')
-    return -1;
-  errno = 0;
-  x = strtod (text, &end);
-  if (end == text || *end != '\0' || !isfinite (x))
-    return -1;
-  *out = x;
-  return 0;
-}
-
-/* An integer in [lo, hi] from the whole of TEXT; 0 on success, -1 otherwise. */
-static int
-parse_long (const char *text, long lo, long hi, long *out)
-{
-  char *end;
-  long x;
-
-  if (*text == '\0')
-    return -1;
-  errno = 0;
-  x = strtol (text, &end, 10);
-  if (end == text || *end != '\0' || errno == ERANGE || x < lo || x > hi)
-    return -1;
-  *out = x;
-  return 0;
-}
-
 static int
 parse_method (const char *text, chaplygin_method *out)
 {
@@ -279,7 +255,7 @@ set_option (skate_args *args, skate_option id, const char *name,
   switch (id)
     {
     case OPT_COLLISIONS:
-      if (parse_long (value, 0, COLLISIONS_MAX, &args->collisions) != 0)
+      if (number_integer (value, 0, COLLISIONS_MAX, &args->collisions) != 0)
         {
           fprintf (stderr, "chaplygin: --%s '%s': not an integer in "
                    "0..%ld\n", name, value, COLLISIONS_MAX);
@@ -303,10 +279,11 @@ set_option (skate_args *args, skate_option id, const char *name,
       break;
     }
 
-  if (parse_double (value, &x) != 0)
+  int r = number_real (value, &x);
+  if (r != NUMBER_OK)
     {
-      fprintf (stderr, "chaplygin: --%s '%s': not a finite number\n", name,
-               value);
+      fprintf (stderr, "chaplygin: --%s '%s' %s\n", name, value,
+               number_problem (r));
       return EXIT_USAGE;
     }
 
@@ -648,6 +625,8 @@ main (int argc, char **argv)
     return run_scene (argc - 2, argv + 2);
   if (strcmp (cmd, "sweep") == 0)
     return sweep_main (argc - 2, argv + 2);
+  if (strcmp (cmd, "eq") == 0)
+    return eq_main (argc - 2, argv + 2);
 
   if (cmd[0] == '-')
     fprintf (stderr, "chaplygin: unknown option '%s'\n", cmd);

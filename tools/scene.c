@@ -19,11 +19,11 @@
      header.
    - An indented line after a key continues that key's value (inih's
      multi-line values): it is an error, as the key given twice is.
-   - Numbers: decimal only, i.e. digits, sign, point and exponent, read by
-     strtod (so exactly as strtod reads them; the C locale is assumed); no
-     hexadecimal, NaN or infinity, no empty value.  A value that overflows
-     is out of range; one that underflows is its rounding (0 or subnormal).
-     Integers: decimal digits with an optional sign, read by strtol.
+   - Numbers as number.h reads them: decimal or hexadecimal constants
+     (strtod, C locale) and exact rationals p/q, correctly rounded; no NaN
+     or infinity, no empty value.  A value that overflows is out of range;
+     one that underflows is its rounding (0 or subnormal).  Integers: any
+     number whose value is an exact integer (1000, 1e3, 0x3e8).
    - Words and output names are case-sensitive; outputs and y are lists
      separated by commas, with spaces or tabs around items allowed.
    - compare takes the single value smooth.  A title is at most 127 bytes,
@@ -64,6 +64,7 @@
 
 #include <ini.h>
 
+#include "number.h"
 #include "scene.h"
 
 #if defined __GNUC__
@@ -336,45 +337,6 @@ scene_reader (char *buf, int size, void *stream)
 /* Values                                                            */
 /* ---------------------------------------------------------------- */
 
-/* TEXT as a finite decimal number into *X: 0, -1 not a number, -2 not
-   finite (overflow). */
-static int
-parse_number (const char *text, double *x)
-{
-  char *end;
-  double v;
-
-  if (!*text || text[strspn (text, "0123456789+-.eE")] != '\0')
-    return -1;
-  v = strtod (text, &end);
-  if (end == text || *end != '\0')
-    return -1;
-  if (!isfinite (v))
-    return -2;
-  *x = v;
-  return 0;
-}
-
-/* TEXT as a decimal integer into *X: 0, -1 not an integer, -2 out of the
-   range of long. */
-static int
-parse_integer (const char *text, long *x)
-{
-  char *end;
-  long v;
-
-  if (!*text || text[strspn (text, "0123456789+-")] != '\0')
-    return -1;
-  errno = 0;
-  v = strtol (text, &end, 10);
-  if (end == text || *end != '\0')
-    return -1;
-  if (errno == ERANGE)
-    return -2;
-  *x = v;
-  return 0;
-}
-
 /* The index of WORD in NAMES[0..N-1], or -1. */
 static int
 find_word (const char *word, const char *const *names, int n)
@@ -413,38 +375,41 @@ next_item (const char **pos, char *item, size_t size)
   return 0;
 }
 
-/* Reads the number VALUE of key K into *X. */
+/* Reads the number VALUE of key K into *X (number.h). */
 static int
 read_number (parse_ctx *c, int k, const char *value, double *x)
 {
   char buf[SHOWN_SIZE];
-  int r = parse_number (value, x);
+  int r = number_real (value, x);
 
-  if (r == -1)
-    fail_key (c, k, c->lineno, "value '%s' is not a number",
-              shown (buf, sizeof buf, value));
-  else if (r == -2)
+  if (r == NUMBER_OK)
+    return 0;
+  if (r == NUMBER_RANGE)
     fail_key (c, k, c->lineno, "value '%s' is out of range (not a finite "
               "double)", shown (buf, sizeof buf, value));
-  return r == 0 ? 0 : -1;
+  else
+    fail_key (c, k, c->lineno, "value '%s' %s",
+              shown (buf, sizeof buf, value), number_problem (r));
+  return -1;
 }
 
-/* Reads the integer VALUE of key K into *X, LO <= x <= HI. */
+/* Reads the integer VALUE of key K into *X, LO <= x <= HI (number.h: an
+   exact integer in any form of a number, 1e3 among them). */
 static int
 read_integer (parse_ctx *c, int k, const char *value, long lo, long hi,
               long *x)
 {
   char buf[SHOWN_SIZE];
-  int r = parse_integer (value, x);
+  int r = number_integer (value, lo, hi, x);
 
-  if (r == -1)
-    fail_key (c, k, c->lineno, "value '%s' is not an integer",
-              shown (buf, sizeof buf, value));
-  else if (r == -2 || *x < lo || *x > hi)
+  if (r == NUMBER_OK)
+    return 0;
+  if (r == NUMBER_RANGE)
     fail_key (c, k, c->lineno, "value '%s' is out of range (%ld..%ld)",
               shown (buf, sizeof buf, value), lo, hi);
   else
-    return 0;
+    fail_key (c, k, c->lineno, "value '%s' %s",
+              shown (buf, sizeof buf, value), number_problem (r));
   return -1;
 }
 
@@ -525,14 +490,14 @@ read_y_list (parse_ctx *c, const char *value)
                     SCENE_SWEEP_YMAX);
           return -1;
         }
-      r = parse_number (item, &y);
-      if (r != 0 || y < 0)
+      r = number_real (item, &y);
+      if (r != NUMBER_OK || y < 0)
         {
-          fail_key (c, K_Y, c->lineno, "value '%s' (item %zu) is %s",
+          fail_key (c, K_Y, c->lineno, "value '%s' (item %zu) %s",
                     shown (buf, sizeof buf, item), n + 1,
-                    r == -1 ? "not a number"
-                    : r == -2 ? "out of range (not a finite double)"
-                    : "negative (y = (1/Delta)^2 >= 0)");
+                    r == NUMBER_RANGE ? "is out of range (not a finite double)"
+                    : r != NUMBER_OK ? number_problem (r)
+                    : "is negative (y = (1/Delta)^2 >= 0)");
           return -1;
         }
       c->sc.y[n++] = y;
@@ -680,7 +645,7 @@ read_value (parse_ctx *c, int k, const char *value)
     case K_DIR:
       {
         long d = 0;
-        if (parse_integer (value, &d) != 0 || (d != 1 && d != -1))
+        if (number_integer (value, -1, 1, &d) != NUMBER_OK || d == 0)
           {
             fail_key (c, k, c->lineno, "value '%s' is not +1 or -1",
                       shown (buf, sizeof buf, value));

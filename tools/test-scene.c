@@ -139,6 +139,25 @@ START_TEST (discrete_defaults)
 }
 END_TEST
 
+/* The forms of tools/number.h: exact rationals correctly rounded (against
+   hexadecimal constants), hexadecimal floats, integers written as reals. */
+START_TEST (number_forms)
+{
+  scene sc;
+  parse_ok ("[scene]\nmodel = discrete\n"
+            "[parameters]\nL0 = -22/7\nDelta = 1/3\n"
+            "[initial]\nV = 0x1.8p-1\nOmega = -1/1024\ntheta = 1e-400\n"
+            "[run]\ncollisions = 1e3\nsamples = 0x10\n", &sc);
+  ck_assert (sc.Delta == 0x1.5555555555555p-2);
+  ck_assert (sc.L0 == -0x1.9249249249249p+1);
+  ck_assert (sc.V == 0.75);
+  ck_assert (sc.Omega == -0x1p-10);
+  ck_assert (sc.theta == 0.0);
+  ck_assert_int_eq (sc.collisions, 1000);
+  ck_assert_int_eq (sc.samples, 16);
+}
+END_TEST
+
 START_TEST (discrete_all_keys)
 {
   /* Every key of a discrete scene with its companion; numbers in forms
@@ -449,8 +468,8 @@ END_TEST
 START_TEST (numbers)
 {
   static const char *const bad[] = {
-    "abc", "nan", "NaN", "inf", "-infinity", "0x1p3", "1 2", "1;x", "1e",
-    ".", "--1", "1,5", "1e+", "e5", "+"
+    "abc", "nan", "NaN", "inf", "-infinity", "0x1p", "1 2", "1;x", "1e",
+    ".", "--1", "1,5", "1e+", "e5", "+", "1/", "/3", "1/-3", "1.5/3"
   };
   char text[512], what[128];
   size_t i;
@@ -478,8 +497,10 @@ START_TEST (integers)
 {
   expect_error (DISCRETE_HEAD "[run]\ncollisions = 1.5\n", 4,
                 "[run] collisions", "value '1.5' is not an integer");
-  expect_error (DISCRETE_HEAD "[run]\ncollisions = 1e6\n", 4,
+  expect_error (DISCRETE_HEAD "[run]\ncollisions = 1e-6\n", 4,
                 "[run] collisions", "not an integer");
+  expect_error (DISCRETE_HEAD "[run]\ncollisions = 7/2\n", 4,
+                "[run] collisions", "value '7/2' is not an integer");
   expect_error (DISCRETE_HEAD "[run]\ncollisions = -1\n", 4,
                 "[run] collisions", "out of range (0..1000000000)");
   expect_error (DISCRETE_HEAD "[run]\ncollisions = 1000000001\n", 4,
@@ -488,8 +509,10 @@ START_TEST (integers)
                 4, "[run] collisions", "out of range");
   expect_error (DISCRETE "samples = 1000001\n", 11, "[run] samples",
                 "out of range (0..1000000)");
-  expect_error (DISCRETE "samples = 0x10\n", 11, "[run] samples",
+  expect_error (DISCRETE "samples = 0x1.8p0\n", 11, "[run] samples",
                 "not an integer");
+  expect_error (DISCRETE "samples = 1/0\n", 11, "[run] samples",
+                "divides by zero");
 }
 END_TEST
 
@@ -684,7 +707,7 @@ START_TEST (messages)
   ck_assert_int_eq (parse (DISCRETE "[initial]\ntheta = abc\n", &sc, err),
                     -1);
   ck_assert_str_eq (err, "t.ini:12: [initial] theta: value 'abc' is not a "
-                    "number");
+                    "number (a decimal or hex float, or p/q)");
   ck_assert_int_eq (parse (DISCRETE "x\n", &sc, err), -1);
   ck_assert_str_eq (err, "t.ini:11: syntax error (expected [section], "
                     "key = value or a comment)");
@@ -799,6 +822,7 @@ main (void)
 
   tcase_add_test (valid, discrete_defaults);
   tcase_add_test (valid, discrete_all_keys);
+  tcase_add_test (valid, number_forms);
   tcase_add_test (valid, smooth_defaults);
   tcase_add_test (valid, massless);
   tcase_add_test (valid, sweeps);

@@ -889,6 +889,22 @@ static const char *const qtexi[NQ] = {
   "(3.7)/(B.3)/(B.4): @math{C_2}, @code{chaplygin_discrete_coefficients}"
 };
 
+/* The anchors of the tables of qtexi, for cross-references from the
+   concordance chapter (doc/concordance.awk reads them). */
+static const char *const qanchor[NQ] = {
+  "Accuracy of the heading increment",
+  "Accuracy of the elapsed time",
+  "Accuracy of the next energy",
+  "Accuracy of the next momentum",
+  "Accuracy of the next heading",
+  "Accuracy of the next time",
+  "Accuracy of the turning point",
+  "Accuracy of sigma4",
+  "Accuracy of xi4",
+  "Accuracy of C1",
+  "Accuracy of C2"
+};
+
 static const char *const sname[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny Delta", "huge Delta",
   "large |L0|", "tiny |L0|", "extreme |L0|", "tiny H", "reversal at an ulp",
@@ -2151,7 +2167,7 @@ write_table (const char *path, int level)
 "\n", level, level == 2 ? "CHAPLYGIN_VERIFY_LEVEL=2 " : "");
   for (int q = 0; q < NQ; q++)
     {
-      fprintf (f, "@subheading %s\n\n", qtexi[q]);
+      fprintf (f, "@anchor{%s}\n@subheading %s\n\n", qanchor[q], qtexi[q]);
       fprintf (f, "@multitable @columnfractions .28 .14 .2 .18 .2\n"
                "@headitem Data set @tab Points @tab Max ulps @tab Mean ulps "
                "@tab Max @math{kappa}\n");

@@ -1,0 +1,258 @@
+/* test-number.c -- tools/number.c: the numbers a user writes.
+
+   References come from other routes than the one under test: rationals
+   against hexadecimal constants written out by hand, or against glibc's
+   strtod of their exact (terminating) or 40-digit decimal expansions;
+   strtod's own forms against the hexadecimal constants of the C compiler. */
+#include <config.h>
+
+#include <check.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "number.h"
+
+/* TEXT must read as exactly WANT (same bits, so -0 differs from +0). */
+static void
+real_is (const char *text, double want)
+{
+  double x = 12345.678;
+  int s = number_real (text, &x);
+  ck_assert_msg (s == NUMBER_OK, "'%s': status %d", text, s);
+  ck_assert_msg (memcmp (&x, &want, sizeof x) == 0,
+                 "'%s' read as %a, expected %a", text, x, want);
+}
+
+/* TEXT must fail with STATUS and leave the output untouched. */
+static void
+real_fails (const char *text, int status)
+{
+  double x = 12345.678;
+  int s = number_real (text, &x);
+  ck_assert_msg (s == status, "'%s': status %d, expected %d", text, s,
+                 status);
+  ck_assert_msg (x == 12345.678, "'%s': output written on failure", text);
+}
+
+static void
+integer_is (const char *text, long lo, long hi, long want)
+{
+  long n = -7;
+  int s = number_integer (text, lo, hi, &n);
+  ck_assert_msg (s == NUMBER_OK && n == want, "'%s': status %d, %ld", text,
+                 s, n);
+}
+
+static void
+integer_fails (const char *text, long lo, long hi, int status)
+{
+  long n = -7;
+  int s = number_integer (text, lo, hi, &n);
+  ck_assert_msg (s == status && n == -7, "'%s': status %d (expected %d), "
+                 "%ld", text, s, status, n);
+}
+
+/* A string of ONE followed by ZEROS zeros (a power of ten). */
+static char *
+power_of_ten (const char *one, int zeros)
+{
+  size_t n = strlen (one);
+  char *s = malloc (n + (size_t) zeros + 1);
+  ck_assert_ptr_nonnull (s);
+  memcpy (s, one, n);
+  memset (s + n, '0', (size_t) zeros);
+  s[n + (size_t) zeros] = '\0';
+  return s;
+}
+
+START_TEST (constants)
+{
+  real_is ("0.1", 0x1.999999999999ap-4);
+  real_is ("-2.5e-3", -0x1.47ae147ae147bp-9);
+  real_is ("+.5", 0.5);
+  real_is ("5.", 5.0);
+  real_is ("-0", -0.0);
+  real_is ("0x1.8p1", 3.0);
+  real_is ("0X10", 16.0);
+  real_is ("0x1p-1074", 0x1p-1074);
+  /* Underflow is the rounding, as strtod gives it. */
+  real_is ("1e-400", 0.0);
+  real_is ("4.9406564584124654e-324", 0x1p-1074);
+  real_is ("1.7976931348623157e308", DBL_MAX);
+  real_fails ("1e309", NUMBER_RANGE);
+  real_fails ("-1e999", NUMBER_RANGE);
+  real_fails ("0x1p1024", NUMBER_RANGE);
+}
+END_TEST
+
+START_TEST (not_numbers)
+{
+  static const char *const bad[] = {
+    "", "nan", "NaN", "inf", "-infinity", "1e", "e5", ".", "+", "--1",
+    "1 2", " 1", "1 ", "1,5", "0x", "1_000", "1;x", "abc", "0x1g", "1e+",
+    "/3", "1/", "1/3/4", "1/-3", "1/+3", "+-1/3", "1.5/3", "1/3.0",
+    "0x10/3", "1e3/7", "1 /3", "1/ 3", "a/b"
+  };
+  size_t i;
+  for (i = 0; i < sizeof bad / sizeof *bad; i++)
+    real_fails (bad[i], NUMBER_SYNTAX);
+  real_fails ("1/0", NUMBER_ZERO_DIV);
+  real_fails ("-7/000", NUMBER_ZERO_DIV);
+}
+END_TEST
+
+START_TEST (rationals)
+{
+  char *p, *q, *text;
+
+  real_is ("1/3", 0x1.5555555555555p-2);
+  real_is ("2/3", 0x1.5555555555555p-1);
+  real_is ("-1/3", -0x1.5555555555555p-2);
+  real_is ("+1/3", 0x1.5555555555555p-2);
+  real_is ("0/5", 0.0);
+  real_is ("-0/5", -0.0);
+  real_is ("7/1", 7.0);
+  real_is ("0021/0007", 3.0);
+  /* A 40-digit expansion is far inside the rounding of -22/7. */
+  {
+    double want = strtod ("-3.142857142857142857142857142857142857143",
+                          NULL);
+    real_is ("-22/7", want);
+  }
+  /* Where the double division of the rounded P and Q is wrong: P = 2^53 + 1
+     is not a double, and P/3 = 3002399751580331 exactly. */
+  real_is ("9007199254740993/3", 3002399751580331.0);
+  ck_assert (9007199254740993.0 / 3.0 != 3002399751580331.0);
+  /* Ties to even: 2^53 + 1 and 2^53 + 3 lie halfway between doubles. */
+  real_is ("9007199254740993/1", 0x1p53);
+  real_is ("9007199254740995/1", 0x1p53 + 4.0);
+  /* Terminating expansions: the same value through strtod. */
+  real_is ("1/1024", 0x1p-10);
+  real_is ("123456789/1000000", strtod ("123.456789", NULL));
+  real_is ("-314159265358979323846264338327950288/100000000000000000000000000000000000",
+           strtod ("-3.14159265358979323846264338327950288", NULL));
+
+  /* Huge numerators and denominators, of any length. */
+  p = power_of_ten ("1", 300);
+  q = power_of_ten ("3", 300);
+  text = malloc (strlen (p) + strlen (q) + 2);
+  ck_assert_ptr_nonnull (text);
+  sprintf (text, "%s/%s", p, q);
+  real_is (text, 0x1.5555555555555p-2);
+  free (text);
+  free (q);
+  free (p);
+
+  /* Subnormal and underflowing results, against strtod of 1e-320 etc. */
+  q = power_of_ten ("1", 320);
+  text = malloc (strlen (q) + 3);
+  ck_assert_ptr_nonnull (text);
+  sprintf (text, "1/%s", q);
+  real_is (text, strtod ("1e-320", NULL));
+  free (text);
+  free (q);
+  q = power_of_ten ("1", 324);
+  text = malloc (strlen (q) + 3);
+  ck_assert_ptr_nonnull (text);
+  sprintf (text, "3/%s", q);
+  real_is (text, strtod ("3e-324", NULL));
+  ck_assert (strtod ("3e-324", NULL) == 0x1p-1074);
+  sprintf (text, "2/%s", q);
+  real_is (text, 0.0);            /* below half the smallest subnormal */
+  sprintf (text, "-2/%s", q);
+  real_is (text, -0.0);
+  free (text);
+  free (q);
+
+  /* Overflow. */
+  p = power_of_ten ("1", 310);
+  text = malloc (strlen (p) + 3);
+  ck_assert_ptr_nonnull (text);
+  sprintf (text, "%s/1", p);
+  real_fails (text, NUMBER_RANGE);
+  sprintf (text, "-%s/7", p);
+  real_fails (text, NUMBER_RANGE);
+  free (text);
+  free (p);
+  /* DBL_MAX exactly; DBL_MAX + ulp/2 - 1, which rounds to it; and
+     DBL_MAX + ulp/2, the tie, which rounds to even: beyond (2^1024). */
+  real_is ("179769313486231570814527423731704356798070567525844996598917"
+           "476803157260780028538760589558632766878171540458953514382464"
+           "234321326889464182768467546703537516986049910576551282076245"
+           "490090389328944075868508455133942304583236903222948165808559"
+           "332123348274797826204144723168738177180919299881250404026184"
+           "124858368/1", DBL_MAX);
+  real_is ("179769313486231580793728971405303415079934132710037826936173"
+           "778980444968292764750946649017977587207096330286416692887910"
+           "946555547851940402630657488671505820681908902000708383676273"
+           "854845817711531764475730270069855571366959622842914819860834"
+           "936475292719074168444365510704342711559699508093042880177904"
+           "174497791/1", DBL_MAX);
+  real_fails ("179769313486231580793728971405303415079934132710037826936173"
+              "778980444968292764750946649017977587207096330286416692887910"
+              "946555547851940402630657488671505820681908902000708383676273"
+              "854845817711531764475730270069855571366959622842914819860834"
+              "936475292719074168444365510704342711559699508093042880177904"
+              "174497792/1", NUMBER_RANGE);
+}
+END_TEST
+
+START_TEST (integers)
+{
+  integer_is ("1000", 0, 1000000, 1000);
+  integer_is ("1e3", 0, 1000000, 1000);
+  integer_is ("0x3e8", 0, 1000000, 1000);
+  integer_is ("3000/3", 0, 1000000, 1000);
+  integer_is ("-1", -1, 1, -1);
+  integer_is ("+1", -1, 1, 1);
+  integer_is ("1e9", 0, 1000000000, 1000000000);
+  integer_fails ("1.5", 0, 10, NUMBER_NOT_INTEGER);
+  integer_fails ("1/3", 0, 10, NUMBER_NOT_INTEGER);
+  integer_fails ("1e-3", 0, 10, NUMBER_NOT_INTEGER);
+  integer_fails ("11", 0, 10, NUMBER_RANGE);
+  integer_fails ("-1", 0, 10, NUMBER_RANGE);
+  integer_fails ("1e400", 0, 10, NUMBER_RANGE);
+  integer_fails ("abc", 0, 10, NUMBER_SYNTAX);
+  /* 2^53 + 1 reads as 2^53: integers from 2^53 on are refused. */
+  integer_fails ("9007199254740993", 0, LONG_MAX, NUMBER_RANGE);
+  integer_fails ("9007199254740992", 0, LONG_MAX, NUMBER_RANGE);
+  integer_is ("9007199254740991", 0, LONG_MAX, 9007199254740991L);
+}
+END_TEST
+
+START_TEST (problems)
+{
+  ck_assert_str_eq (number_problem (NUMBER_SYNTAX),
+                    "is not a number (a decimal or hex float, or p/q)");
+  ck_assert_str_eq (number_problem (NUMBER_RANGE), "is out of range");
+  ck_assert_str_eq (number_problem (NUMBER_ZERO_DIV), "divides by zero");
+  ck_assert_str_eq (number_problem (NUMBER_NOT_INTEGER), "is not an integer");
+  ck_assert_str_eq (number_problem (NUMBER_OK), "is a number");
+  ck_assert_str_eq (number_problem (99), "is not a number");
+}
+END_TEST
+
+int
+main (void)
+{
+  Suite *s = suite_create ("number");
+  TCase *tc = tcase_create ("number");
+  SRunner *sr;
+  int failed;
+
+  tcase_add_test (tc, constants);
+  tcase_add_test (tc, not_numbers);
+  tcase_add_test (tc, rationals);
+  tcase_add_test (tc, integers);
+  tcase_add_test (tc, problems);
+  suite_add_tcase (s, tc);
+  sr = srunner_create (s);
+  srunner_run_all (sr, CK_NORMAL);
+  failed = srunner_ntests_failed (sr);
+  srunner_free (sr);
+  return failed == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
