@@ -92,8 +92,20 @@ CLEANFILES += doc/one-page.html doc/html.stamp
 # `make installcheck' checks the installed one.
 check_DATA = doc/html.stamp
 TESTS += doc/check-html.sh
-installcheck-local: installcheck-html
+# `make installcheck' also runs the installed man page's EXAMPLES with the
+# installed program and scenes (tools/installcheck-examples.sh).
+installcheck-local: installcheck-html installcheck-examples
 installcheck-html:
 	CHAPLYGIN_HTML_DIR="$(DESTDIR)$(htmldir)/chaplygin.html" \
-	  top_srcdir="$(srcdir)" $(SHELL) $(srcdir)/doc/check-html.sh
-.PHONY: installcheck-html
+	  top_srcdir="$(srcdir)" $(SHELL) $(srcdir)/doc/check-html.sh \
+	  | tee installcheck-html.log; ! grep -q '^not ok\|^Bail out' \
+	  installcheck-html.log
+installcheck-examples:
+	CHAPLYGIN_MAN="$(DESTDIR)$(man1dir)/chaplygin.1" \
+	  CHAPLYGIN_BINDIR="$(bindir)" CHAPLYGIN_LIBDIR="$(libdir)" \
+	  CHAPLYGIN_DATADIR="$(pkgdatadir)" CHAPLYGIN_DESTDIR="$(DESTDIR)" \
+	  $(SHELL) $(srcdir)/tools/installcheck-examples.sh \
+	  | tee installcheck-examples.log; ! grep -q '^not ok' \
+	  installcheck-examples.log
+.PHONY: installcheck-html installcheck-examples
+CLEANFILES += installcheck-html.log installcheck-examples.log
