@@ -84,7 +84,6 @@ install-html-local: doc/html.stamp
 # `make install' installs the HTML manual too: it is the edition most
 # readers open (figures, links), not only the Info one.
 install-data-local: install-html
-uninstall-local: uninstall-html
 CLEANFILES += doc/one-page.html doc/html.stamp
 
 # `make check' builds the HTML manual and checks that every image and
