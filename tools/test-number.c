@@ -156,7 +156,7 @@ START_TEST (rationals)
   free (text);
   free (q);
   q = power_of_ten ("1", 324);
-  text = malloc (strlen (q) + 3);
+  text = malloc (strlen (q) + 4);       /* "-2/" q NUL */
   ck_assert_ptr_nonnull (text);
   sprintf (text, "3/%s", q);
   real_is (text, strtod ("3e-324", NULL));
@@ -170,7 +170,7 @@ START_TEST (rationals)
 
   /* Overflow. */
   p = power_of_ten ("1", 310);
-  text = malloc (strlen (p) + 3);
+  text = malloc (strlen (p) + 4);
   ck_assert_ptr_nonnull (text);
   sprintf (text, "%s/1", p);
   real_fails (text, NUMBER_RANGE);
