@@ -1,0 +1,34 @@
+## lib/local.mk -- the library.
+# All code goes into a convenience library that the tests link statically
+# (so they can test internal helpers); the installed shared library exports
+# only the public chaplygin_* symbols.
+noinst_LTLIBRARIES = lib/libchaplygin-core.la
+lib_libchaplygin_core_la_SOURCES = \
+	lib/internal.h \
+	lib/status.c \
+	lib/units.c \
+	lib/smooth.c \
+	lib/discrete.c \
+	lib/flow.c \
+	lib/map.c \
+	lib/ellint.c \
+	lib/quad.c \
+	lib/ode.c \
+	lib/stability.c \
+	lib/sweep.c \
+	lib/fate.c \
+	lib/massless.c \
+	lib/reversal.c \
+	lib/energy.c \
+	lib/far.c \
+	lib/printed.c
+lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
+
+lib_LTLIBRARIES = lib/libchaplygin.la
+lib_libchaplygin_la_SOURCES =
+lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
+lib_libchaplygin_la_LDFLAGS = -version-info 0:0:0 -export-symbols-regex '^chaplygin_'
+include_HEADERS = lib/chaplygin.h
+pkgconfig_DATA = chaplygin.pc
+
