@@ -27,20 +27,7 @@ chaplygin_discrete_field (double L0, const double q[4], double dq[4])
 {
   if (!q || !dq)
     return CHAPLYGIN_EINVAL;
-  if (!isfinite (L0) || !chp_finite4 (q[0], q[1], q[2], q[3]))
-    return CHAPLYGIN_EDOM;
-  double l = L0 + q[CHAPLYGIN_D];
-  double V = q[CHAPLYGIN_V], Om = q[CHAPLYGIN_OMEGA];
-  double r[4];
-  r[CHAPLYGIN_D] = V;
-  r[CHAPLYGIN_V] = l * Om * Om;
-  r[CHAPLYGIN_THETA] = Om;
-  r[CHAPLYGIN_OMEGA] = -2.0 * chp_L_over_one_plus_sq (l) * V * Om;
-  if (!chp_finite4 (r[0], r[1], r[2], r[3]))
-    return CHAPLYGIN_ERANGE;
-  for (int i = 0; i < 4; i++)
-    dq[i] = r[i];
-  return CHAPLYGIN_SUCCESS;
+  return chp_field (L0, q, dq);
 }
 
 /* chaplygin_discrete_energy: (3.3)
@@ -148,34 +135,6 @@ chaplygin_discrete_collide (double L0, double Delta, const double qminus[4],
   return CHAPLYGIN_SUCCESS;
 }
 
-/* The (3.7) coefficients for the collision at which the peg leaves Dminus:
-   E+ = E- + C1 H-^2, H+ = C2 H-, with b = L0 + D-, b' = L0 + Delta - D-:
-   C1 = -Delta^2 / (2 (1 + b^2)^2 (1 + b'^2)),  C2 = (1 + b b')/(1 + b^2).
-   C1 is formed as -t^2/2, t = (Delta/(1 + b^2))/sqrt(1 + b'^2), so that no
-   intermediate overflows while C1 is representable. */
-void
-chp_collision_coefficients (double L0, double Delta, double Dminus,
-                            double *C1, double *C2)
-{
-  double b = L0 + Dminus, bp = L0 + (Delta - Dminus);
-  double t = (Delta / chp_one_plus_sq (b)) / hypot (1.0, bp);
-  *C1 = -0.5 * t * t;
-  *C2 = chp_collision_ratio (L0, Delta, b, bp);
-}
-
-/* The energy just after a collision: V-^2/2 + H+^2/(2 (1 + l+^2)), with
-   V-^2 = 2E g-/(1 + l-^2) (g- = (1 + l-^2) V-^2/(2E) at the end the peg
-   leaves), which equals E + C1 H^2 of (3.7) as a sum of nonnegative terms;
-   never above E (C1 <= 0): where the collision takes less than an ulp the
-   sum may round above E, and E itself is then the nearer value. */
-double
-chp_post_collision_energy (double E, double g_minus, double l_minus,
-                           double H_plus, double l_plus)
-{
-  return fmin (E * (g_minus / chp_one_plus_sq (l_minus))
-               + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
-}
-
 /* chaplygin_discrete_collide_eh: (3.7)
        D+ = Delta - D-,
        E+ = E- - Delta^2 H-^2 / (2 [1 + (L0 + D-)^2]^2 [1 + (L0 + Delta - D-)^2]),
@@ -217,14 +176,14 @@ chaplygin_discrete_collide_eh (double L0, double Delta,
       /* far (lib/far.c): the collision of the exactly scaled system */
       chp_far f;
       double ps[4], qs[4];
-      CHP_TRY (chp_far_init (L0, Delta, &f));
-      ps[CHAPLYGIN_D] = Dm == 0.0 ? 0.0 : f.Delta;
+      CHP_TRY (chp_far_open (L0, Delta, &f));
+      ps[CHAPLYGIN_D] = Dm == 0.0 ? 0.0 : f.sys.Delta;
       ps[CHAPLYGIN_THETA] = pminus[CHAPLYGIN_THETA];
-      CHP_TRY (chp_far_eh (&f, E, H, 1, &ps[CHAPLYGIN_E],
-                           &ps[CHAPLYGIN_H]));
-      CHP_TRY (chaplygin_discrete_collide_eh (f.L0, f.Delta, ps, qs));
-      Ep = ldexp (qs[CHAPLYGIN_E], -2 * f.m);
-      Hp = ldexp (qs[CHAPLYGIN_H], f.k - f.m - f.j);
+      CHP_TRY (chp_far_state (&f, E, H, 1, &ps[CHAPLYGIN_E],
+                              &ps[CHAPLYGIN_H]));
+      CHP_TRY (chaplygin_discrete_collide_eh (f.sys.L0, f.sys.Delta, ps, qs));
+      Ep = chp_far_out (&f, CHP_Q_ENERGY, qs[CHAPLYGIN_E]);
+      Hp = chp_far_out (&f, CHP_Q_MOMENTUM, qs[CHAPLYGIN_H]);
     }
   else
     {

@@ -144,8 +144,8 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_quartic_interval: with P(t) = (t^2 + p)(t^2 + q), p = sp^2, q = sq^2,
-   pmq = p - q > 0 (passed separately so that it keeps its relative accuracy)
+/* chp_quartic_interval: with P(t) = (t^2 + p)(t^2 + q), p = sqrt_p^2, q = sqrt_q^2,
+   p_minus_q = p - q > 0 (passed separately so that it keeps its relative accuracy)
    and 0 <= y <= x,
        *F = sqrt(p) Int_y^x dt/sqrt(P(t)),
        *T = Int_y^x sqrt((t^2 + p)/(t^2 + q)) dt.
@@ -179,7 +179,7 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
    Accuracy: within 2 eps of 40-digit quadrature on the reference set
    (manual, "Speed and accuracy").  Errors from chp_rf/chp_rd are passed on. */
 int
-chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
+chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y, double x,
                       double dxy, chaplygin_precision prec, double *F,
                       double *T)
 {
@@ -191,32 +191,32 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
         *T = 0.0;
       return CHAPLYGIN_SUCCESS;
     }
-  if (y == 0.0 && sq == 0.0)
+  if (y == 0.0 && sqrt_q == 0.0)
     return CHAPLYGIN_ESPIN;
 
   /* Everything below is scale invariant (degree 0 in t, sqrt p, sqrt q)
-     except dxy and pmq/sp, which carry the dimension of T; so all of it is
+     except dxy and p_minus_q/sqrt_p, which carry the dimension of T; so all of it is
      formed from the arguments as given, and only the products inside
      tan(mu) are evaluated on a copy scaled by a power of two. */
-  const double ax = hypot (x, sp), bx = hypot (x, sq);
-  const double ay = hypot (y, sp), by = hypot (y, sq);
+  const double ax = hypot (x, sqrt_p), bx = hypot (x, sqrt_q);
+  const double ay = hypot (y, sqrt_p), by = hypot (y, sqrt_q);
   double s;                     /* tan(mu) */
   if (y == 0.0)
-    s = x / sq;                 /* may be +Inf: mu = pi/2, the complete integral */
-  else if (fmax (x, sp) <= 0x1p250)
+    s = x / sqrt_q;                 /* may be +Inf: mu = pi/2, the complete integral */
+  else if (fmax (x, sqrt_p) <= 0x1p250)
     {
-      /* dxy (x + y) sp / (x ay by + y ax bx), with the denominator divided
-         by x + y (a weighted mean of ay by and ax bx, both >= sp sq > 0 or
+      /* dxy (x + y) sqrt_p / (x ay by + y ax bx), with the denominator divided
+         by x + y (a weighted mean of ay by and ax bx, both >= sqrt_p sqrt_q > 0 or
          >= y^2), so that tiny x, y, dxy do not underflow in a product */
       double wx = x / (x + y), wy = y / (x + y);
-      s = dxy * sp / (wx * (ay * by) + wy * (ax * bx));
+      s = dxy * sqrt_p / (wx * (ay * by) + wy * (ax * bx));
     }
   else
     {
       int e;
-      frexp (fmax (x, sp), &e);
+      frexp (fmax (x, sqrt_p), &e);
       double xs = ldexp (x, -e), ys = ldexp (y, -e), ds = ldexp (dxy, -e);
-      double ps = ldexp (sp, -e), qs = ldexp (sq, -e);
+      double ps = ldexp (sqrt_p, -e), qs = ldexp (sqrt_q, -e);
       s = ds * (xs + ys) * ps / (xs * (hypot (ys, ps) * hypot (ys, qs))
                                  + ys * (hypot (xs, ps) * hypot (xs, qs)));
     }
@@ -230,8 +230,8 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
       sn = s * c;
     }
   const double c2 = c * c;
-  const double kp2 = (sq / sp) * (sq / sp);     /* k'^2 = q/p */
-  const double Y = c2 + kp2 * sn * sn;          /* 1 - k^2 sin^2(mu) */
+  const double kprime2 = (sqrt_q / sqrt_p) * (sqrt_q / sqrt_p);     /* k'^2 = q/p */
+  const double Y = c2 + kprime2 * sn * sn;          /* 1 - k^2 sin^2(mu) */
 
   if (F)
     {
@@ -249,10 +249,10 @@ chp_quartic_interval (double sp, double sq, double pmq, double y, double x,
       double ratio = (x + y) / (Ax + Ay);
       /* q (p - q)/((x^2 + q)(y^2 + q)), evaluated so that it neither
          overflows nor forms 0/0 (by > 0 here: y = q = 0 was excluded) */
-      double corr = (sq == 0.0) ? 0.0 : (sq / bx) * (sq / bx) * pmq / by / by;
+      double corr = (sqrt_q == 0.0) ? 0.0 : (sqrt_q / bx) * (sqrt_q / bx) * p_minus_q / by / by;
       double term1 = dxy * ratio * (1.0 + corr);
-      double term2 = (y == 0.0) ? 0.0 : (pmq / sp) * (x / bx) * (y / by) * sn;
-      double term3 = (pmq / (3.0 * sp)) * (sn * sn * sn) * rd;
+      double term2 = (y == 0.0) ? 0.0 : (p_minus_q / sqrt_p) * (x / bx) * (y / by) * sn;
+      double term3 = (p_minus_q / (3.0 * sqrt_p)) * (sn * sn * sn) * rd;
       *T = term1 + term2 + term3;
     }
   return CHAPLYGIN_SUCCESS;

@@ -145,15 +145,15 @@ setup (const chaplygin_discrete *sys, int dir, double E, double H,
 }
 
 /* The far regime of a system (lib/far.c) after the checks of setup that
-   precede it: *f (f->k = 0 within the cap) and, when far, the scaled
-   system. */
+   precede it: *f (f->k = 0 within the cap; when far, f->sys the scaled
+   system). */
 static int
 far_state (const chaplygin_discrete *sys, int dir, double E, double H,
-           chp_far *f, chaplygin_discrete *scaled)
+           chp_far *f)
 {
   if (dir != 1 && dir != -1)
     return CHAPLYGIN_EINVAL;
-  CHP_TRY (chp_far_sys (sys, f, scaled));
+  CHP_TRY (chp_far_open_sys (sys, f));
   if (f->k && (!chp_finite2 (E, H) || E < 0.0))
     return CHAPLYGIN_EDOM;
   return CHAPLYGIN_SUCCESS;
@@ -195,20 +195,20 @@ chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
   if (!sys || !En || !Hn)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (far_state (sys, dir, E, H, &f, &ss));
+  CHP_TRY (far_state (sys, dir, E, H, &f));
   if (f.k)
     {
-      /* far (lib/far.c): the scaled run, E_n by 4^-m; H_n = C2^n H from
-         the unscaled H (C2 is scale-free), since the scaled C2^n H_s may
-         be subnormal where H_n is not */
+      /* far (lib/far.c): the scaled run; H_n = C2^n H from the unscaled
+         H (C2 is scale-free), since the scaled C2^n H_s may be subnormal
+         where H_n is not */
       double Es, Hs, e, h;
       chp_run run;
-      CHP_TRY (chp_far_eh (&f, E, H, 0, &Es, &Hs));
-      CHP_TRY (chaplygin_discrete_energy_after (&ss, dir, Es, Hs, n, &e, &h));
-      CHP_TRY (chp_run_init (&ss, dir, &run));
+      CHP_TRY (chp_far_state (&f, E, H, 0, &Es, &Hs));
+      CHP_TRY (chaplygin_discrete_energy_after (&f.sys, dir, Es, Hs, n, &e,
+                                                &h));
+      CHP_TRY (chp_run_init (&f.sys, dir, &run));
       CHP_TRY (run_momentum (&run, H, (double) n, &h));
-      e = ldexp (e, -2 * f.m);
+      e = chp_far_out (&f, CHP_Q_ENERGY, e);
       if (!isfinite (e) || !isfinite (h))
         return CHAPLYGIN_ERANGE;
       *En = e;
@@ -275,15 +275,14 @@ chaplygin_discrete_final_energy (const chaplygin_discrete *sys, int dir,
   if (!sys || !Ef)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (far_state (sys, dir, E, H, &f, &ss));
+  CHP_TRY (far_state (sys, dir, E, H, &f));
   if (f.k)
     {
-      /* far: the scaled run, E_f by 4^-m */
+      /* far: the scaled run */
       double Es, Hs, e;
-      CHP_TRY (chp_far_eh (&f, E, H, 0, &Es, &Hs));
-      CHP_TRY (chaplygin_discrete_final_energy (&ss, dir, Es, Hs, &e));
-      *Ef = ldexp (e, -2 * f.m);
+      CHP_TRY (chp_far_state (&f, E, H, 0, &Es, &Hs));
+      CHP_TRY (chaplygin_discrete_final_energy (&f.sys, dir, Es, Hs, &e));
+      *Ef = chp_far_out (&f, CHP_Q_ENERGY, e);
       return CHAPLYGIN_SUCCESS;
     }
   chp_run run;
@@ -360,9 +359,9 @@ chaplygin_discrete_energy_converges (double L0, double Delta, int dir,
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
   chp_far f;
-  CHP_TRY (chp_far_init (L0, Delta, &f));
+  CHP_TRY (chp_far_open (L0, Delta, &f));
   if (f.k)      /* far (lib/far.c): |C2| < 1 is scale-free */
-    return chaplygin_discrete_energy_converges (f.L0, f.Delta, dir,
+    return chaplygin_discrete_energy_converges (f.sys.L0, f.sys.Delta, dir,
                                                 converges);
   int below_one = dir > 0 ? L0 > -Delta : L0 < 0.0;
   double e[12], p, pe;
@@ -417,14 +416,15 @@ chaplygin_discrete_final_velocity (double L0, double Delta, double V,
     return CHAPLYGIN_ESTATE;
   const int dir = V > 0.0 ? 1 : -1;
   chp_far f;
-  CHP_TRY (chp_far_init (L0, Delta, &f));
+  CHP_TRY (chp_far_open (L0, Delta, &f));
   if (f.k)
     {
-      /* far (lib/far.c): Omega times 2^k, V and Vf unchanged */
+      /* far (lib/far.c): Omega scaled (m = 0: V and Vf unchanged) */
       double Om;
-      if (!chp_exact_ldexp (Omega, f.k, &Om))
+      if (!chp_far_in (&f, CHP_Q_RATE, Omega, &Om))
         return CHAPLYGIN_ERANGE;
-      return chaplygin_discrete_final_velocity (f.L0, f.Delta, V, Om, Vf);
+      return chaplygin_discrete_final_velocity (f.sys.L0, f.sys.Delta, V, Om,
+                                                Vf);
     }
   chaplygin_discrete sys;
   chp_run run;

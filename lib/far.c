@@ -1,4 +1,4 @@
-/* far.c -- the far regime: a slot with an end beyond CHP_L_MAX (2^500
+/* far.c -- kernel: the far regime: a slot with an end beyond CHP_L_MAX (2^500
    radii of gyration) from the mass centre, where 1 + l^2 and its products
    overflow.
 
@@ -35,26 +35,31 @@
 
    Domain: the path of one strict sign and max |l| <= 2^400 min |l|
    (otherwise it comes near the mass centre, where rho matters, while l^2
-   overflows elsewhere: CHAPLYGIN_ERANGE). */
+   overflows elsewhere: CHAPLYGIN_ERANGE).
+
+   One mechanism.  A routine of the library handles a far slot by opening
+   its scaling (chp_far_open), scaling its inputs by their kind of quantity
+   (chp_far_in, chp_far_state, chp_far_phase), calling itself on the scaled
+   system f.sys, and scaling each output back by its kind (chp_far_out):
+   which power of two each kind carries is stated here alone
+   (chp_far_exponent).  Uses eft.h and collision.c (the scaled system). */
 #include <config.h>
 
 #include <float.h>
 #include <math.h>
 
-#include "internal.h"
+#include "collision.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
 
-int
-chp_exact_ldexp (double x, int e, double *r)
-{
-  double y = ldexp (x, e);
-  if (!isfinite (y) || ldexp (y, -e) != x)
-    return 0;
-  *r = y;
-  return 1;
-}
-
-int
-chp_far_k (double la, double lb, int *k)
+/* The scale exponent k of a path from la to lb: 0 within the cap
+   (max |l| <= 2^500); beyond it, for a far path (one strict sign,
+   max |l| <= 2^400 min |l|), k = ilogb(min |l|) - 99, which puts the
+   scaled min |l| in [2^99, 2^100) and the scaled max below 2^500;
+   CHAPLYGIN_ERANGE otherwise (or non-finite). */
+static int
+far_k (double la, double lb, int *k)
 {
   double hi = fmax (fabs (la), fabs (lb)), lo = fmin (fabs (la), fabs (lb));
   *k = 0;
@@ -67,30 +72,43 @@ chp_far_k (double la, double lb, int *k)
   if (!((la > 0.0 && lb > 0.0) || (la < 0.0 && lb < 0.0))
       || !(hi <= 0x1p400 * lo))
     return CHAPLYGIN_ERANGE;
-  /* the scaled min |l| in [2^99, 2^100), the scaled max below 2^500 */
   *k = ilogb (lo) - 99;
   return CHAPLYGIN_SUCCESS;
 }
 
 int
-chp_far_init (double L0, double Delta, chp_far *f)
+chp_far_open (double L0, double Delta, chp_far *f)
 {
-  f->m = 0;
-  f->L0 = L0;
-  f->Delta = Delta;
-  CHP_TRY (chp_far_k (L0, L0 + Delta, &f->k));
+  double Ls, Ds;
+  f->k = f->m = f->j = 0;
+  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
+    return CHAPLYGIN_EDOM;
+  CHP_TRY (far_k (L0, L0 + Delta, &f->k));
   if (f->k == 0)
     return CHAPLYGIN_SUCCESS;
-  if (!chp_exact_ldexp (L0, -f->k, &f->L0)
-      || !chp_exact_ldexp (Delta, -f->k, &f->Delta)
-      || !(f->Delta >= DBL_MIN))
+  if (!chp_exact_ldexp (L0, -f->k, &Ls) || !chp_exact_ldexp (Delta, -f->k, &Ds)
+      || !(Ds >= DBL_MIN))
     return CHAPLYGIN_ERANGE;    /* Delta below 2^(k - 1022): subnormal */
+  chp_system_fill (&f->sys, Ls, Ds);
   return CHAPLYGIN_SUCCESS;
 }
 
 int
-chp_far_eh (chp_far *f, double E, double H, int linear, double *Es,
-            double *Hs)
+chp_far_open_sys (const chaplygin_discrete *sys, chp_far *f)
+{
+  return chp_far_open (sys->L0, sys->Delta, f);
+}
+
+int
+chp_far_open_path (double la, double lb, chp_far *f)
+{
+  f->k = f->m = f->j = 0;
+  return far_k (la, lb, &f->k);
+}
+
+int
+chp_far_state (chp_far *f, double E, double H, int linear, double *Es,
+               double *Hs)
 {
   f->m = 0;
   f->j = 0;
@@ -128,8 +146,8 @@ chp_far_eh (chp_far *f, double E, double H, int linear, double *Es,
       else
         return CHAPLYGIN_ERANGE;
     }
-  if (!chp_exact_ldexp (E, 2 * f->m, Es)
-      || !chp_exact_ldexp (H, f->m - f->k + f->j, Hs))
+  if (!chp_far_in (f, CHP_Q_ENERGY, E, Es)
+      || !chp_far_in (f, CHP_Q_MOMENTUM, H, Hs))
     return CHAPLYGIN_ERANGE;
   return CHAPLYGIN_SUCCESS;
 }
@@ -144,30 +162,78 @@ chp_far_phase (chp_far *f, double l0, double V, double Omega, double *Vs,
   const double sp = fmax (fabs (V), fabs (l0) * fabs (Omega));
   if (f->k > 0 && sp > 0.0 && isfinite (sp))
     f->m = -ilogb (sp);
-  if (!chp_exact_ldexp (V, f->m, Vs)
-      || !chp_exact_ldexp (Omega, f->k + f->m, Omegas))
+  if (!chp_far_in (f, CHP_Q_SPEED, V, Vs)
+      || !chp_far_in (f, CHP_Q_RATE, Omega, Omegas))
     return CHAPLYGIN_ERANGE;
   return CHAPLYGIN_SUCCESS;
 }
 
 int
-chp_far_params (double L0, double Delta, int dir, chp_far *f)
+chp_far_speed (chp_far *f, double l0, double V, double Omega, double *Vs,
+               double *Omegas)
 {
-  if (dir != 1 && dir != -1)
-    return CHAPLYGIN_EINVAL;
-  if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
-    return CHAPLYGIN_EDOM;
-  return chp_far_init (L0, Delta, f);
+  f->j = 0;
+  const double sp = fmax (fabs (V), hypot (1.0, l0) * fabs (Omega));
+  f->m = sp > 0.0 && isfinite (sp) ? -ilogb (sp) : 0;
+  if (!chp_far_in (f, CHP_Q_SPEED, V, Vs)
+      || !chp_far_in (f, CHP_Q_RATE, Omega, Omegas))
+    return CHAPLYGIN_ERANGE;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The exponent of each kind of quantity: its scaled value is the true one
+   times 2^e.  Lengths by s = 2^-k, energies by a = 4^m (the time-scaling
+   of every speed by 2^m), so that H = (1 + l^2) Omega ~ l^2 Omega and
+   Omega = V/l-like rates follow; j is the extra factor of the quantities
+   linear in H where the motion is (chp_far_state, LINEAR). */
+int
+chp_far_exponent (const chp_far *f, chp_quantity q)
+{
+  switch (q)
+    {
+    case CHP_Q_LENGTH:
+      return -f->k;
+    case CHP_Q_ENERGY:
+      return 2 * f->m;
+    case CHP_Q_SPEED:
+      return f->m;
+    case CHP_Q_MOMENTUM:
+      return f->m - f->k + f->j;
+    case CHP_Q_RATE:
+      return f->m + f->k + f->j;
+    case CHP_Q_TIME:
+      return -(f->k + f->m);
+    case CHP_Q_HEADING:
+      return f->j;
+    case CHP_Q_INVERSE_AREA:
+      return 2 * f->k;
+    case CHP_Q_DENERGY_DMOMENTUM:
+      /* dE'/dH = 2 C1 H: C1 ~ Delta^2/l^4 (2^2k) times H */
+      return f->m + f->k + f->j;
+    case CHP_Q_DHEADING_DENERGY:
+      return f->j - 2 * f->m;
+    case CHP_Q_DHEADING_DMOMENTUM:
+      /* the heading is linear in H where j > 0: j cancels */
+      return f->k - f->m;
+    }
+  return 0;
+}
+
+double
+chp_far_out (const chp_far *f, chp_quantity q, double scaled)
+{
+  return ldexp (scaled, -chp_far_exponent (f, q));
 }
 
 int
-chp_far_sys (const chaplygin_discrete *sys, chp_far *f,
-             chaplygin_discrete *scaled)
+chp_far_in (const chp_far *f, chp_quantity q, double x, double *scaled)
 {
-  if (!chp_finite2 (sys->L0, sys->Delta) || !(sys->Delta > 0.0))
-    return CHAPLYGIN_EDOM;
-  CHP_TRY (chp_far_init (sys->L0, sys->Delta, f));
-  if (f->k == 0)
-    return CHAPLYGIN_SUCCESS;
-  return chaplygin_discrete_init (scaled, f->L0, f->Delta);
+  return chp_exact_ldexp (x, chp_far_exponent (f, q), scaled);
+}
+
+int
+chp_far_out_exact (const chp_far *f, chp_quantity q, double scaled,
+                   double *x)
+{
+  return chp_exact_ldexp (scaled, -chp_far_exponent (f, q), x);
 }

@@ -303,23 +303,22 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
   if (!sys || !init || !fate)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &f));
   if (f.k)
     {
       /* far (lib/far.c): the fate of the scaled state; counts and kind
-         are scale-free, E_final scales by 4^-m, V_final by 2^-m */
+         are scale-free */
       chaplygin_discrete_state si = *init;
       chaplygin_fate r;
       if (init->dir != 1 && init->dir != -1)
         return CHAPLYGIN_EINVAL;
       if (!chp_finite2 (init->E, init->H) || init->E < 0.0)
         return CHAPLYGIN_EDOM;
-      CHP_TRY (chp_far_eh (&f, init->E, init->H, 0, &si.E, &si.H));
-      CHP_TRY (chaplygin_discrete_fate (&ss, &si, max_collisions,
+      CHP_TRY (chp_far_state (&f, init->E, init->H, 0, &si.E, &si.H));
+      CHP_TRY (chaplygin_discrete_fate (&f.sys, &si, max_collisions,
                                         reversal_at, reversal_cap, &r));
-      r.E_final = ldexp (r.E_final, -2 * f.m);
-      r.V_final = ldexp (r.V_final, -f.m);
+      r.E_final = chp_far_out (&f, CHP_Q_ENERGY, r.E_final);
+      r.V_final = chp_far_out (&f, CHP_Q_SPEED, r.V_final);
       *fate = r;
       return CHAPLYGIN_SUCCESS;
     }
@@ -346,7 +345,7 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
   /* the spinning state (3.8), exactly as chaplygin_discrete_spins: 2E = H^2
      (the sign of 1 - h^2 is exact, and so is the scaling) and l = 0 on the
      path (l0 = 0 itself has V+ = 0, excluded above) */
-  const int spins = m.omh2 == 0.0 && c.leg[i].crosses;
+  const int spins = m.one_minus_h2 == 0.0 && c.leg[i].crosses;
   if (spins || H == 0.0)
     {
       chaplygin_fate r = { spins ? CHAPLYGIN_FATE_SPIN : init->dir, 0, 0, 0,
@@ -379,24 +378,24 @@ chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
   if (!sys || !qplus || !fate)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &f));
   if (f.k)
     {
-      /* far (lib/far.c): D times 2^-k, Omega times 2^k; V, theta and the
-         fate (E_final, V_final included) unchanged */
+      /* far (lib/far.c): lengths and Omega scaled (m = 0: V, theta and
+         the fate, E_final and V_final included, unchanged) */
       double qs[4];
       if (!chp_finite4 (qplus[0], qplus[1], qplus[2], qplus[3]))
         return CHAPLYGIN_EDOM;
       const double V = qplus[CHAPLYGIN_V], D = qplus[CHAPLYGIN_D];
       if (V == 0.0 || (V > 0.0 && D != 0.0) || (V < 0.0 && D != sys->Delta))
         return CHAPLYGIN_ESTATE;
-      qs[CHAPLYGIN_D] = D == 0.0 ? 0.0 : ss.Delta;
+      qs[CHAPLYGIN_D] = D == 0.0 ? 0.0 : f.sys.Delta;
       qs[CHAPLYGIN_V] = V;
       qs[CHAPLYGIN_THETA] = qplus[CHAPLYGIN_THETA];
-      if (!chp_exact_ldexp (qplus[CHAPLYGIN_OMEGA], f.k, &qs[CHAPLYGIN_OMEGA]))
+      if (!chp_far_in (&f, CHP_Q_RATE, qplus[CHAPLYGIN_OMEGA],
+                       &qs[CHAPLYGIN_OMEGA]))
         return CHAPLYGIN_ERANGE;
-      return chaplygin_discrete_fate_phase (&ss, qs, max_collisions,
+      return chaplygin_discrete_fate_phase (&f.sys, qs, max_collisions,
                                             reversal_at, reversal_cap, fate);
     }
   fate_coef c;
@@ -461,18 +460,17 @@ chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
   if (!sys || (n > 0 && !fates))
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &f));
   if (f.k)
     {
-      /* far (lib/far.c): Omega0 times 2^k, the V grid and the fates
-         unchanged */
+      /* far (lib/far.c): Omega0 scaled (m = 0: the V grid and the fates
+         unchanged) */
       double Om;
       if (!isfinite (Omega0))
         return CHAPLYGIN_EDOM;
-      if (!chp_exact_ldexp (Omega0, f.k, &Om))
+      if (!chp_far_in (&f, CHP_Q_RATE, Omega0, &Om))
         return CHAPLYGIN_ERANGE;
-      return chaplygin_discrete_basins (&ss, Om, V_lo, V_hi, n,
+      return chaplygin_discrete_basins (&f.sys, Om, V_lo, V_hi, n,
                                         max_collisions, fates);
     }
   fate_coef c;
@@ -562,17 +560,16 @@ chaplygin_discrete_basin_boundaries (const chaplygin_discrete *sys,
   if (!sys || !count || (cap > 0 && !V_boundary))
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &f));
   if (f.k)
     {
       /* far: as chaplygin_discrete_basins */
       double Om;
       if (!isfinite (Omega0))
         return CHAPLYGIN_EDOM;
-      if (!chp_exact_ldexp (Omega0, f.k, &Om))
+      if (!chp_far_in (&f, CHP_Q_RATE, Omega0, &Om))
         return CHAPLYGIN_ERANGE;
-      return chaplygin_discrete_basin_boundaries (&ss, Om, V_lo, V_hi,
+      return chaplygin_discrete_basin_boundaries (&f.sys, Om, V_lo, V_hi,
                                                   n_grid, max_collisions,
                                                   V_boundary, cap, count);
     }

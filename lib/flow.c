@@ -28,144 +28,6 @@
 
 #include "internal.h"
 
-/* chp_one_minus_h2: 1 - h^2 = (2E - H^2)/(2E) for E > 0.
-   Method: H^2 - 2E by one fma, so that the sign is exact (zero exactly
-   when H^2 = 2E, the spinning condition (3.8)) and the value within 2 ulps;
-   for |H| > 2^500 on arguments scaled by 2^-2k, 2^-k (exact unless 2E 2^-2k
-   underflows, which only happens when H^2 >> 2E and the result overflows).
-   Returns -Inf when the result overflows. */
-double
-chp_one_minus_h2 (double E, double H)
-{
-  double twoE = 2.0 * E;
-  if (fabs (H) <= 0x1p500 && isfinite (twoE))
-    return -fma (H, H, -twoE) / twoE;
-  int k;
-  frexp (H, &k);
-  double Hs = ldexp (H, -k), twoEs = ldexp (E, 1 - 2 * k);
-  if (!(twoEs > 0.0))
-    return -HUGE_VAL;
-  return -fma (Hs, Hs, -twoEs) / twoEs;
-}
-
-/* chp_motion_init_eh: the part of chp_motion_init that the exact
-   classification of a motion and the (E, H) update need: E, H and
-   1 - h^2 (see chp_one_minus_h2); the other fields are left unset
-   (chp_motion_complete sets them).
-   Errors: CHAPLYGIN_EDOM (non-finite, E < 0), CHAPLYGIN_ESTATE (E = 0: at
-   rest, no motion), CHAPLYGIN_ERANGE (2E or h^2 overflows). */
-int
-chp_motion_init_eh (double E, double H, chp_motion *m)
-{
-  if (!isfinite (E) || !isfinite (H) || E < 0.0)
-    return CHAPLYGIN_EDOM;
-  if (E == 0.0)
-    return CHAPLYGIN_ESTATE;
-  double twoE = 2.0 * E;
-  double omh2 = chp_one_minus_h2 (E, H);
-  if (!isfinite (twoE) || !isfinite (omh2))
-    return CHAPLYGIN_ERANGE;
-  m->E = E;
-  m->H = H;
-  m->omh2 = omh2;
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* chp_motion_complete: the fields of a motion set by chp_motion_init_eh
-   extended by those the heading and time integrals need. */
-void
-chp_motion_complete (chp_motion *m)
-{
-  m->sqrt2E = sqrt (2.0 * m->E);
-  m->h = m->H / m->sqrt2E;
-  chp_motion_set_omh2 (m, m->omh2);
-}
-
-/* chp_motion_init: the invariants of the motion with energy E > 0 and
-   momentum H: chp_motion_init_eh and chp_motion_complete.
-   Errors: those of chp_motion_init_eh. */
-int
-chp_motion_init (double E, double H, chp_motion *m)
-{
-  CHP_TRY (chp_motion_init_eh (E, H, m));
-  chp_motion_complete (m);
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* chp_motion_set_omh2: set 1 - h^2 (finite: a non-finite value is
-   ignored) and derive sp, sq, pmq and theta_factor from it; used by
-   chp_motion_init and to replace its value by a more accurate one. */
-void
-chp_motion_set_omh2 (chp_motion *m, double omh2)
-{
-  if (!isfinite (omh2))
-    return;
-  m->omh2 = omh2;
-  if (omh2 >= 0.0)
-    {
-      m->sp = 1.0;
-      m->sq = sqrt (omh2);
-      m->pmq = m->h * m->h;
-      m->theta_factor = m->h;
-    }
-  else
-    {
-      m->sp = fabs (m->h);
-      m->sq = sqrt (-omh2);
-      m->pmq = 1.0;
-      m->theta_factor = chp_sign (m->H);
-    }
-}
-
-/* chp_phase_omh2: 1 - h^2 = (2E - H^2)/(2E) of the phase state (l0, V0,
-   Omega0), 2E - H^2 = V0^2 - l0^2 (1 + l0^2) Omega0^2 = V0^2 - w^2 -
-   (w l0)^2 with w = l0 Omega0, by error-free products and sums: accurate
-   relative to the exact inputs however much the terms cancel.  twoE is
-   2E (rounded).  Non-finite (NaN or Inf) where a term overflows. */
-double
-chp_phase_omh2 (double l0, double V0, double Omega0, double twoE)
-{
-  double wh, wl, a, ea, uh, eu, b, eb, c, ec, s1, e1, s2, e2;
-  chp_two_prod (l0, Omega0, &wh, &wl);
-  chp_two_prod (wh, wh, &a, &ea);
-  chp_two_prod (wh, l0, &uh, &eu);
-  double ul = eu + wl * l0;
-  chp_two_prod (uh, uh, &b, &eb);
-  chp_two_prod (V0, V0, &c, &ec);
-  chp_two_sum (c, -a, &s1, &e1);
-  chp_two_sum (s1, -b, &s2, &e2);
-  double N = s2 + ((e1 + e2) + ((ec - ea - eb) - 2.0 * (wh * wl + uh * ul)));
-  return N / twoE;
-}
-
-double
-chp_motion_g (const chp_motion *m, double l)
-{
-  return fma (l, l, m->omh2);
-}
-
-/* chp_motion_g_exact: g(l) = [2E (1 + l^2) - H^2]/(2E) for l = l + el (el the
-   rounding error of l, 0 if l is exact), the numerator with error-free
-   products and sums, so that g is within ~2 ulps of its value for the
-   given E, H, l however much 2E (1 + l^2) and H^2 cancel (a turning point
-   near l).  Falls back to chp_motion_g where an intermediate overflows. */
-double
-chp_motion_g_exact (const chp_motion *m, double l, double el)
-{
-  double twoE = 2.0 * m->E, H = m->H;
-  double p1, e1, p2, e2, p3, e3, s1, f1, s2, f2;
-  chp_two_prod (l, l, &p1, &e1);
-  chp_two_prod (twoE, p1, &p2, &e2);
-  chp_two_prod (H, H, &p3, &e3);
-  chp_two_sum (twoE, -p3, &s1, &f1);
-  chp_two_sum (s1, p2, &s2, &f2);
-  double N = s2 + (((f1 + f2) + (e2 - e3)) + twoE * (e1 + 2.0 * l * el));
-  double g = N / twoE;
-  if (!isfinite (g) || !isfinite (p2) || !isfinite (p3))
-    return chp_motion_g (m, l);
-  return g;
-}
-
 /* ---- quadrature integrands (the paper's, in |l|; in u at turning points)
 
    The integration variable t runs from 0 over an interval whose width is
@@ -190,7 +52,7 @@ qa_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
   double l = qp->A + t;
-  return qp->w / (hypot (1.0, l) * hypot (l, qp->m->sq));
+  return qp->w / (hypot (1.0, l) * hypot (l, qp->m->sqrt_q));
 }
 
 /* Regime A: sqrt(2E) dtau/dl = sqrt((1 + l^2)/(l^2 + q)). */
@@ -199,7 +61,7 @@ qa_tau (double t, void *p)
 {
   const struct quad_par *qp = p;
   double l = qp->A + t;
-  return hypot (1.0, l) / hypot (l, qp->m->sq);
+  return hypot (1.0, l) / hypot (l, qp->m->sqrt_q);
 }
 
 /* Regime B, u = A + t with |l| = c + u^2, g = u^2 (|l| + c):
@@ -208,7 +70,7 @@ static double
 qb_theta (double t, void *p)
 {
   const struct quad_par *qp = p;
-  double u = qp->A + t, c = qp->m->sq, al = c + u * u;
+  double u = qp->A + t, c = qp->m->sqrt_q, al = c + u * u;
   return 2.0 * qp->w / (hypot (1.0, al) * sqrt (al + c));
 }
 
@@ -217,7 +79,7 @@ static double
 qb_tau (double t, void *p)
 {
   const struct quad_par *qp = p;
-  double u = qp->A + t, c = qp->m->sq, al = c + u * u;
+  double u = qp->A + t, c = qp->m->sqrt_q, al = c + u * u;
   return 2.0 * hypot (1.0, al) / sqrt (al + c);
 }
 
@@ -286,22 +148,22 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
           T = dl;
           F = 0.0;
         }
-      else if (m->omh2 >= 0.0)
+      else if (m->one_minus_h2 >= 0.0)
         {
           if (la * lb < 0.0)
             {
               double F1 = 0.0, T1 = 0.0, F2 = 0.0, T2 = 0.0;
-              CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, 0.0, aa, aa,
+              CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, 0.0, aa, aa,
                                              opt->precision, pF ? &F1 : NULL,
                                              pT ? &T1 : NULL));
-              CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, 0.0, ab, ab,
+              CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, 0.0, ab, ab,
                                              opt->precision, pF ? &F2 : NULL,
                                              pT ? &T2 : NULL));
               F = F1 + F2;
               T = T1 + T2;
             }
           else
-            CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, fmin (aa, ab),
+            CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, fmin (aa, ab),
                                            fmax (aa, ab), dl, opt->precision,
                                            pF, pT));
         }
@@ -309,7 +171,7 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
         {
           double wa = sqrt (ga), wb = sqrt (gb);
           double dw = dl * ((aa + ab) / (wa + wb));
-          CHP_TRY (chp_quartic_interval (m->sp, m->sq, m->pmq, fmin (wa, wb),
+          CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, fmin (wa, wb),
                                          fmax (wa, wb), dw, opt->precision,
                                          pF, pT));
         }
@@ -322,7 +184,7 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
 
   /* Quadrature, over intervals of exactly known width. */
   double *qF = dtheta ? &F : NULL, *qT = dtau ? &T : NULL;
-  if (m->omh2 >= 0.0)
+  if (m->one_minus_h2 >= 0.0)
     {
       /* in |l|: two pieces from 0 if la, lb straddle l = 0 (where the
          integrand peaks), one otherwise */
@@ -339,7 +201,7 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
     {
       /* in u = sqrt(|l| - c): |l| - c = g/(|l| + c) without cancellation,
          and u_b - u_a = (|lb| - |la|)/(u_a + u_b) = +-dl/(u_a + u_b) */
-      double c = m->sq;
+      double c = m->sqrt_q;
       double ua = sqrt (ga / (aa + c)), ub = sqrt (gb / (ab + c));
       CHP_TRY (quad_geometric (qb_theta, qb_tau, m, fmin (ua, ub), dl / (ua + ub),
                                opt->tol, qF, qT));
@@ -349,27 +211,6 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
     *dtheta = chp_sign (m->H) * F;
   if (dtau)
     *dtau = T / m->sqrt2E;
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* (B.1) evaluated as printed, without the reachability checks of
-   chaplygin_discrete_flow (for callers that have classified the motion
-   already); V^2 may come out slightly negative near a turning point.
-   CHAPLYGIN_ERANGE on overflow. */
-int
-chp_flow_eval (double L0, double D0, double V0, double Omega0, double D,
-               double *V2, double *Omega)
-{
-  double l0 = L0 + D0, l = L0 + D;
-  double n0 = chp_one_plus_sq (l0), n = chp_one_plus_sq (l);
-  double ratio = n0 / n;
-  double om = Omega0 * ratio;
-  double v2 = V0 * V0 + (D - D0) * (2.0 * L0 + D + D0) * ratio
-    * Omega0 * Omega0;
-  if (!isfinite (v2) || !isfinite (om))
-    return CHAPLYGIN_ERANGE;
-  *V2 = v2;
-  *Omega = om;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -400,19 +241,18 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
   double v2, om;
   if (fabs (L0 + D0) > CHP_L_MAX || fabs (L0 + D) > CHP_L_MAX)
     {
-      /* far (lib/far.c): lengths times 2^-k, V times 2^m, Omega times
-         2^(k+m) */
+      /* far (lib/far.c): the same leg of the exactly scaled problem */
       chp_far f;
       double L0s, D0s, Ds, V0s, Om0s;
-      CHP_TRY (chp_far_k (L0 + D0, L0 + D, &f.k));
-      if (!chp_exact_ldexp (L0, -f.k, &L0s)
-          || !chp_exact_ldexp (D0, -f.k, &D0s)
-          || !chp_exact_ldexp (D, -f.k, &Ds))
+      CHP_TRY (chp_far_open_path (L0 + D0, L0 + D, &f));
+      if (!chp_far_in (&f, CHP_Q_LENGTH, L0, &L0s)
+          || !chp_far_in (&f, CHP_Q_LENGTH, D0, &D0s)
+          || !chp_far_in (&f, CHP_Q_LENGTH, D, &Ds))
         return CHAPLYGIN_ERANGE;
       CHP_TRY (chp_far_phase (&f, L0 + D0, V0, Omega0, &V0s, &Om0s));
       CHP_TRY (chaplygin_discrete_flow (L0s, D0s, V0s, Om0s, Ds, &v2, &om));
-      v2 = ldexp (v2, -2 * f.m);
-      om = ldexp (om, -(f.k + f.m));
+      v2 = chp_far_out (&f, CHP_Q_ENERGY, v2);
+      om = chp_far_out (&f, CHP_Q_RATE, om);
       if (!isfinite (v2))
         return CHAPLYGIN_ERANGE;
       *V2 = v2;
@@ -430,6 +270,66 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
     return CHAPLYGIN_ESTATE;
   *V2 = v2;
   *Omega = om;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The scaling of a leg of (B.2), the first phase of
+   chaplygin_discrete_heading: far (lib/far.c) if |l| leaves the cap on it
+   (lengths and speeds scaled); otherwise the time-scaling alone (exact for
+   any rho: the heading unchanged, the time times 2^-m) where the speed
+   sqrt(2E) ~ max(|V0|, |l0 Omega0|) would make H = (1 + l0^2) Omega0
+   exceed 2^450 or E fall below 2^-800 (H^2 and the motion's fields would
+   overflow or underflow: a heading and time of 0 were returned at
+   |l0| ~ 1e150, H ~ 1e198 before, found by tests/test_far).  Once scaled,
+   the speed is in [1, 2): the scaled leg needs no second scaling.
+   *scaled = 1 if the caller must solve the scaled leg. */
+static int
+leg_scaling (double L0, double D0, double V0, double Omega0, double D,
+             chp_far *f, int *scaled)
+{
+  const double l0 = L0 + D0, l = L0 + D;
+  *scaled = 0;
+  if (fabs (l0) > CHP_L_MAX || fabs (l) > CHP_L_MAX)
+    {
+      CHP_TRY (chp_far_open_path (l0, l, f));
+      *scaled = 1;
+      return CHAPLYGIN_SUCCESS;
+    }
+  CHP_TRY (chp_far_open_path (l0, l, f));       /* k = 0 */
+  const double sp = fmax (fabs (V0), hypot (1.0, l0) * fabs (Omega0));
+  const int m = sp > 0.0 && isfinite (sp) ? -ilogb (sp) : 0;
+  *scaled = m != 0 && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The heading and time of a leg through its scaling F (leg_scaling):
+   lengths, V0 and Omega0 scaled, the scaled leg solved, the time scaled
+   back (CHAPLYGIN_ERANGE where the scaled time is not a normal double, its
+   digits lost); the heading is scale-free. */
+static int
+scaled_heading (chp_far *f, double L0, double D0, double V0, double Omega0,
+                double D, const chaplygin_options *opt, double *dtheta,
+                double *dtau)
+{
+  double L0s, D0s, Ds, V0s, Om0s, ths = 0.0, tas = 0.0, ta = 0.0;
+  if (!chp_far_in (f, CHP_Q_LENGTH, L0, &L0s)
+      || !chp_far_in (f, CHP_Q_LENGTH, D0, &D0s)
+      || !chp_far_in (f, CHP_Q_LENGTH, D, &Ds))
+    return CHAPLYGIN_ERANGE;
+  if (f->k > 0)
+    CHP_TRY (chp_far_phase (f, L0 + D0, V0, Omega0, &V0s, &Om0s));
+  else
+    CHP_TRY (chp_far_speed (f, L0 + D0, V0, Omega0, &V0s, &Om0s));
+  CHP_TRY (chaplygin_discrete_heading (L0s, D0s, V0s, Om0s, Ds, opt,
+                                       dtheta ? &ths : NULL,
+                                       dtau ? &tas : NULL));
+  if ((f->k > 0 && dtau && D != D0 && !(tas >= DBL_MIN))
+      || !chp_far_out_exact (f, CHP_Q_TIME, tas, &ta))
+    return CHAPLYGIN_ERANGE;
+  if (dtheta)
+    *dtheta = ths;
+  if (dtau)
+    *dtau = ta;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -471,58 +371,11 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
     return CHAPLYGIN_EDOM;
 
   double l0 = L0 + D0, l = L0 + D;
-  if (fabs (l0) > CHP_L_MAX || fabs (l) > CHP_L_MAX)
-    {
-      /* far (lib/far.c): lengths times 2^-k, V times 2^m, Omega times
-         2^(k+m), the heading unchanged, the time times 2^-(k+m);
-         CHAPLYGIN_ERANGE where the scaled time is not a normal double */
-      chp_far f;
-      double L0s, D0s, Ds, V0s, Om0s, ths = 0.0, tas = 0.0, ta = 0.0;
-      CHP_TRY (chp_far_k (l0, l, &f.k));
-      if (!chp_exact_ldexp (L0, -f.k, &L0s)
-          || !chp_exact_ldexp (D0, -f.k, &D0s)
-          || !chp_exact_ldexp (D, -f.k, &Ds))
-        return CHAPLYGIN_ERANGE;
-      CHP_TRY (chp_far_phase (&f, l0, V0, Omega0, &V0s, &Om0s));
-      CHP_TRY (chaplygin_discrete_heading (L0s, D0s, V0s, Om0s, Ds, opt,
-                                           dtheta ? &ths : NULL,
-                                           dtau ? &tas : NULL));
-      if ((dtau && D != D0 && !(tas >= DBL_MIN))
-          || !chp_exact_ldexp (tas, f.k + f.m, &ta))
-        return CHAPLYGIN_ERANGE;
-      if (dtheta)
-        *dtheta = ths;
-      if (dtau)
-        *dtau = ta;
-      return CHAPLYGIN_SUCCESS;
-    }
-  /* The speed sqrt(2E) ~ max(|V0|, |l0 Omega0|) scaled by 2^m near 1
-     (time-scaling, exact: the heading unchanged, the time times 2^-m)
-     where H = (1 + l0^2) Omega0 would be above 2^450 or E below 2^-800:
-     H^2 overflowed, and the motion's fields with it, returning a heading
-     and time of 0 (found by tests/test_far: H ~ 1e198 at |l0| ~ 1e150).
-     Once scaled, sp is in [1, 2): m = 0, no second scaling. */
-  {
-    const double sp = fmax (fabs (V0), hypot (1.0, l0) * fabs (Omega0));
-    const int m = sp > 0.0 && isfinite (sp) ? -ilogb (sp) : 0;
-    if (m != 0 && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400))
-      {
-        double V0s, Om0s, ths = 0.0, tas = 0.0, ta = 0.0;
-        if (!chp_exact_ldexp (V0, m, &V0s)
-            || !chp_exact_ldexp (Omega0, m, &Om0s))
-          return CHAPLYGIN_ERANGE;
-        CHP_TRY (chaplygin_discrete_heading (L0, D0, V0s, Om0s, D, opt,
-                                             dtheta ? &ths : NULL,
-                                             dtau ? &tas : NULL));
-        if (!chp_exact_ldexp (tas, m, &ta))
-          return CHAPLYGIN_ERANGE;
-        if (dtheta)
-          *dtheta = ths;
-        if (dtau)
-          *dtau = ta;
-        return CHAPLYGIN_SUCCESS;
-      }
-  }
+  chp_far f;
+  int scaled;
+  CHP_TRY (leg_scaling (L0, D0, V0, Omega0, D, &f, &scaled));
+  if (scaled)
+    return scaled_heading (&f, L0, D0, V0, Omega0, D, opt, dtheta, dtau);
   double n0 = chp_one_plus_sq (l0);
   double E = 0.5 * (V0 * V0 + n0 * Omega0 * Omega0);
   double H = n0 * Omega0;
@@ -554,16 +407,16 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
   /* 1 - h^2 from the phase inputs themselves, not from the rounded E and
      H, whose roundings it would amplify by 1/|1 - h^2| near the spinning
      ratio 2E = H^2 (found by the Arb oracle: 282 ulps) */
-  chp_motion_set_omh2 (&m, chp_phase_omh2 (l0, V0, Omega0, 2.0 * E));
+  chp_motion_set_one_minus_h2 (&m, chp_phase_one_minus_h2 (l0, V0, Omega0, 2.0 * E));
   /* g = (1 + l^2) V^2/(2E) at both ends, from V0 and the factored (B.1):
      g(l) = g(l0) + (D - D0)(2 L0 + D + D0), with no cancellation but that
      of V^2 itself near a turning point (g from 1 - h^2 would lose
      log10(l^2/g) digits for large |l|). */
   double g0 = n0 * V0 * (V0 / (2.0 * E));
   double gl = g0 + (D - D0) * (2.0 * L0 + D + D0);
-  if (m.omh2 >= 0.0)
+  if (m.one_minus_h2 >= 0.0)
     {
-      if (m.omh2 == 0.0 && l0 * l <= 0.0)
+      if (m.one_minus_h2 == 0.0 && l0 * l <= 0.0)
         return l == 0.0 ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
     }
   else if (gl < 0.0 || (l0 * l < 0.0) || (l == 0.0))

@@ -6,86 +6,9 @@
 #include <math.h>
 #include "chaplygin.h"
 
-/* Return STATUS from the enclosing function unless it is success. */
-#define CHP_TRY(expr)                           \
-  do                                            \
-    {                                           \
-      int chp_try_status_ = (expr);             \
-      if (chp_try_status_ != CHAPLYGIN_SUCCESS) \
-        return chp_try_status_;                 \
-    }                                           \
-  while (0)
-
-static inline int
-chp_finite2 (double a, double b)
-{
-  return isfinite (a) && isfinite (b);
-}
-
-static inline int
-chp_finite4 (double a, double b, double c, double d)
-{
-  return isfinite (a) && isfinite (b) && isfinite (c) && isfinite (d);
-}
-
-/* 1 + x^2, rounded once.  Overflows (to +Inf) for |x| > ~1.3e154. */
-static inline double
-chp_one_plus_sq (double x)
-{
-  return fma (x, x, 1.0);
-}
-
-/* sign(x) as +1 or -1 (+1 for +0, -1 for -0 is not wanted: zero -> +1). */
-static inline double
-chp_sign (double x)
-{
-  return x < 0.0 ? -1.0 : 1.0;
-}
-
-/* Error-free transformations (Knuth, Dekker): a + b = *s + *e and
-   a b = *p + *e exactly (barring overflow). */
-static inline void
-chp_two_sum (double a, double b, double *s, double *e)
-{
-  double t = a + b, bb = t - a;
-  *s = t;
-  *e = (a - (t - bb)) + (b - bb);
-}
-
-static inline void
-chp_two_prod (double a, double b, double *p, double *e)
-{
-  *p = a * b;
-  *e = fma (a, b, -*p);
-}
-
-/* Options: NULL means CHAPLYGIN_OPTIONS_DEFAULT; validates the rest. */
-int chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out);
-
-/* L/(1 + L^2) without overflow. */
-double chp_L_over_one_plus_sq (double L);
-
-/* [1 + b bp]/[1 + b^2], the collision ratio of (3.6), (3.7): b and bp are
-   L0 + D at the two slot ends (b bp = L0 (L0 + Delta)), b the one in the
-   denominator.  The numerator is formed with an error-free sum so that it
-   is accurate to a few ulps even when 1 + L0 (L0 + Delta) cancels. */
-double chp_collision_ratio (double L0, double Delta, double b, double bp);
-
-/* 1 + L0 (L0 + Delta), accurate to ~1 ulp of the result. */
-double chp_one_plus_L0_L0D (double L0, double Delta);
-
-/* ---- discrete.c ----------------------------------------------------- */
-
-/* The (3.7) coefficients for the collision at which the peg leaves the end
-   Dminus (0 or Delta): E+ = E- + C1 H-^2, H+ = C2 H-. */
-void chp_collision_coefficients (double L0, double Delta, double Dminus,
-                                 double *C1, double *C2);
-
-/* E+ = V-^2/2 + H+^2/(2 (1 + l+^2)), V-^2 = 2E g-/(1 + l-^2): the (3.7)
-   energy after a collision without the cancellation of E + C1 H^2, never
-   above E. */
-double chp_post_collision_energy (double E, double g_minus, double l_minus,
-                                  double H_plus, double l_plus);
+#include "eft.h"
+#include "status.h"
+#include "collision.h"
 
 /* ---- ellint.c: Carlson integrals and the quartic reduction ---------- */
 
@@ -134,112 +57,13 @@ int chp_ode_until (double L0, const double q0[4], int k, double Dlo, double Dhi,
                    int stop_at_turn, double tol, double q1[4], double *tau,
                    int *turned);
 
-/* ---- flow.c: a motion between collisions ---------------------------- */
+#include "motion.h"
 
-/* The invariants of a motion between collisions, reduced to the constants
-   of chp_quartic_interval.  l = L0 + D is the distance from peg to mass
-   centre; V^2 = 2E g(l)/(1 + l^2) with g(l) = l^2 + 1 - h^2. */
-typedef struct
-{
-  double E, H;
-  double sqrt2E;      /* sqrt(2E) */
-  double h;           /* H/sqrt(2E) */
-  double omh2;        /* 1 - h^2 = (2E - H^2)/(2E); its sign is exact */
-  double sp, sq;      /* sqrt(p), sqrt(q): p = max(1, h^2), q = |1 - h^2| */
-  double pmq;         /* p - q: h^2 (regime A) or 1 (regime B) */
-  double theta_factor;  /* sign(H) min(|h|, 1): dtheta = theta_factor F */
-} chp_motion;
-
-int chp_motion_init (double E, double H, chp_motion *m);
-
-/* The cheap part of chp_motion_init: validation, E, H and omh2 only (all
-   that the exact classification and the (E, H) update need); then
-   chp_motion_complete sets the rest. */
-int chp_motion_init_eh (double E, double H, chp_motion *m);
-void chp_motion_complete (chp_motion *m);
-
-/* Replace m->omh2 by a more accurate value (ignored if not finite) and
-   re-derive the fields that depend on it. */
-void chp_motion_set_omh2 (chp_motion *m, double omh2);
-
-/* 1 - h^2 of the phase state (l0, V0, Omega0) with 2E = twoE, by
-   error-free arithmetic from the phase inputs (NaN/Inf on overflow). */
-double chp_phase_omh2 (double l0, double V0, double Omega0, double twoE);
-
-/* 1 - h^2 = (2E - H^2)/(2E), E > 0, with its sign exact (0 iff 2E = H^2);
-   -Inf on overflow. */
-double chp_one_minus_h2 (double E, double H);
-
-/* The largest |L0 + D| the discrete-skate routines accept: beyond it,
-   (1 + l^2) and its products overflow (CHAPLYGIN_ERANGE). */
-#define CHP_L_MAX 0x1p500
-
-/* ---- far.c: the far regime |l| > CHP_L_MAX ---------------------------- */
-
-/* The exact scaling of a far-regime problem onto one within the cap:
-   lengths times 2^-k, energies times 4^m, speeds V times 2^m, momenta H
-   times 2^(m-k+j), Omega times 2^(m+k+j), times times 2^-(k+m), heading
-   increments times 2^j; directions, reversals and counts unchanged.
-   j > 0 only for a motion linear in H (h below 2^-570 of the smallest
-   |l|), where H and the heading may be scaled alone; k = 0 (no scaling)
-   within the cap. */
-typedef struct
-{
-  int k, m, j;
-  double L0, Delta;     /* scaled */
-} chp_far;
-
-/* *r = x 2^e and 1 if that is exact and finite; 0 (r untouched) if not. */
-int chp_exact_ldexp (double x, int e, double *r);
-
-/* The scale exponent k of a path from la to lb: 0 within the cap
-   (max |l| <= 2^500); beyond it, for a far path (one strict sign,
-   max |l| <= 2^400 min |l|), k = ilogb(min |l|) - 99;
-   CHAPLYGIN_ERANGE otherwise (or non-finite). */
-int chp_far_k (double la, double lb, int *k);
-
-/* k and the scaled L0, Delta: k = 0 within the cap; k > 0 for a far slot
-   (chp_far_k of its ends): the scaled min |l| in [2^99, 2^100), the
-   scaled max below 2^500.  CHAPLYGIN_ERANGE elsewhere beyond the cap or
-   where 2^-k Delta is not a normal double. */
-int chp_far_init (double L0, double Delta, chp_far *f);
-
-/* m (E scaled into [1/2, 2)), j and the scaled E, H of a state; where
-   2^(m-k) H would be below 2^-570: j > 0 if LINEAR (the caller's results
-   are linear in H there: H, Omega and heading outputs scaled back by
-   2^-j), else m raised while 4^m E <= 2^1000, else CHAPLYGIN_ERANGE. */
-int chp_far_eh (chp_far *f, double E, double H, int linear, double *Es,
-                double *Hs);
-
-/* m (the speed max(|V|, |l0 Omega|) scaled near 1; j = 0) and the
-   scaled V, Omega of a phase state at l0.  CHAPLYGIN_ERANGE where a
-   scaling is not exact. */
-int chp_far_phase (chp_far *f, double l0, double V, double Omega,
-                   double *Vs, double *Omegas);
-
-int chp_far_params (double L0, double Delta, int dir, chp_far *f);
-
-/* chp_far_init for a system (CHAPLYGIN_EDOM if it is not valid) and, when
-   far (f->k > 0), the scaled system. */
-int chp_far_sys (const chaplygin_discrete *sys, chp_far *f,
-                 chaplygin_discrete *scaled);
+#include "far.h"
 
 /* The largest |L0| the massless skate (rho = 0, lengths in units of the
    slot) accepts: 2 L0 + 1 must be finite. */
 #define CHP_MASSLESS_L_MAX 0x1p1020
-
-/* g(l) = l^2 + 1 - h^2 = (1 + l^2) V^2/(2E), by one fma (cancels near a
-   turning point at l). */
-double chp_motion_g (const chp_motion *m, double l);
-
-/* The same for l + el (el the rounding error of a computed l), accurate to
-   ~2 ulps of g for the given E, H, l (error-free transformations). */
-double chp_motion_g_exact (const chp_motion *m, double l, double el);
-
-/* (B.1) as printed, no reachability checks: V(D)^2 (may be slightly
-   negative near a turning point) and Omega(D). */
-int chp_flow_eval (double L0, double D0, double V0, double Omega0, double D,
-                   double *V2, double *Omega);
 
 /* Heading and time along one leg from la to lb (no turning point strictly
    between them; lb may be one), ga = g(la), gb = g(lb), dl = |lb - la|. */

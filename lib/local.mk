@@ -5,6 +5,13 @@
 noinst_LTLIBRARIES = lib/libchaplygin-core.la
 lib_libchaplygin_core_la_SOURCES = \
 	lib/internal.h \
+	lib/eft.h \
+	lib/eft.c \
+	lib/status.h \
+	lib/collision.h \
+	lib/collision.c \
+	lib/motion.h \
+	lib/motion.c \
 	lib/status.c \
 	lib/units.c \
 	lib/smooth.c \
@@ -20,6 +27,7 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/massless.c \
 	lib/reversal.c \
 	lib/energy.c \
+	lib/far.h \
 	lib/far.c \
 	lib/printed.c
 lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)

@@ -27,13 +27,7 @@ chaplygin_discrete_init (chaplygin_discrete *sys, double L0, double Delta)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
-  sys->L0 = L0;
-  sys->Delta = Delta;
-  chp_collision_coefficients (L0, Delta, 0.0, &sys->C1[0], &sys->C2[0]);
-  chp_collision_coefficients (L0, Delta, Delta, &sys->C1[1], &sys->C2[1]);
-  sys->l_end[0] = L0;
-  sys->l_err[0] = 0.0;
-  chp_two_sum (L0, Delta, &sys->l_end[1], &sys->l_err[1]);
+  chp_system_fill (sys, L0, Delta);
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -88,8 +82,8 @@ chaplygin_discrete_turning_points (double L0, double Delta, double E,
     return CHAPLYGIN_EDOM;
   if (E == 0.0)
     return CHAPLYGIN_ESTATE;
-  double omh2 = chp_one_minus_h2 (E, H), c = 0.0;
-  if (!isfinite (omh2))
+  double one_minus_h2 = chp_one_minus_h2 (E, H), c = 0.0;
+  if (!isfinite (one_minus_h2))
     {
       /* H^2 overflows: the same ratio h^2 = H^2/(2E) from E, H scaled by
          4^-q, 2^-q (exact); where E 4^-q underflows, h^2 > 2^500 and
@@ -97,23 +91,23 @@ chaplygin_discrete_turning_points (double L0, double Delta, double E,
       const int q = ilogb (H) - 256;
       double Es = E, Hs = H;
       if (chp_exact_ldexp (E, -2 * q, &Es) && chp_exact_ldexp (H, -q, &Hs))
-        omh2 = chp_one_minus_h2 (Es, Hs);
+        one_minus_h2 = chp_one_minus_h2 (Es, Hs);
       else
         Es = E, Hs = H;
-      if (!isfinite (omh2))
+      if (!isfinite (one_minus_h2))
         c = fabs (Hs) / sqrt (2.0 * Es);      /* E (Es) tiny: no overflow */
     }
   int n = 0;
   double r[2] = { 0.0, 0.0 };
-  if (c == 0.0 && omh2 == 0.0)
+  if (c == 0.0 && one_minus_h2 == 0.0)
     {
       n = 1;
       r[0] = -L0;
     }
-  else if (c > 0.0 || omh2 < 0.0)
+  else if (c > 0.0 || one_minus_h2 < 0.0)
     {
       if (c == 0.0)
-        c = sqrt (-omh2);
+        c = sqrt (-one_minus_h2);
       n = 2;
       r[0] = -L0 - c;
       r[1] = -L0 + c;
@@ -305,26 +299,24 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
           chaplygin_discrete_state *out, chaplygin_discrete_event *ev)
 {
   chp_far f;
-  chaplygin_discrete ss;
   chaplygin_discrete_state si = *in, so;
   chaplygin_discrete_event se;
-  CHP_TRY (chp_far_init (sys->L0, sys->Delta, &f));
-  CHP_TRY (chaplygin_discrete_init (&ss, f.L0, f.Delta));
-  CHP_TRY (chp_far_eh (&f, in->E, in->H, 1, &si.E, &si.H));
+  CHP_TRY (chp_far_open_sys (sys, &f));
+  CHP_TRY (chp_far_state (&f, in->E, in->H, 1, &si.E, &si.H));
   si.tau = 0.0;
   si.theta = 0.0;
   unsigned req = request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
   if (request & CHAPLYGIN_WANT_PEG)
     req |= CHAPLYGIN_WANT_THETA;
-  CHP_TRY (step_core (&ss, &si, NULL, req, opt, &so, &se));
+  CHP_TRY (step_core (&f.sys, &si, NULL, req, opt, &so, &se));
   if ((req & CHAPLYGIN_WANT_TAU) && !(se.dtau >= DBL_MIN))
     return CHAPLYGIN_ERANGE;
   chaplygin_discrete_state r = *in;
   r.dir = so.dir;
-  r.E = ldexp (so.E, -2 * f.m);
-  r.H = ldexp (so.H, f.k - f.m - f.j);
-  const double dtau = ldexp (se.dtau, f.k + f.m);
-  const double dtheta = ldexp (se.dtheta, -f.j);
+  r.E = chp_far_out (&f, CHP_Q_ENERGY, so.E);
+  r.H = chp_far_out (&f, CHP_Q_MOMENTUM, so.H);
+  const double dtau = chp_far_out (&f, CHP_Q_TIME, se.dtau);
+  const double dtheta = chp_far_out (&f, CHP_Q_HEADING, se.dtheta);
   const double theta1 = in->theta + dtheta;
   if (request & CHAPLYGIN_WANT_THETA)
     r.theta = theta1;
@@ -334,8 +326,8 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (request & CHAPLYGIN_WANT_PEG)
     move_peg (in->peg, Dminus != 0.0 ? sys->Delta : -sys->Delta, theta1,
               r.peg);
-  const double Vminus = ldexp (se.Vminus, -f.m);
-  const double Dc = se.reversal ? ldexp (se.Dc, f.k) : 0.0;
+  const double Vminus = chp_far_out (&f, CHP_Q_SPEED, se.Vminus);
+  const double Dc = se.reversal ? chp_far_out (&f, CHP_Q_LENGTH, se.Dc) : 0.0;
   if (!chp_finite4 (r.E, r.H, r.theta, r.tau)
       || !chp_finite4 (r.peg[0], r.peg[1], dtau, Dc))
     return CHAPLYGIN_ERANGE;
@@ -417,13 +409,13 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   const double delta = in->dir * Delta * (2.0 * L0 + Delta);
   const double g1_eh = chp_motion_g_exact (&m, l1, sys->l_err[far]);
   const double g1 = (g0_phase && g0 + fabs (delta)
-                     <= chp_one_plus_sq (l1) + fabs (1.0 - m.omh2))
+                     <= chp_one_plus_sq (l1) + fabs (1.0 - m.one_minus_h2))
     ? g0 + delta : g1_eh;
 
   int reversal = 0;
-  if (m.omh2 >= 0.0)
+  if (m.one_minus_h2 >= 0.0)
     {
-      if (m.omh2 == 0.0 && l0 * l1 <= 0.0)
+      if (m.one_minus_h2 == 0.0 && l0 * l1 <= 0.0)
         return CHAPLYGIN_ESPIN;
     }
   else if (in->dir * l0 < 0.0)
@@ -474,7 +466,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
             {
               /* Out to the turning point and back: twice one leg.
                  |l0| - c = g0/(|l0| + c) without cancellation. */
-              double c = m.sq, lc = copysign (c, l0);
+              double c = m.sqrt_q, lc = copysign (c, l0);
               double dl = g0 / (fabs (l0) + c);
               CHP_TRY (chp_leg (&m, l0, g0, lc, 0.0, dl, &o, pth, pta));
               dtheta *= 2.0;
@@ -508,7 +500,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (ev)
     {
       ev->reversal = reversal;
-      ev->Dc = reversal ? copysign (sqrt (-m.omh2), l0) - L0 : 0.0;
+      ev->Dc = reversal ? copysign (sqrt (-m.one_minus_h2), l0) - L0 : 0.0;
       ev->Dminus = Dminus;
       ev->Dplus = Delta - Dminus;
       ev->Vminus = Vminus;
@@ -681,16 +673,15 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
       /* far (lib/far.c): the scaled state; V times 2^-m, Omega times
          2^-(k+m+j) */
       chp_far f;
-      chaplygin_discrete ss;
       chaplygin_discrete_state si = *st;
       double qs[4];
-      CHP_TRY (chp_far_sys (sys, &f, &ss));
-      CHP_TRY (chp_far_eh (&f, st->E, st->H, 1, &si.E, &si.H));
-      CHP_TRY (chaplygin_discrete_state_to_phase (&ss, &si, qs));
+      CHP_TRY (chp_far_open_sys (sys, &f));
+      CHP_TRY (chp_far_state (&f, st->E, st->H, 1, &si.E, &si.H));
+      CHP_TRY (chaplygin_discrete_state_to_phase (&f.sys, &si, qs));
       q[CHAPLYGIN_D] = D;
-      q[CHAPLYGIN_V] = ldexp (qs[CHAPLYGIN_V], -f.m);
+      q[CHAPLYGIN_V] = chp_far_out (&f, CHP_Q_SPEED, qs[CHAPLYGIN_V]);
       q[CHAPLYGIN_THETA] = st->theta;
-      q[CHAPLYGIN_OMEGA] = ldexp (qs[CHAPLYGIN_OMEGA], -(f.k + f.m + f.j));
+      q[CHAPLYGIN_OMEGA] = chp_far_out (&f, CHP_Q_RATE, qs[CHAPLYGIN_OMEGA]);
       return CHAPLYGIN_SUCCESS;
     }
   double Om = st->H / chp_one_plus_sq (l);
@@ -731,23 +722,21 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
          time times 2^-(k+m); CHAPLYGIN_ERANGE where the scaled time is
          not a normal double */
       chp_far f;
-      chaplygin_discrete ss;
       double qs[4], qn[4], dts = 0.0, dt = 0.0;
-      CHP_TRY (chp_far_init (sys->L0, sys->Delta, &f));
-      CHP_TRY (chaplygin_discrete_init (&ss, f.L0, f.Delta));
+      CHP_TRY (chp_far_open_sys (sys, &f));
       const double l0 = sys->L0 + qplus[CHAPLYGIN_D];
       CHP_TRY (chp_far_phase (&f, l0, qplus[CHAPLYGIN_V],
                               qplus[CHAPLYGIN_OMEGA], &qs[CHAPLYGIN_V],
                               &qs[CHAPLYGIN_OMEGA]));
-      qs[CHAPLYGIN_D] = qplus[CHAPLYGIN_D] == 0.0 ? 0.0 : f.Delta;
+      qs[CHAPLYGIN_D] = qplus[CHAPLYGIN_D] == 0.0 ? 0.0 : f.sys.Delta;
       qs[CHAPLYGIN_THETA] = qplus[CHAPLYGIN_THETA];
-      CHP_TRY (chaplygin_discrete_poincare (&ss, qs, opt, qn,
+      CHP_TRY (chaplygin_discrete_poincare (&f.sys, qs, opt, qn,
                                             dtau ? &dts : NULL));
       if (dtau && !(dts >= DBL_MIN))
         return CHAPLYGIN_ERANGE;
-      double om = ldexp (qn[CHAPLYGIN_OMEGA], -(f.k + f.m));
-      double v = ldexp (qn[CHAPLYGIN_V], -f.m);
-      if (!chp_exact_ldexp (dts, f.k + f.m, &dt))
+      double om = chp_far_out (&f, CHP_Q_RATE, qn[CHAPLYGIN_OMEGA]);
+      double v = chp_far_out (&f, CHP_Q_SPEED, qn[CHAPLYGIN_V]);
+      if (!chp_far_out_exact (&f, CHP_Q_TIME, dts, &dt))
         return CHAPLYGIN_ERANGE;
       qnext[CHAPLYGIN_D] = qn[CHAPLYGIN_D] == 0.0 ? 0.0 : sys->Delta;
       qnext[CHAPLYGIN_V] = v;

@@ -48,7 +48,7 @@ rhs_time (double t, const double y[], double dydt[], void *p)
 {
   (void) t;
   const struct ode_params *par = p;
-  if (chaplygin_discrete_field (par->l0, y, dydt) != CHAPLYGIN_SUCCESS)
+  if (chp_field (par->l0, y, dydt) != CHAPLYGIN_SUCCESS)
     return GSL_EBADFUNC;
   if (par->k)
     dydt[CHAPLYGIN_V] = ldexp (dydt[CHAPLYGIN_V], -2 * par->k);

@@ -486,16 +486,15 @@ chaplygin_printed_discrete_collisions_before_reversal
   if (!sys || !reverses || !n || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
   chp_far far;
-  chaplygin_discrete ss;
-  CHP_TRY (chp_far_sys (sys, &far, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &far));
   if (far.k)
     {
       double Es, Hs;
       if (!chp_finite2 (E, H) || E < 0.0)
         return CHAPLYGIN_EDOM;
-      CHP_TRY (chp_far_eh (&far, E, H, 0, &Es, &Hs));
+      CHP_TRY (chp_far_state (&far, E, H, 0, &Es, &Hs));
       return chaplygin_printed_discrete_collisions_before_reversal
-        (&ss, dir, Es, Hs, reverses, n);
+        (&far.sys, dir, Es, Hs, reverses, n);
     }
   chp_run run;
   chp_motion m;
@@ -562,7 +561,7 @@ chaplygin_printed_discrete_two_turning_points (double L0, double Delta,
   chp_motion m;
   (void) chaplygin_discrete_init (&sys, L0, Delta);
   (void) chp_motion_init (E, H, &m);
-  *two = m.omh2 < 0.0
+  *two = m.one_minus_h2 < 0.0
     && (chp_motion_g_exact (&m, sys.l_end[0], sys.l_err[0]) > 0.0
         || chp_motion_g_exact (&m, sys.l_end[1], sys.l_err[1]) > 0.0);
   return CHAPLYGIN_SUCCESS;

@@ -107,13 +107,23 @@ chp_run_init (const chaplygin_discrete *sys, int dir, chp_run *run)
 int
 chp_run_fate (const chp_run *run, const chp_motion *m)
 {
-  if (m->omh2 >= 0.0)
-    return (m->omh2 == 0.0 && run->crosses) ? CHP_FATE_SPIN : CHP_FATE_PASS;
+  if (m->one_minus_h2 >= 0.0)
+    return (m->one_minus_h2 == 0.0 && run->crosses) ? CHP_FATE_SPIN : CHP_FATE_PASS;
   if (!run->toward)
     return CHP_FATE_PASS;
   if (run->crosses || chp_motion_g_exact (m, run->lf, run->lf_err) <= 0.0)
     return CHP_FATE_REVERSE;
   return CHP_FATE_PASS;
+}
+
+/* Validate the common arguments L0, Delta, dir (CHAPLYGIN_EINVAL for dir
+   first) and open their far scaling (lib/far.c). */
+static int
+open_params (double L0, double Delta, int dir, chp_far *f)
+{
+  if (dir != 1 && dir != -1)
+    return CHAPLYGIN_EINVAL;
+  return chp_far_open (L0, Delta, f);
 }
 
 /* Validate the common arguments L0, Delta, dir and set up the run of
@@ -147,14 +157,15 @@ chaplygin_discrete_ratio_lower_bound (double L0, double Delta, int dir,
   if (!rmin)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  CHP_TRY (chp_far_params (L0, Delta, dir, &f));
+  CHP_TRY (open_params (L0, Delta, dir, &f));
   if (f.k)
     {
-      /* far (lib/far.c): r = 2E/H^2 scales as 4^k; below 2^-1000 here,
-         subnormal or zero (ERANGE) */
+      /* far (lib/far.c): r = 2E/H^2 is an inverse area; below 2^-1000
+         here, subnormal or zero (ERANGE) */
       double r;
-      CHP_TRY (chaplygin_discrete_ratio_lower_bound (f.L0, f.Delta, dir, &r));
-      r = ldexp (r, -2 * f.k);
+      CHP_TRY (chaplygin_discrete_ratio_lower_bound (f.sys.L0, f.sys.Delta,
+                                                     dir, &r));
+      r = chp_far_out (&f, CHP_Q_INVERSE_AREA, r);
       if (!(r > 0.0))
         return CHAPLYGIN_ERANGE;
       *rmin = r;
@@ -191,16 +202,16 @@ chaplygin_discrete_reversal_range (double L0, double Delta, int dir,
   if (!rlo || !rhi || !nonempty)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  CHP_TRY (chp_far_params (L0, Delta, dir, &f));
+  CHP_TRY (open_params (L0, Delta, dir, &f));
   if (f.k)
     {
       /* far: as chaplygin_discrete_ratio_lower_bound */
       double lo, hi;
       int ne;
-      CHP_TRY (chaplygin_discrete_reversal_range (f.L0, f.Delta, dir, &lo,
-                                                  &hi, &ne));
-      lo = ldexp (lo, -2 * f.k);
-      hi = ldexp (hi, -2 * f.k);
+      CHP_TRY (chaplygin_discrete_reversal_range (f.sys.L0, f.sys.Delta, dir,
+                                                  &lo, &hi, &ne));
+      lo = chp_far_out (&f, CHP_Q_INVERSE_AREA, lo);
+      hi = chp_far_out (&f, CHP_Q_INVERSE_AREA, hi);
       if (!(lo > 0.0 && hi > 0.0))
         return CHAPLYGIN_ERANGE;
       *rlo = lo;
@@ -235,9 +246,9 @@ chaplygin_discrete_c3 (double L0, double Delta, int dir, double *C3)
   if (!C3)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  CHP_TRY (chp_far_params (L0, Delta, dir, &f));
+  CHP_TRY (open_params (L0, Delta, dir, &f));
   if (f.k)      /* far: C3 is a ratio of lengths squared, scale-free */
-    return chaplygin_discrete_c3 (f.L0, f.Delta, dir, C3);
+    return chaplygin_discrete_c3 (f.sys.L0, f.sys.Delta, dir, C3);
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
   /* |Delta (2 L0 + Delta)| < 2^1003: finite */
@@ -277,7 +288,7 @@ count_estimate (const chp_run *run, const chp_motion *m)
   double gm, nm;
   if (run->crosses)
     {
-      gm = m->omh2;
+      gm = m->one_minus_h2;
       nm = 1.0;
     }
   else
@@ -360,19 +371,18 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
   if (!sys || !reverses || !n)
     return CHAPLYGIN_EINVAL;
   chp_far far;
-  chaplygin_discrete ss;
   if (dir != 1 && dir != -1)
     return CHAPLYGIN_EINVAL;
-  CHP_TRY (chp_far_sys (sys, &far, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &far));
   if (far.k)
     {
       /* far: the scaled state; n and the outcome are scale-free */
       double Es, Hs;
       if (!chp_finite2 (E, H) || E < 0.0)
         return CHAPLYGIN_EDOM;
-      CHP_TRY (chp_far_eh (&far, E, H, 0, &Es, &Hs));
-      return chaplygin_discrete_collisions_before_reversal (&ss, dir, Es, Hs,
-                                                            reverses, n);
+      CHP_TRY (chp_far_state (&far, E, H, 0, &Es, &Hs));
+      return chaplygin_discrete_collisions_before_reversal (&far.sys, dir, Es,
+                                                            Hs, reverses, n);
     }
   chp_run run;
   chp_motion m;
@@ -484,19 +494,19 @@ chaplygin_discrete_two_turning_points (double L0, double Delta, double E,
   chaplygin_discrete sys;
   chp_motion m;
   chp_far f;
-  CHP_TRY (chp_far_init (L0, Delta, &f));
+  CHP_TRY (chp_far_open (L0, Delta, &f));
   if (f.k)
     {
       /* far: the scaled problem (a far slot holds no turning point pair:
          its ends have one sign) */
       double Es, Hs;
-      CHP_TRY (chp_far_eh (&f, E, H, 1, &Es, &Hs));
-      return chaplygin_discrete_two_turning_points (f.L0, f.Delta, Es, Hs,
-                                                    two);
+      CHP_TRY (chp_far_state (&f, E, H, 1, &Es, &Hs));
+      return chaplygin_discrete_two_turning_points (f.sys.L0, f.sys.Delta,
+                                                    Es, Hs, two);
     }
   CHP_TRY (chaplygin_discrete_init (&sys, L0, Delta));
   CHP_TRY (chp_motion_init (E, H, &m));
-  *two = L0 < 0.0 && -L0 < Delta && m.omh2 < 0.0
+  *two = L0 < 0.0 && -L0 < Delta && m.one_minus_h2 < 0.0
     && chp_motion_g_exact (&m, sys.l_end[0], sys.l_err[0]) > 0.0
     && chp_motion_g_exact (&m, sys.l_end[1], sys.l_err[1]) > 0.0;
   return CHAPLYGIN_SUCCESS;

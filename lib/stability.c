@@ -66,9 +66,10 @@ chaplygin_discrete_sigma4 (double L0, double Delta, int dir, double *sigma4,
     return CHAPLYGIN_EDOM;
   double l1 = L0 + Delta;
   chp_far f;
-  CHP_TRY (chp_far_init (L0, Delta, &f));
+  CHP_TRY (chp_far_open (L0, Delta, &f));
   if (f.k)      /* far (lib/far.c): sigma4 = C2 is scale-free */
-    return chaplygin_discrete_sigma4 (f.L0, f.Delta, dir, sigma4, sigma);
+    return chaplygin_discrete_sigma4 (f.sys.L0, f.sys.Delta, dir, sigma4,
+                                      sigma);
   /* the collision ends the segment at the far end: b is l there */
   double s = dir > 0 ? chp_collision_ratio (L0, Delta, l1, L0)
     : chp_collision_ratio (L0, Delta, L0, l1);
@@ -113,9 +114,9 @@ chaplygin_discrete_stable (double L0, double Delta, int dir, int *stable)
   if (!chp_finite2 (L0, Delta) || !(Delta > 0.0))
     return CHAPLYGIN_EDOM;
   chp_far f;
-  CHP_TRY (chp_far_init (L0, Delta, &f));
+  CHP_TRY (chp_far_open (L0, Delta, &f));
   if (f.k)      /* far (lib/far.c): scale-free */
-    return chaplygin_discrete_stable (f.L0, f.Delta, dir, stable);
+    return chaplygin_discrete_stable (f.sys.L0, f.sys.Delta, dir, stable);
   int first = dir > 0 ? L0 > -Delta : L0 < 0.0;
   *stable = first && criterion_value (L0, Delta, dir) > 0.0;
   return CHAPLYGIN_SUCCESS;
@@ -211,25 +212,23 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
   if (!sys || !st || !J)
     return CHAPLYGIN_EINVAL;
   chp_far f;
-  chaplygin_discrete ss;
-  CHP_TRY (chp_far_sys (sys, &f, &ss));
+  CHP_TRY (chp_far_open_sys (sys, &f));
   if (f.k)
     {
       /* far (lib/far.c): the Jacobian of the scaled map in the scaled
-         coordinates E_s = 4^m E, H_s = 2^(m-k) H, scaled back */
+         coordinates, scaled back (the entries not listed are
+         scale-free) */
       chaplygin_discrete_state si = *st;
       double Js[16];
       if (st->dir != 1 && st->dir != -1)
         return CHAPLYGIN_EINVAL;
       if (!chp_finite2 (st->E, st->H) || st->E < 0.0)
         return CHAPLYGIN_EDOM;
-      CHP_TRY (chp_far_eh (&f, st->E, st->H, 1, &si.E, &si.H));
-      CHP_TRY (chaplygin_discrete_jacobian (&ss, &si, Js));
-      /* dE'/dH = 2 C1 H and dtheta'/dE are linear in H (2^-j), the
-         others not */
-      Js[7] = ldexp (Js[7], -f.k - f.m - f.j);  /* dE'/dH */
-      Js[9] = ldexp (Js[9], 2 * f.m - f.j);     /* dtheta'/dE */
-      Js[11] = ldexp (Js[11], f.m - f.k);       /* dtheta'/dH */
+      CHP_TRY (chp_far_state (&f, st->E, st->H, 1, &si.E, &si.H));
+      CHP_TRY (chaplygin_discrete_jacobian (&f.sys, &si, Js));
+      Js[7] = chp_far_out (&f, CHP_Q_DENERGY_DMOMENTUM, Js[7]);
+      Js[9] = chp_far_out (&f, CHP_Q_DHEADING_DENERGY, Js[9]);
+      Js[11] = chp_far_out (&f, CHP_Q_DHEADING_DMOMENTUM, Js[11]);
       for (int i = 0; i < 16; i++)
         if (!isfinite (Js[i]))
           return CHAPLYGIN_ERANGE;
@@ -256,7 +255,7 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
     {
       chp_motion m;
       CHP_TRY (chp_motion_init (E, H, &m));
-      const double h = m.h, omh2 = m.omh2;
+      const double h = m.h, one_minus_h2 = m.one_minus_h2;
       const double lo = sys->l_end[0], hi = sys->l_end[1];
       const double glo = chp_motion_g_exact (&m, lo, sys->l_err[0]);
       const double ghi = chp_motion_g_exact (&m, hi, sys->l_err[1]);
@@ -269,8 +268,8 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
       const double T = s2E * ev.dtau;
       const double num = ((Bhi - Blo) + Theta) - T;
       const double size = fabs (Bhi) + fabs (Blo) + Theta + T;
-      if (omh2 != 0.0 && isfinite (num) && fabs (num) * 8.0 >= size)
-        dphi = num / omh2;
+      if (one_minus_h2 != 0.0 && isfinite (num) && fabs (num) * 8.0 >= size)
+        dphi = num / one_minus_h2;
       else
         {
           struct dphi_params p = { sys->L0, h * h };

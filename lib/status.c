@@ -1,10 +1,8 @@
-/* status.c -- status codes and options shared by every entry point. */
+/* status.c -- kernel: the status codes' messages and the options shared by
+   every entry point (status.h).  Uses chaplygin.h only. */
 #include <config.h>
 
-#include <float.h>
-#include <math.h>
-
-#include "internal.h"
+#include "status.h"
 
 /* chaplygin_strerror: a fixed English sentence for each status of enum
    chaplygin_status; "unknown status" for any other value.  Never NULL. */
@@ -66,42 +64,4 @@ chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out)
     }
   *out = *o;
   return CHAPLYGIN_SUCCESS;
-}
-
-/* chp_L_over_one_plus_sq: L/(1 + L^2), computed as 1/(L + 1/L) for |L| > 1
-   so that it neither overflows nor loses the leading digits; error within
-   2 ulps (two roundings in either branch plus the fma). */
-double
-chp_L_over_one_plus_sq (double L)
-{
-  if (fabs (L) <= 1.0)
-    return L / chp_one_plus_sq (L);
-  return 1.0 / (L + 1.0 / L);
-}
-
-/* chp_one_plus_L0_L0D: 1 + L0 (L0 + Delta).
-   Method: (s, e) = TwoSum(L0, Delta) gives L0 + Delta = s + e exactly; then
-   1 + L0 s + L0 e = fma(L0, s, 1) + L0 e.  The only errors are the two final
-   roundings and that of L0 e (itself ~ eps |L0 s|), so the result is within
-   ~1 ulp even when 1 + L0 (L0 + Delta) cancels (sigma4 near 0).  */
-double
-chp_one_plus_L0_L0D (double L0, double Delta)
-{
-  double s, e;
-  chp_two_sum (L0, Delta, &s, &e);
-  return fma (L0, s, 1.0) + L0 * e;
-}
-
-/* chp_collision_ratio: [1 + L0 (L0 + Delta)]/[1 + b^2], where b and bp are
-   the values of L0 + D at the two slot ends (b for the denominator, bp the
-   other; b bp = L0 (L0 + Delta)).  For arguments up to 2^500 the quotient
-   of two accurately formed numbers (error <= ~2 ulps); beyond, where 1 + b^2
-   would overflow, (1/b^2 + bp/b)/(1/b^2 + 1). */
-double
-chp_collision_ratio (double L0, double Delta, double b, double bp)
-{
-  if (fabs (b) <= 0x1p500 && fabs (L0) <= 0x1p500 && fabs (Delta) <= 0x1p500)
-    return chp_one_plus_L0_L0D (L0, Delta) / chp_one_plus_sq (b);
-  double ib = 1.0 / b;
-  return (ib * ib + bp * ib) / (ib * ib + 1.0);
 }
