@@ -13,123 +13,6 @@
 
 #include "internal.h"
 
-/* 1 + (l + el)^2 to ~1 ulp. */
-static double
-one_plus_sq_exact (double l, double el)
-{
-  return chp_one_plus_sq (l) + 2.0 * l * el;
-}
-
-/* |C2|^k = a 2^j and L = k log C2^2 (L = 0, a = 1, j = 0 for |C2| = 1);
-   the power of 2 is split off where |L/2| > 300, so that |C2|^k does not
-   underflow before the exponent of H is put back.  CHAPLYGIN_ERANGE where
-   it exceeds 2^4096. */
-static int
-c2_power (const chp_run *run, double k, double *a, int *j, double *L)
-{
-  const double sign = run->C2 < 0.0 && fmod (k, 2.0) == 1.0 ? -1.0 : 1.0;
-  *a = sign;
-  *j = 0;
-  *L = 0.0;
-  if (run->omq == 0.0)
-    return CHAPLYGIN_SUCCESS;
-  *L = k * run->logq;
-  double hl = 0.5 * *L;
-  if (fabs (hl) > 300.0)
-    {
-      /* exp(hl) = 2^j exp(hl - j ln 2), ln 2 split as in fdlibm (the
-         low 21 bits of ln2_hi are zero: j ln2_hi is exact for
-         |j| < 2^21) */
-      const double ln2 = 0x1.62e42fefa39efp-1;   /* log 2 rounded */
-      const double ln2_hi = 6.93147180369123816490e-01;
-      const double ln2_lo = 1.90821492927058770002e-10;
-      double jj = floor (hl / ln2);
-      if (jj > 4096.0)
-        return CHAPLYGIN_ERANGE;
-      if (jj < -4096.0)
-        jj = -4096.0;           /* H_k underflows to 0 whatever H is */
-      *j = (int) jj;
-      hl = (hl - jj * ln2_hi) - jj * ln2_lo;
-    }
-  *a = sign * exp (hl);
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* chp_run_state: the (B.9) iterate; see internal.h.
-   Method: S_k = (1 - q^k)/(1 - q) as expm1(k log q)/(q - 1), with log q
-   = 2 log1p(|C2| - 1) and q - 1 = (C2 - 1)(C2 + 1) from the accurate
-   factors of chp_run_init: no cancellation when q is near 1 and no
-   rounding growth with k beyond that of k log q; |H_k| = exp(k log q / 2)
-   |H|.  For q > 1, H^2 S_k = H_k^2 (1 - q^-k)/(q - 1), so that neither
-   H^2 (H tiny) nor S_k (k log q large) leaves the range of double while
-   the iterate is a state; H = m 2^e is scaled exactly (frexp, ldexp).
-   Accuracy: S_k within ~(4 + |k log q|) eps, H_k within ~(4 + 1.5 |k log q|)
-   eps (log q within ~3 eps, relatively; measured 1.2 x that bound).
-   CHAPLYGIN_ERANGE where H_k or E_k overflows: beyond the first
-   reversal of a run, for a valid state. */
-int
-chp_run_state (const chp_run *run, double E, double H, double k, double *Ek,
-               double *Hk)
-{
-  if (k == 0.0 || H == 0.0)
-    {
-      *Ek = E;
-      *Hk = H;
-      return CHAPLYGIN_SUCCESS;
-    }
-  int eh, j, jt = 0;            /* T carries the exponent 2^-2(eh+jt) */
-  const double m = frexp (H, &eh);
-  double a, L, T;               /* C2^k (times 2^-j); C1 H^2 S_k 2^-2(eh+jt) */
-  CHP_TRY (c2_power (run, k, &a, &j, &L));
-  if (run->omq == 0.0)
-    T = run->C1 * m * m * k;    /* |C2| = 1: S_k = k */
-  else if (L <= 0.0)
-    T = run->C1 * m * m * (expm1 (L) / -run->omq);
-  else
-    {
-      double ma = m * a;
-      jt = j;
-      T = run->C1 * ma * ma * (-expm1 (-L) / -run->omq);
-    }
-  double h = ldexp (m * a, eh + j);
-  double e = E + ldexp (T, 2 * (eh + jt));
-  if (!isfinite (e) || !isfinite (h))
-    return CHAPLYGIN_ERANGE;
-  *Ek = e;
-  *Hk = h;
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* H_k = C2^k H alone, as chp_run_state forms it (for a far slot, where
-   the run is the scaled one and H the unscaled momentum: C2 is
-   scale-free). */
-static int
-run_momentum (const chp_run *run, double H, double k, double *Hk)
-{
-  if (k == 0.0 || H == 0.0)
-    {
-      *Hk = H;
-      return CHAPLYGIN_SUCCESS;
-    }
-  int eh, j;
-  const double m = frexp (H, &eh);
-  double a, L;
-  CHP_TRY (c2_power (run, k, &a, &j, &L));
-  double h = ldexp (m * a, eh + j);
-  if (!isfinite (h))
-    return CHAPLYGIN_ERANGE;
-  *Hk = h;
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* chp_run_final_energy: (B.10) in the form of (B.12); see internal.h. */
-double
-chp_run_final_energy (const chp_run *run, double E, double g0, double H)
-{
-  double ns = one_plus_sq_exact (run->ls, run->ls_err);
-  return E * (g0 / ns) + 0.5 * H * (H / ns) * run->kappa;
-}
-
 /* Common validation: the run of dir, the motion (E, H) and its validity
    as a post-collision state; *g0 = g(l_s). */
 static int
@@ -138,7 +21,7 @@ setup (const chaplygin_discrete *sys, int dir, double E, double H,
 {
   CHP_TRY (chp_run_init (sys, dir, run));
   CHP_TRY (chp_motion_init (E, H, m));
-  *g0 = chp_motion_g_exact (m, run->ls, run->ls_err);
+  *g0 = chp_motion_g_exact (m, run->seg.l0, run->seg.l0_err);
   if (!(*g0 > 0.0))
     return CHAPLYGIN_ESTATE;
   return CHAPLYGIN_SUCCESS;
@@ -163,7 +46,7 @@ far_state (const chaplygin_discrete *sys, int dir, double E, double H,
 static int
 fate_status (int fate)
 {
-  return fate == CHP_FATE_SPIN ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
+  return fate == CHP_SEGMENT_SPIN ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
 }
 
 /* chaplygin_discrete_energy_after: (B.9), corrected
@@ -207,7 +90,7 @@ chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
       CHP_TRY (chaplygin_discrete_energy_after (&f.sys, dir, Es, Hs, n, &e,
                                                 &h));
       CHP_TRY (chp_run_init (&f.sys, dir, &run));
-      CHP_TRY (run_momentum (&run, H, (double) n, &h));
+      CHP_TRY (chp_run_momentum (&run, H, (double) n, &h));
       e = chp_far_out (&f, CHP_Q_ENERGY, e);
       if (!isfinite (e) || !isfinite (h))
         return CHAPLYGIN_ERANGE;
@@ -221,11 +104,11 @@ chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
   CHP_TRY (setup (sys, dir, E, H, &run, &m, &g0));
   if (n > 0)
     {
-      int fate = chp_run_fate (&run, &m);
-      if (fate != CHP_FATE_PASS)
+      int fate = chp_segment_classify (&run.seg, &m, NULL);
+      if (fate != CHP_SEGMENT_PASS)
         return fate_status (fate);
     }
-  if (n > 1 && run.toward && H != 0.0)
+  if (n > 1 && run.seg.toward && H != 0.0)
     {
       chp_motion mk;
       double gk;
@@ -234,9 +117,9 @@ chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
           != CHAPLYGIN_SUCCESS || !(e > 0.0)
           || chp_motion_init (e, h, &mk) != CHAPLYGIN_SUCCESS)
         return CHAPLYGIN_ESTATE;
-      gk = chp_motion_g_exact (&mk, run.ls, run.ls_err);
-      int fate = gk > 0.0 ? chp_run_fate (&run, &mk) : CHP_FATE_REVERSE;
-      if (fate != CHP_FATE_PASS)
+      gk = chp_motion_g_exact (&mk, run.seg.l0, run.seg.l0_err);
+      int fate = gk > 0.0 ? chp_segment_classify (&run.seg, &mk, NULL) : CHP_SEGMENT_REVERSE;
+      if (fate != CHP_SEGMENT_PASS)
         return fate_status (fate);
     }
   CHP_TRY (chp_run_state (&run, E, H, (double) n, &e, &h));
@@ -294,8 +177,8 @@ chaplygin_discrete_final_energy (const chaplygin_discrete *sys, int dir,
       *Ef = E;
       return CHAPLYGIN_SUCCESS;
     }
-  int fate = chp_run_fate (&run, &m);
-  if (fate != CHP_FATE_PASS)
+  int fate = chp_segment_classify (&run.seg, &m, NULL);
+  if (fate != CHP_SEGMENT_PASS)
     return fate_status (fate);
   if (!(run.omq > 0.0))
     return CHAPLYGIN_EDOM;
@@ -441,8 +324,8 @@ chaplygin_discrete_final_velocity (double L0, double Delta, double V,
       return CHAPLYGIN_SUCCESS;
     }
   CHP_TRY (chp_motion_init (E, H, &m));
-  int fate = chp_run_fate (&run, &m);
-  if (fate != CHP_FATE_PASS)
+  int fate = chp_segment_classify (&run.seg, &m, NULL);
+  if (fate != CHP_SEGMENT_PASS)
     return fate_status (fate);
   if (!(run.omq > 0.0))
     return CHAPLYGIN_EDOM;

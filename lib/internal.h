@@ -71,54 +71,6 @@ int chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
              double dl, const chaplygin_options *opt, double *dtheta,
              double *dtau);
 
-/* ---- reversal.c: a run of collisions without reversal ------------- */
-
-/* A run of collisions without reversal in direction dir: the (B.3)
-   coefficients and what the series (B.6), (B.9), (B.10) need of them. */
-typedef struct
-{
-  int dir;
-  double Delta;
-  double s;             /* 2 L0 + Delta = l_s + l_f, rounded once */
-  double ls, ls_err;    /* l at the starting end (+ its rounding error) */
-  double lf, lf_err;    /* l at the far end */
-  int toward;           /* the path moves towards l = 0: dir ls < 0 */
-  int crosses;          /* the path reaches l = 0 (ls, lf not of one
-                           strict sign; by signs, not by ls lf <= 0) */
-  double C1, C2;        /* (B.3): E' = E + C1 H^2, H' = C2 H */
-  double c2m1, c2p1;    /* C2 - 1 and C2 + 1, each to a few ulps */
-  double omq;           /* 1 - C2^2 = -(C2 - 1)(C2 + 1) */
-  double logq;          /* log C2^2: 2 log1p(|C2| - 1) for |C2| > 1/2,
-                           2 log |C2| otherwise; -Inf if C2 = 0 */
-  double kappa;         /* 1 + 2 C1 (1 + ls^2)/(1 - C2^2)
-                           = 1 - dir Delta/(lf (2 + lf (2 L0 + Delta))) */
-} chp_run;
-
-/* The run of direction dir of a valid system.  CHAPLYGIN_EINVAL (dir),
-   CHAPLYGIN_EDOM (system), CHAPLYGIN_ERANGE (|l| > CHP_L_MAX). */
-int chp_run_init (const chaplygin_discrete *sys, int dir, chp_run *run);
-
-/* What the path of a post-collision state of the run does: exactly the
-   classification of chaplygin_discrete_step (m: the motion, valid). */
-enum
-{
-  CHP_FATE_PASS = 0,      /* reaches the far end: a (B.3) collision */
-  CHP_FATE_REVERSE = 1,   /* turns (B.5) and returns: a (B.4) collision */
-  CHP_FATE_SPIN = 2       /* 2E = H^2 and reaches l = 0: no collision */
-};
-int chp_run_fate (const chp_run *run, const chp_motion *m);
-
-/* (B.9) the state after k collisions of the run, no checks:
-   E_k = E + C1 H^2 S_k, S_k = expm1(k log q)/(q - 1) (k if q = 1),
-   H_k = C2^k H.  CHAPLYGIN_ERANGE if either is not finite. */
-int chp_run_state (const chp_run *run, double E, double H, double k,
-                   double *Ek, double *Hk);
-
-/* (B.10) as E g0/(1 + ls^2) + kappa H^2/(2 (1 + ls^2)), g0 = g(ls)
-   (= (1 + ls^2) V^2/(2E)): V^2/2 + kappa (1 + ls^2) Omega^2/2, the form
-   of (B.12), without the cancellation of E + C1 H^2/(1 - C2^2) when
-   kappa >= 0.  Meaningful only for omq > 0. */
-double chp_run_final_energy (const chp_run *run, double E, double g0,
-                             double H);
+#include "run.h"
 
 #endif /* CHAPLYGIN_INTERNAL_H */

@@ -29,6 +29,8 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/energy.c \
 	lib/far.h \
 	lib/far.c \
+	lib/run.h \
+	lib/run.c \
 	lib/printed.c
 lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(CODE_COVERAGE_LIBS)

@@ -202,8 +202,10 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
        state must be valid with a margin, H^2 < 2E (1 + l0^2) (1 - m); a
        motion away from l = 0 (dir l0 > 0) reaches the far end; one
        towards it reverses iff H^2 > 2E (when the path reaches l = 0,
-       l0 l1 <= 0) or H^2 >= 2E (1 + l1^2) (when not), and the case applies
-       only where H^2 is outside [1 - m, 1 + m] times that bound.
+       l0, l1 not of one strict sign) or H^2 >= 2E (1 + l1^2) (when not),
+       and the case applies only where H^2 is outside [1 - m, 1 + m] times
+       that bound: the sign of the least V^2 is then certain, and the
+       segment rule of motion.h decides as for the exact classification.
    m = 2^-40 exceeds by far the relative rounding errors of H*H, 1 + l^2
    (with l's own rounding, l_err) and their products (< 8 eps); an
    overflowed 2E (1 + l^2) is larger than any H^2 <= 2^1000, which the
@@ -220,7 +222,10 @@ eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (!(E > 0.0 && E <= 0.25 * DBL_MAX && fabs (H) <= 0x1p500))
     return 0;
   const double H2 = H * H;
-  int rev = 0;
+  /* the sign of the least V^2 on the segment, where it is certain: the
+     input of the segment rule (motion.h) */
+  double least = 1.0;
+  int crosses = 0;
   if (!(H2 <= E))
     {
       const double l0 = sys->l_end[start], l1 = sys->l_end[1 - start];
@@ -228,19 +233,20 @@ eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
       if (!(E >= 0x1p-900
             && H2 < twoE * fma (l0, l0, 1.0) * (1.0 - EH_MARGIN)))
         return 0;
+      crosses = chp_crosses (l0, l1);
       if (in->dir * l0 < 0.0)
         {
-          /* towards l = 0: the bound H^2 must clear */
-          const double b = l0 * l1 <= 0.0 ? twoE
-            : twoE * fma (l1, l1, 1.0);
+          /* towards l = 0: V^2 least at l = 0 (2E - H^2) or at l1 */
+          const double b = crosses ? twoE : twoE * fma (l1, l1, 1.0);
           if (H2 > b * (1.0 + EH_MARGIN))
-            rev = 1;
+            least = -1.0;
           else if (!(H2 < b * (1.0 - EH_MARGIN)))
             return 0;
         }
       else if (!(in->dir * l0 > 0.0))
         return 0;               /* from l = 0 exactly: the spinning test */
     }
+  const int rev = chp_segment_rule (crosses, least) == CHP_SEGMENT_REVERSE;
   const int k = rev ? start : 1 - start;
   const double c1h = sys->C1[k] * H;
   if (!(fabs (c1h * H) <= 0.5 * E))
@@ -345,170 +351,227 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   return CHAPLYGIN_SUCCESS;
 }
 
-/* The return map proper; g0_phase, if not NULL, is g(l0) = (1 + l0^2)
-   V+^2/(2E) formed from V+ by the caller (chaplygin_discrete_poincare):
-   from (E, H) alone it loses V+ when V+^2 << (1 + l0^2) Omega+^2. */
+/* The work of one step of the return map, filled phase by phase by
+   step_core. */
+typedef struct
+{
+  const chaplygin_discrete *sys;
+  const chaplygin_discrete_state *in;
+  chaplygin_options o;
+  unsigned request;
+  chp_segment seg;
+  chp_motion m;
+  double g0, g1;        /* g = (1 + l^2) V^2/(2E) at the two ends */
+  int fast;             /* E1, H1 (and reversal) from eh_fast */
+  int reversal;
+  int iminus;           /* the end the peg leaves: 0 front, 1 rear */
+  double E1, H1, Vminus, dtheta, dtau;
+} step_work;
+
+/* Phase 1: the arguments, the options (NULL: the defaults), the state;
+   peg implies theta. */
+static int
+step_begin (step_work *w, const chaplygin_discrete *sys,
+            const chaplygin_discrete_state *in, unsigned request,
+            const chaplygin_options *opt, const chaplygin_discrete_state *out)
+{
+  if (!sys || !in || !out || (request & ~(unsigned) CHAPLYGIN_WANT_ALL))
+    return CHAPLYGIN_EINVAL;
+  if (opt)
+    CHP_TRY (chp_options_resolve (opt, &w->o));
+  else
+    w->o = (chaplygin_options) CHAPLYGIN_OPTIONS_DEFAULT;
+  CHP_TRY (check_state (sys, in));
+  w->sys = sys;
+  w->in = in;
+  w->request = request & CHAPLYGIN_WANT_PEG ? request | CHAPLYGIN_WANT_THETA
+    : request;
+  chp_segment_init (sys, in->dir, &w->seg);
+  w->fast = 0;
+  w->E1 = w->H1 = w->Vminus = w->dtheta = w->dtau = 0.0;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Phase 3: the motion and its exact classification.  g0_phase, if not
+   NULL, is g(l0) formed from V+ by the caller (chaplygin_discrete_poincare):
+   from (E, H) alone g(l0) loses V+ when V+^2 << (1 + l0^2) Omega+^2.  The
+   classification and the (E, H) update need only E, H and 1 - h^2: the
+   square roots the integrals need are taken only for them. */
+static int
+step_classify (step_work *w, const double *g0_phase)
+{
+  const chaplygin_discrete *sys = w->sys;
+  const chp_segment *seg = &w->seg;
+  CHP_TRY (chp_motion_init_eh (w->in->E, w->in->H, &w->m));
+  if ((w->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU))
+      || w->o.method == CHAPLYGIN_ODE)
+    chp_motion_complete (&w->m);
+  /* g at the start: with error-free arithmetic from (E, H), accurate for
+     them even when V+ is small beside Omega+, or as given from V+ */
+  w->g0 = g0_phase ? *g0_phase
+    : chp_motion_g_exact (&w->m, seg->l0, seg->l0_err);
+  if (!(w->g0 > 0.0))
+    return CHAPLYGIN_ESTATE;
+  /* At the far end: from (E, H) by error-free arithmetic when they are the
+     input, exact for them; from a phase state g0 + (l1 - l0)(l1 + l0),
+     l1 - l0 = dir Delta exactly, unless that cancels worse than E and H
+     (rounded from the phase state) are conditioned there. */
+  const double delta = w->in->dir * sys->Delta * (2.0 * sys->L0 + sys->Delta);
+  const double g1_eh = chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
+  w->g1 = (g0_phase && w->g0 + fabs (delta)
+           <= chp_one_plus_sq (seg->l1) + fabs (1.0 - w->m.one_minus_h2))
+    ? w->g0 + delta : g1_eh;
+  const int outcome = chp_segment_classify (seg, &w->m, &w->g1);
+  if (outcome == CHP_SEGMENT_SPIN)
+    return CHAPLYGIN_ESPIN;
+  w->reversal = outcome == CHP_SEGMENT_REVERSE;
+  w->iminus = w->reversal ? seg->start : seg->far;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Phase 4, closed form and quadrature: the (E, H) update of (3.7) (unless
+   eh_fast made it), V- for the event, and the heading and time of the
+   legs by chp_leg. */
+static int
+step_by_integrals (step_work *w, int want_event)
+{
+  const chaplygin_discrete *sys = w->sys;
+  const chaplygin_discrete_state *in = w->in;
+  const chp_segment *seg = &w->seg;
+  const double gm = w->reversal ? w->g0 : w->g1;
+  const double lm = w->reversal ? seg->l0 : seg->l1;
+  if (!w->fast)
+    {
+      w->H1 = sys->C2[w->iminus] * in->H;
+      /* E + C1 H^2 of (3.7), as a sum of nonnegative terms (accurate also
+         when the collision takes nearly all the energy) */
+      w->E1 = chp_post_collision_energy (in->E, gm, lm, w->H1,
+                                         sys->l_end[1 - w->iminus]);
+      /* V- nearly 0 (a turning point within rounding of the end): E1 may
+         round below H1^2/(2 (1 + l+^2)), which would make the output an
+         invalid state (V+'^2 < 0); the true E' is above it, so raise E1
+         by ulps (at most 8, within its error bound) until the output is
+         valid */
+      if (gm <= 0x1p-40 * chp_one_plus_sq (lm))
+        w->E1 = valid_energy (sys, 1 - w->iminus, w->E1, w->H1);
+    }
+  /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction (only
+     the event reports it) */
+  if (want_event)
+    w->Vminus = (w->reversal ? -in->dir : in->dir)
+      * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
+  const int want_theta = (w->request & CHAPLYGIN_WANT_THETA) != 0;
+  const int want_tau = (w->request & CHAPLYGIN_WANT_TAU) != 0;
+  if (!want_theta && !want_tau)
+    return CHAPLYGIN_SUCCESS;
+  double *pth = want_theta ? &w->dtheta : NULL;
+  double *pta = want_tau ? &w->dtau : NULL;
+  if (!w->reversal)
+    return chp_leg (&w->m, seg->l0, w->g0, seg->l1, w->g1, sys->Delta, &w->o,
+                    pth, pta);
+  /* Out to the turning point and back: twice one leg.  |l0| - c =
+     g0/(|l0| + c) without cancellation. */
+  const double c = w->m.sqrt_q, lc = copysign (c, seg->l0);
+  const double dl = w->g0 / (fabs (seg->l0) + c);
+  CHP_TRY (chp_leg (&w->m, seg->l0, w->g0, lc, 0.0, dl, &w->o, pth, pta));
+  w->dtheta *= 2.0;
+  w->dtau *= 2.0;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Phase 4, ODE: every output from the integration (step_ode); where the
+   end it reaches contradicts the exact classification, the motion passes
+   within the integration error of a turning point or of the spinning
+   state and the integration cannot be trusted. */
+static int
+step_by_ode (step_work *w)
+{
+  int iminus;
+  CHP_TRY (step_ode (w->sys, w->in, &w->m, w->seg.l0, w->g0, w->o.tol,
+                     &iminus, &w->Vminus, &w->E1, &w->H1, &w->dtheta,
+                     &w->dtau));
+  if ((iminus == w->seg.start) != w->reversal)
+    return CHAPLYGIN_ENOCONV;
+  w->iminus = iminus;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Phase 5: the state after the collision and the event.  The direction
+   after the collision is that of V-: the same as before without a
+   reversal, the opposite with one (by the classification, not by the sign
+   of a computed V-, which may be 0). */
+static int
+step_finish (const step_work *w, chaplygin_discrete_state *out,
+             chaplygin_discrete_event *ev)
+{
+  const chaplygin_discrete_state *in = w->in;
+  const double Delta = w->sys->Delta;
+  if (!isfinite (w->E1) || !isfinite (w->H1) || !isfinite (w->Vminus))
+    return CHAPLYGIN_ERANGE;
+  const double Dminus = w->iminus ? Delta : 0.0;
+  const double theta1 = in->theta + w->dtheta;
+  chaplygin_discrete_state r = *in;
+  r.dir = w->reversal ? -in->dir : in->dir;
+  r.E = w->E1;
+  r.H = w->H1;
+  if (w->request & CHAPLYGIN_WANT_THETA)
+    r.theta = theta1;
+  if (w->request & CHAPLYGIN_WANT_TAU)
+    r.tau = in->tau + w->dtau;
+  if (w->request & CHAPLYGIN_WANT_PEG)
+    move_peg (in->peg, w->iminus ? Delta : -Delta, theta1, r.peg);
+  if (!chp_finite4 (r.theta, r.tau, r.peg[0], r.peg[1])
+      || !isfinite (w->dtheta) || !isfinite (w->dtau))
+    return CHAPLYGIN_ERANGE;
+  if (ev)
+    {
+      ev->reversal = w->reversal;
+      ev->Dc = w->reversal
+        ? copysign (sqrt (-w->m.one_minus_h2), w->seg.l0) - w->sys->L0 : 0.0;
+      ev->Dminus = Dminus;
+      ev->Dplus = Delta - Dminus;
+      ev->Vminus = w->Vminus;
+      ev->dtheta = w->dtheta;
+      ev->dtau = w->dtau;
+    }
+  *out = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The return map proper, in phases: (1) arguments, (2) a far slot
+   (step_far), (3) the (E, H) update of the common case (eh_fast), whole
+   when only E and H are wanted and otherwise kept, so that E and H never
+   depend on what else is requested, (4) the motion and its exact
+   classification, (5) the route of opt->method, (6) the outputs.
+   g0_phase: see step_classify. */
 static int
 step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
            const double *g0_phase, unsigned request,
            const chaplygin_options *opt, chaplygin_discrete_state *out,
            chaplygin_discrete_event *ev)
 {
-  chaplygin_options o;
-  if (!sys || !in || !out || (request & ~(unsigned) CHAPLYGIN_WANT_ALL))
-    return CHAPLYGIN_EINVAL;
-  if (opt)
-    CHP_TRY (chp_options_resolve (opt, &o));
-  else
-    o = (chaplygin_options) CHAPLYGIN_OPTIONS_DEFAULT;
-  CHP_TRY (check_state (sys, in));
-  if (request & CHAPLYGIN_WANT_PEG)
-    request |= CHAPLYGIN_WANT_THETA;
-
-  const double L0 = sys->L0, Delta = sys->Delta;
-  const int start = in->dir > 0 ? 0 : 1, far = 1 - start;
-  const double l0 = sys->l_end[start], l1 = sys->l_end[far];
-  if (fabs (l0) > CHP_L_MAX || fabs (l1) > CHP_L_MAX)
+  step_work w;
+  CHP_TRY (step_begin (&w, sys, in, request, opt, out));
+  if (fabs (w.seg.l0) > CHP_L_MAX || fabs (w.seg.l1) > CHP_L_MAX)
     return g0_phase ? CHAPLYGIN_ERANGE
-      : step_far (sys, in, request, opt, out, ev);
-
-  const int want_theta = (request & CHAPLYGIN_WANT_THETA) != 0;
-  const int want_tau = (request & CHAPLYGIN_WANT_TAU) != 0;
-  /* The (E, H) update of the common case first: when only E and H are
-     wanted it is the whole step, and otherwise it is kept, so that E and H
-     never depend on what else is requested. */
-  double E1 = 0.0, H1 = 0.0;
+      : step_far (sys, in, w.request, opt, out, ev);
   int fast_reversal = 0;
-  const int fast = o.method != CHAPLYGIN_ODE
-    && eh_fast (sys, in, start, &E1, &H1, &fast_reversal);
-  if (fast && request == 0 && !ev)
+  w.fast = w.o.method != CHAPLYGIN_ODE
+    && eh_fast (sys, in, w.seg.start, &w.E1, &w.H1, &fast_reversal);
+  if (w.fast && w.request == 0 && !ev)
     {
       *out = *in;
       out->dir = fast_reversal ? -in->dir : in->dir;
-      out->E = E1;
-      out->H = H1;
+      out->E = w.E1;
+      out->H = w.H1;
       return CHAPLYGIN_SUCCESS;
     }
-  /* The classification and the (E, H) update need only E, H and 1 - h^2:
-     the square roots the integrals need are taken only for them. */
-  chp_motion m;
-  CHP_TRY (chp_motion_init_eh (in->E, in->H, &m));
-  if (want_theta || want_tau || o.method == CHAPLYGIN_ODE)
-    chp_motion_complete (&m);
-  /* g = (1 + l^2) V^2/(2E) at the start: with error-free arithmetic from
-     (E, H), accurate for them even when V+ is small beside Omega+, or as
-     given from V+ by the Poincare map. */
-  const double g0 = g0_phase ? *g0_phase
-    : chp_motion_g_exact (&m, l0, sys->l_err[start]);
-  if (!(g0 > 0.0))
-    return CHAPLYGIN_ESTATE;
-  /* At the far end: from (E, H) by error-free arithmetic when they are the
-     input, exact for them; from a phase state g0 + (l1 - l0)(l1 + l0),
-     l1 - l0 = dir Delta exactly, unless that cancels worse than E and H
-     (rounded from the phase state) are conditioned there. */
-  const double delta = in->dir * Delta * (2.0 * L0 + Delta);
-  const double g1_eh = chp_motion_g_exact (&m, l1, sys->l_err[far]);
-  const double g1 = (g0_phase && g0 + fabs (delta)
-                     <= chp_one_plus_sq (l1) + fabs (1.0 - m.one_minus_h2))
-    ? g0 + delta : g1_eh;
-
-  int reversal = 0;
-  if (m.one_minus_h2 >= 0.0)
-    {
-      if (m.one_minus_h2 == 0.0 && l0 * l1 <= 0.0)
-        return CHAPLYGIN_ESPIN;
-    }
-  else if (in->dir * l0 < 0.0)
-    reversal = (l0 * l1 <= 0.0 || g1 <= 0.0);
-
-  int iminus = reversal ? start : far;
-  double Vminus = 0.0, dtheta = 0.0, dtau = 0.0;
-
-  if (o.method == CHAPLYGIN_ODE)
-    {
-      CHP_TRY (step_ode (sys, in, &m, l0, g0, o.tol, &iminus, &Vminus, &E1,
-                         &H1, &dtheta, &dtau));
-      /* The integration decides by itself which end it reaches; where that
-         contradicts the exact classification, the motion passes within the
-         integration error of a turning point or of the spinning state and
-         the integration cannot be trusted. */
-      if ((iminus == start) != reversal)
-        return CHAPLYGIN_ENOCONV;
-    }
+  CHP_TRY (step_classify (&w, g0_phase));
+  if (w.o.method == CHAPLYGIN_ODE)
+    CHP_TRY (step_by_ode (&w));
   else
-    {
-      double gm = reversal ? g0 : g1, lm = reversal ? l0 : l1;
-      if (!fast)
-        {
-          H1 = sys->C2[iminus] * in->H;
-          /* E + C1 H^2 of (3.7), as a sum of nonnegative terms (accurate
-             also when the collision takes nearly all the energy) */
-          E1 = chp_post_collision_energy (in->E, gm, lm, H1,
-                                          sys->l_end[1 - iminus]);
-          /* V- nearly 0 (a turning point within rounding of the end):
-             E1 may round below H1^2/(2 (1 + l+^2)), which would make the
-             output an invalid state (V+'^2 < 0); the true E' is above
-             it, so raise E1 by ulps (at most 8, within its error bound)
-             until the output is valid */
-          if (gm <= 0x1p-40 * chp_one_plus_sq (lm))
-            E1 = valid_energy (sys, 1 - iminus, E1, H1);
-        }
-      /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction
-         (only the event reports it) */
-      if (ev)
-        Vminus = (reversal ? -in->dir : in->dir)
-          * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
-      if (want_theta || want_tau)
-        {
-          double *pth = want_theta ? &dtheta : NULL;
-          double *pta = want_tau ? &dtau : NULL;
-          if (reversal)
-            {
-              /* Out to the turning point and back: twice one leg.
-                 |l0| - c = g0/(|l0| + c) without cancellation. */
-              double c = m.sqrt_q, lc = copysign (c, l0);
-              double dl = g0 / (fabs (l0) + c);
-              CHP_TRY (chp_leg (&m, l0, g0, lc, 0.0, dl, &o, pth, pta));
-              dtheta *= 2.0;
-              dtau *= 2.0;
-            }
-          else
-            CHP_TRY (chp_leg (&m, l0, g0, l1, g1, Delta, &o, pth, pta));
-        }
-    }
-  if (!isfinite (E1) || !isfinite (H1) || !isfinite (Vminus))
-    return CHAPLYGIN_ERANGE;
-
-  double Dminus = iminus ? Delta : 0.0;
-  double theta1 = in->theta + dtheta;
-  chaplygin_discrete_state r = *in;
-  /* the direction after the collision is that of V-: the same as before
-     without a reversal, the opposite with one (by the classification, not
-     by the sign of a computed V-, which may be 0) */
-  r.dir = reversal ? -in->dir : in->dir;
-  r.E = E1;
-  r.H = H1;
-  if (want_theta)
-    r.theta = theta1;
-  if (want_tau)
-    r.tau = in->tau + dtau;
-  if (request & CHAPLYGIN_WANT_PEG)
-    move_peg (in->peg, iminus ? Delta : -Delta, theta1, r.peg);
-  if (!chp_finite4 (r.theta, r.tau, r.peg[0], r.peg[1]) || !isfinite (dtheta)
-      || !isfinite (dtau))
-    return CHAPLYGIN_ERANGE;
-  if (ev)
-    {
-      ev->reversal = reversal;
-      ev->Dc = reversal ? copysign (sqrt (-m.one_minus_h2), l0) - L0 : 0.0;
-      ev->Dminus = Dminus;
-      ev->Dplus = Delta - Dminus;
-      ev->Vminus = Vminus;
-      ev->dtheta = dtheta;
-      ev->dtau = dtau;
-    }
-  *out = r;
-  return CHAPLYGIN_SUCCESS;
+    CHP_TRY (step_by_integrals (&w, ev != NULL));
+  return step_finish (&w, out, ev);
 }
 
 /* chaplygin_discrete_step: (B.3) and (B.4), the return map on post-collision

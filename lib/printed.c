@@ -503,7 +503,7 @@ chaplygin_printed_discrete_collisions_before_reversal
      chp_run_init nor chaplygin_discrete_c3 can fail */
   (void) chp_run_init (sys, dir, &run);
   CHP_TRY (chp_motion_init (E, H, &m));
-  const double g = chp_motion_g_exact (&m, run.ls, run.ls_err);
+  const double g = chp_motion_g_exact (&m, run.seg.l0, run.seg.l0_err);
   if (!(g > 0.0))
     return CHAPLYGIN_ESTATE;
   (void) chaplygin_discrete_c3 (sys->L0, sys->Delta, dir, &C3);

@@ -26,96 +26,6 @@
   (ULONG_MAX < 0x4000000000000000ULL ? (unsigned long) ULONG_MAX        \
    : (unsigned long) 0x4000000000000000ULL)
 
-/* 1 + (l + el)^2 to ~1 ulp, l + el the exact value of a rounded l. */
-static double
-one_plus_sq_exact (double l, double el)
-{
-  return chp_one_plus_sq (l) + 2.0 * l * el;
-}
-
-/* chp_run_init: the run of collisions without reversal in direction dir.
-   Method: C2 is the system's (3.7) coefficient of the far end (the one
-   chaplygin_discrete_step uses); C1 = -Delta^2/(2 (1 + l_f^2)^2
-   (1 + l_s^2)) is formed without a square root (exact when its factors
-   are).  C2 - 1 = -dir Delta l_f/(1 + l_f^2) and C2 + 1 = (2 + l_f s)/
-   (1 + l_f^2), s = 2 L0 + Delta = l_s + l_f, are formed without the
-   cancellation of C2 -+ 1 (2 + l_f s from the exact parts of l_f and s),
-   so that 1 - C2^2 and log C2^2 keep their relative accuracy near
-   C2 = +-1: within ~3 ulps.  log C2^2 is 2 log1p(|C2| - 1) for |C2| > 1/2,
-   2 log |C2| otherwise (C2 within 2 ulps: log C2^2 within ~3 eps). */
-int
-chp_run_init (const chaplygin_discrete *sys, int dir, chp_run *run)
-{
-  if (dir != 1 && dir != -1)
-    return CHAPLYGIN_EINVAL;
-  if (!chp_finite2 (sys->L0, sys->Delta) || !(sys->Delta > 0.0))
-    return CHAPLYGIN_EDOM;
-  const int start = dir > 0 ? 0 : 1, far = 1 - start;
-  chp_run r;
-  r.dir = dir;
-  r.Delta = sys->Delta;
-  r.ls = sys->l_end[start];
-  r.ls_err = sys->l_err[start];
-  r.lf = sys->l_end[far];
-  r.lf_err = sys->l_err[far];
-  if (fabs (r.ls) > CHP_L_MAX || fabs (r.lf) > CHP_L_MAX)
-    return CHAPLYGIN_ERANGE;
-  r.toward = dir > 0 ? r.ls < 0.0 : r.ls > 0.0;
-  /* by signs, not by the product l_s l_f (which underflows) */
-  r.crosses = (r.ls <= 0.0 && r.lf >= 0.0) || (r.ls >= 0.0 && r.lf <= 0.0);
-  const double d = dir * sys->Delta;
-  double s, s_err;              /* 2 L0 + Delta = s + s_err exactly */
-  chp_two_sum (2.0 * sys->L0, sys->Delta, &s, &s_err);
-  const double nf = one_plus_sq_exact (r.lf, r.lf_err);
-  const double ns = one_plus_sq_exact (r.ls, r.ls_err);
-  /* C1 = -Delta^2/(2 (1 + l_f^2)^2 (1 + l_s^2)), exact when its factors
-     are (no square root, unlike chp_collision_coefficients) */
-  r.C1 = -0.5 * (sys->Delta / nf) * (sys->Delta / nf) / ns;
-  r.C2 = sys->C2[far];
-  r.s = s;
-  /* 2 + l_f (2 L0 + Delta), cancelling near C2 = -1: from the exact
-     parts of both factors */
-  const double t = fma (r.lf, s, 2.0) + (r.lf * s_err + r.lf_err * s);
-  r.c2m1 = -d * chp_L_over_one_plus_sq (r.lf);
-  r.c2p1 = t / nf;
-  if (r.C2 == 0.0)
-    {
-      r.omq = 1.0;
-      r.logq = -HUGE_VAL;
-    }
-  else
-    {
-      r.omq = -r.c2m1 * r.c2p1;
-      /* log |C2| from |C2| - 1 where that is accurate, else from C2 */
-      double ac = fabs (r.C2);
-      r.logq = 2.0 * (ac > 0.5 ? log1p (r.C2 > 0.0 ? r.c2m1 : -r.c2p1)
-                      : log (ac));
-    }
-  /* kappa = 1 + 2 C1 (1 + l_s^2)/(1 - C2^2): with 1 - C2^2 =
-     d l_f t/(1 + l_f^2)^2 and 2 C1 (1 + l_s^2) = -d^2/(1 + l_f^2)^2.
-     kappa < 1 where defined (C1 < 0 < 1 - C2^2).  With |l| <= 2^500 none
-     of these overflows: |1 - C2^2| <= Delta |2 L0 + Delta|/4 < 2^1002. */
-  r.kappa = r.omq > 0.0 ? 1.0 - d / (r.lf * t) : 0.0;
-  *run = r;
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* chp_run_fate: the classification of chaplygin_discrete_step for a valid
-   post-collision state of the run: the sign of 2E - H^2 is exact, g at the
-   far end is formed by error-free arithmetic; a turning point exactly at
-   the far end counts as a reversal. */
-int
-chp_run_fate (const chp_run *run, const chp_motion *m)
-{
-  if (m->one_minus_h2 >= 0.0)
-    return (m->one_minus_h2 == 0.0 && run->crosses) ? CHP_FATE_SPIN : CHP_FATE_PASS;
-  if (!run->toward)
-    return CHP_FATE_PASS;
-  if (run->crosses || chp_motion_g_exact (m, run->lf, run->lf_err) <= 0.0)
-    return CHP_FATE_REVERSE;
-  return CHP_FATE_PASS;
-}
-
 /* Validate the common arguments L0, Delta, dir (CHAPLYGIN_EINVAL for dir
    first) and open their far scaling (lib/far.c). */
 static int
@@ -173,7 +83,7 @@ chaplygin_discrete_ratio_lower_bound (double L0, double Delta, int dir,
     }
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
-  *rmin = 1.0 / one_plus_sq_exact (run.ls, run.ls_err);
+  *rmin = 1.0 / chp_one_plus_sq_exact (run.seg.l0, run.seg.l0_err);
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -221,12 +131,12 @@ chaplygin_discrete_reversal_range (double L0, double Delta, int dir,
     }
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
-  double lo = 1.0 / one_plus_sq_exact (run.ls, run.ls_err), hi = lo;
-  if (run.toward)
-    hi = run.crosses ? 1.0 : 1.0 / one_plus_sq_exact (run.lf, run.lf_err);
+  double lo = 1.0 / chp_one_plus_sq_exact (run.seg.l0, run.seg.l0_err), hi = lo;
+  if (run.seg.toward)
+    hi = run.seg.crosses ? 1.0 : 1.0 / chp_one_plus_sq_exact (run.seg.l1, run.seg.l1_err);
   *rlo = lo;
   *rhi = hi;
-  *nonempty = run.toward;
+  *nonempty = run.seg.toward;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -252,7 +162,7 @@ chaplygin_discrete_c3 (double L0, double Delta, int dir, double *C3)
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
   /* |Delta (2 L0 + Delta)| < 2^1003: finite */
-  *C3 = dir * Delta * (run.s / one_plus_sq_exact (run.lf, run.lf_err));
+  *C3 = dir * Delta * (run.s / chp_one_plus_sq_exact (run.seg.l1, run.seg.l1_err));
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -268,12 +178,12 @@ iterate_fate (const chp_run *run, double E, double H, unsigned long k,
   chp_motion m;
   if (chp_run_state (run, E, H, (double) k, &Ek, &Hk) != CHAPLYGIN_SUCCESS
       || !(Ek > 0.0) || chp_motion_init (Ek, Hk, &m) != CHAPLYGIN_SUCCESS
-      || !(chp_motion_g_exact (&m, run->ls, run->ls_err) > 0.0))
+      || !(chp_motion_g_exact (&m, run->seg.l0, run->seg.l0_err) > 0.0))
     {
-      *fate = CHP_FATE_REVERSE;
+      *fate = CHP_SEGMENT_REVERSE;
       return CHAPLYGIN_SUCCESS;
     }
-  *fate = chp_run_fate (run, &m);
+  *fate = chp_segment_classify (&run->seg, &m, NULL);
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -286,15 +196,15 @@ count_estimate (const chp_run *run, const chp_motion *m)
   const double E = m->E, H = m->H;
   /* g and 1 + l^2 at the point of the path nearest l = 0 */
   double gm, nm;
-  if (run->crosses)
+  if (run->seg.crosses)
     {
       gm = m->one_minus_h2;
       nm = 1.0;
     }
   else
     {
-      gm = chp_motion_g_exact (m, run->lf, run->lf_err);
-      nm = one_plus_sq_exact (run->lf, run->lf_err);
+      gm = chp_motion_g_exact (m, run->seg.l1, run->seg.l1_err);
+      nm = chp_one_plus_sq_exact (run->seg.l1, run->seg.l1_err);
     }
   /* r - rho = r g(m)/(1 + m^2) > 0 */
   const double r = (2.0 * E / H) / H, rmr = r * (gm / nm);
@@ -303,13 +213,13 @@ count_estimate (const chp_run *run, const chp_motion *m)
   /* den = rho (1 - q) + 2 C1: for a path that reaches l = 0 (rho = 1)
      directly; otherwise = C3 q/(1 + l_s^2), without cancellation */
   double den;
-  if (run->crosses)
+  if (run->seg.crosses)
     den = run->omq + 2.0 * run->C1;
   else
     {
       double d = run->dir * run->Delta;
-      den = (d * run->s / one_plus_sq_exact (run->lf, run->lf_err))
-        * (run->C2 * run->C2 / one_plus_sq_exact (run->ls, run->ls_err));
+      den = (d * run->s / chp_one_plus_sq_exact (run->seg.l1, run->seg.l1_err))
+        * (run->C2 * run->C2 / chp_one_plus_sq_exact (run->seg.l0, run->seg.l0_err));
     }
   /* (r (1-q) + 2 C1)/(rho (1-q) + 2 C1) = 1 + z */
   const double z = (run->omq / den) * rmr;
@@ -388,21 +298,21 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
   chp_motion m;
   CHP_TRY (chp_run_init (sys, dir, &run));
   CHP_TRY (chp_motion_init (E, H, &m));
-  if (!(chp_motion_g_exact (&m, run.ls, run.ls_err) > 0.0))
+  if (!(chp_motion_g_exact (&m, run.seg.l0, run.seg.l0_err) > 0.0))
     return CHAPLYGIN_ESTATE;
-  const int fate0 = chp_run_fate (&run, &m);
-  if (fate0 == CHP_FATE_SPIN)
+  const int fate0 = chp_segment_classify (&run.seg, &m, NULL);
+  if (fate0 == CHP_SEGMENT_SPIN)
     return CHAPLYGIN_ESPIN;
-  if (fate0 == CHP_FATE_REVERSE)
+  if (fate0 == CHP_SEGMENT_REVERSE)
     {
       *reverses = 1;
       *n = 0;
       return CHAPLYGIN_SUCCESS;
     }
-  if (!run.toward || H == 0.0 || run.C2 == 0.0
+  if (!run.seg.toward || H == 0.0 || run.C2 == 0.0
       || (run.omq > 0.0
           && !(chp_run_final_energy (&run, E, chp_motion_g_exact
-                                     (&m, run.ls, run.ls_err), H) < 0.0)))
+                                     (&m, run.seg.l0, run.seg.l0_err), H) < 0.0)))
     {
       *reverses = 0;
       return CHAPLYGIN_SUCCESS;
@@ -412,11 +322,11 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
      does not pass, starting from the closed form. */
   const double x = count_estimate (&run, &m);
   unsigned long k0 = 1, lo = 0, hi = 0, step;
-  int f, fhi = CHP_FATE_PASS;
+  int f, fhi = CHP_SEGMENT_PASS;
   if (x > 1.0)
     k0 = x < (double) CHP_N_MAX ? (unsigned long) ceil (x) : CHP_N_MAX;
   CHP_TRY (iterate_fate (&run, E, H, k0, &f));
-  if (f == CHP_FATE_PASS)
+  if (f == CHP_SEGMENT_PASS)
     {
       /* gallop up */
       lo = k0;
@@ -426,7 +336,7 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
             return CHAPLYGIN_ERANGE;
           hi = CHP_N_MAX - lo > step ? lo + step : CHP_N_MAX;
           CHP_TRY (iterate_fate (&run, E, H, hi, &fhi));
-          if (fhi != CHP_FATE_PASS)
+          if (fhi != CHP_SEGMENT_PASS)
             break;
           lo = hi;
         }
@@ -440,7 +350,7 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
         {
           unsigned long c = hi - lo > step ? hi - step : lo + 1;
           CHP_TRY (iterate_fate (&run, E, H, c, &f));
-          if (f == CHP_FATE_PASS)
+          if (f == CHP_SEGMENT_PASS)
             {
               lo = c;
               break;
@@ -453,7 +363,7 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
     {
       unsigned long mid = lo + (hi - lo) / 2;
       CHP_TRY (iterate_fate (&run, E, H, mid, &f));
-      if (f == CHP_FATE_PASS)
+      if (f == CHP_SEGMENT_PASS)
         lo = mid;
       else
         {
@@ -461,7 +371,7 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
           fhi = f;
         }
     }
-  if (fhi == CHP_FATE_SPIN)
+  if (fhi == CHP_SEGMENT_SPIN)
     return CHAPLYGIN_ESPIN;
   *reverses = 1;
   *n = hi;
