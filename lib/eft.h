@@ -74,6 +74,13 @@ chp_one_plus_sq_exact (double l, double el)
   return chp_one_plus_sq (l) + 2.0 * l * el;
 }
 
+/* (l + el)^2 to ~1 ulp, l + el as above. */
+static inline double
+chp_sq_exact (double l, double el)
+{
+  return fma (l, l, 2.0 * l * el);
+}
+
 /* L/(1 + L^2) without overflow (eft.c). */
 double chp_L_over_one_plus_sq (double L);
 

@@ -102,13 +102,13 @@ fate_coef_init (const chaplygin_discrete *sys, fate_coef *c)
       const int f = 1 - i;
       const double dir = i == 0 ? 1.0 : -1.0;
       const double l0 = sys->l_end[i], l1 = sys->l_end[f];
-      const double sq0 = fma (l0, l0, 2.0 * l0 * sys->l_err[i]);
-      const double sq1 = fma (l1, l1, 2.0 * l1 * sys->l_err[f]);
+      const double sq0 = chp_sq_exact (l0, sys->l_err[i]);
+      const double sq1 = chp_sq_exact (l1, sys->l_err[f]);
       const double n0 = 1.0 + sq0, n1 = 1.0 + sq1;
       /* (l1^2 - l0^2)/((1 + l0^2)(1 + l1^2)), l1 - l0 = dir Delta exactly */
       const double a = dir * (Delta / n0) * (s / n1);
       g->n0 = n0;
-      g->crosses = (l0 <= 0.0 && l1 >= 0.0) || (l0 >= 0.0 && l1 <= 0.0);
+      g->crosses = chp_crosses (l0, l1);
       if (g->crosses)
         {
           g->b = sq0 / n0;
@@ -152,8 +152,10 @@ fate_run (const fate_coef *c, int dir, double u, double H, int scale,
           uf = u;
           break;
         }
+      /* q = the least V^2 on the segment: the segment rule (motion.h) */
       const double q = fma (-(g->b * H), H, u);
-      if (g->stable && q > 0.0)
+      const int outcome = chp_segment_rule (g->crosses, q);
+      if (g->stable && outcome == CHP_SEGMENT_PASS)
         {
           uf = fma (g->k * H, H, u);
           if (uf > 0.0)
@@ -162,7 +164,7 @@ fate_run (const fate_coef *c, int dir, double u, double H, int scale,
               break;
             }
         }
-      if (q == 0.0 && g->crosses)
+      if (outcome == CHP_SEGMENT_SPIN)
         {
           kind = CHAPLYGIN_FATE_SPIN;
           break;
@@ -173,7 +175,7 @@ fate_run (const fate_coef *c, int dir, double u, double H, int scale,
           break;
         }
       n++;
-      if (q <= 0.0)
+      if (outcome == CHP_SEGMENT_REVERSE)
         {
           /* (B.4): back at l0 with V = -V+, u unchanged */
           H *= g->C2_start;
