@@ -9,7 +9,11 @@
 
 #include <math.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "collision.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
 
 /* chaplygin_discrete_field: (3.1)
        dD/dtau = V,  dV/dtau = (L0 + D) Omega^2,  dtheta/dtau = Omega,

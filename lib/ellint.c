@@ -19,7 +19,9 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+#include "ellint.h"
 
 static gsl_mode_t
 gsl_mode (chaplygin_precision prec)

@@ -11,7 +11,11 @@
 
 #include <math.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
+#include "run.h"
 
 /* Common validation: the run of dir, the motion (E, H) and its validity
    as a post-collision state; *g0 = g(l_s). */

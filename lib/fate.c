@@ -60,7 +60,10 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
 
 /* One direction of travel, from the end l0 where the peg starts to l1. */
 typedef struct

@@ -31,6 +31,11 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/far.c \
 	lib/run.h \
 	lib/run.c \
+	lib/ellint.h \
+	lib/quad.h \
+	lib/ode.h \
+	lib/leg.h \
+	lib/leg.c \
 	lib/printed.c
 lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(CODE_COVERAGE_LIBS)

@@ -13,7 +13,14 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "collision.h"
+#include "eft.h"
+#include "far.h"
+#include "leg.h"
+#include "motion.h"
+#include "ode.h"
+#include "status.h"
 
 /* chaplygin_discrete_init: a discrete skate with mass centre L0 ahead of the
    slot front and slot length Delta (units of rho), with the (3.7)

@@ -37,7 +37,12 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+
+/* The largest |L0| the massless skate (rho = 0, lengths in units of the
+   slot) accepts: 2 L0 + 1 must be finite. */
+#define CHP_MASSLESS_L_MAX 0x1p1020
 
 /* ---- (B.17) ----------------------------------------------------------- */
 

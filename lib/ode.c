@@ -25,7 +25,10 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+#include "motion.h"
+#include "ode.h"
 
 /* A leg needs O(100) steps; even a motion within 1e-16 of the spinning
    state needs O(1000) (the approach is exponential in time). */

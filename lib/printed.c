@@ -38,7 +38,11 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
+#include "run.h"
 
 /* The largest count the printed (B.6) returns: 2^62, as the corrected
    chaplygin_discrete_collisions_before_reversal (or ULONG_MAX if smaller). */

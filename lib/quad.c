@@ -13,7 +13,8 @@
 
 #include <gsl/gsl_integration.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "quad.h"
 
 struct piece
 {

@@ -18,7 +18,11 @@
 #include <limits.h>
 #include <math.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
+#include "run.h"
 
 /* The largest count (B.6) returns: 2^62, or ULONG_MAX if smaller; beyond
    2^53 consecutive counts are not resolved (documented). */

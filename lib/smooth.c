@@ -31,7 +31,8 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
 
 /* expm1(z)/z, continuous at 0. */
 static double

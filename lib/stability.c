@@ -12,7 +12,12 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "collision.h"
+#include "eft.h"
+#include "far.h"
+#include "motion.h"
+#include "quad.h"
 
 static int
 check_dir (int dir)

@@ -8,7 +8,8 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
 
 /* sigma4 of (3.10) in the variables of Fig. 2: with Delta = 1/sqrt(y),
    L0 = x Delta,

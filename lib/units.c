@@ -9,7 +9,8 @@
 
 #include <math.h>
 
-#include "internal.h"
+#include "chaplygin.h"
+#include "eft.h"
 
 static int
 check_scales (double rho, double v0)

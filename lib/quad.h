@@ -1,0 +1,15 @@
+/* quad.h -- kernel: adaptive Gauss-Kronrod quadrature without allocation or GSL's error handler (quad.c).  Uses GSL only. */
+#ifndef CHAPLYGIN_QUAD_H
+#define CHAPLYGIN_QUAD_H
+
+
+/* Int_a^b f(t) dt to relative tolerance epsrel (raised to 64 eps at least),
+   globally adaptive bisection with GSL's 21-point Kronrod rule, at most
+   CHP_QUAD_LIMIT subintervals, no allocation, no GSL error handler.
+   CHAPLYGIN_ENOCONV if the tolerance is not met; CHAPLYGIN_ERANGE if f
+   returns a non-finite value. */
+#define CHP_QUAD_LIMIT 256
+int chp_integrate (double (*f) (double, void *), void *params, double a,
+                   double b, double epsrel, double *result);
+
+#endif /* CHAPLYGIN_QUAD_H */
