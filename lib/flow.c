@@ -142,6 +142,63 @@ scaled_heading (chp_far *f, double L0, double D0, double V0, double Omega0,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* E (3.3) and H (3.4) of the phase state (V0, Omega0) at l0
+   (CHAPLYGIN_ERANGE where they overflow). */
+static int
+leg_invariants (double l0, double V0, double Omega0, double *E, double *H)
+{
+  const double n0 = chp_one_plus_sq (l0);
+  *E = 0.5 * (V0 * V0 + n0 * Omega0 * Omega0);
+  *H = n0 * Omega0;
+  if (!isfinite (*E) || !isfinite (*H))
+    return CHAPLYGIN_ERANGE;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The motion of a leg from (D0, V0, Omega0) to D != D0, and g = (1 + l^2)
+   V^2/(2E) at both ends, after the checks that D is reached: on the side
+   V0 points to (or, for V0 = 0, the side the acceleration l0 Omega0^2
+   points to), before any turning point or the spinning point.  1 - h^2
+   from the phase inputs themselves, not from the rounded E and H, whose
+   roundings it would amplify by 1/|1 - h^2| near the spinning ratio
+   2E = H^2 (found by the Arb oracle: 282 ulps); g from V0 and the
+   factored (B.1), g(l) = g(l0) + (D - D0)(2 L0 + D + D0), with no
+   cancellation but that of V^2 itself near a turning point (g from
+   1 - h^2 would lose log10(l^2/g) digits for large |l|). */
+static int
+leg_motion (double L0, double D0, double V0, double Omega0, double D,
+            chp_motion *m, double *g0, double *gl)
+{
+  const double l0 = L0 + D0, l = L0 + D;
+  double E, H;
+  CHP_TRY (leg_invariants (l0, V0, Omega0, &E, &H));
+  if (E == 0.0)
+    return CHAPLYGIN_ESTATE;
+  const double dirD = chp_sign (D - D0);
+  if (V0 != 0.0 && chp_sign (V0) != dirD)
+    return CHAPLYGIN_ESTATE;
+  if (V0 == 0.0)
+    {
+      if (l0 == 0.0)
+        return CHAPLYGIN_ESPIN;         /* the spinning equilibrium itself */
+      if (chp_sign (l0) != dirD)
+        return CHAPLYGIN_ESTATE;
+    }
+  CHP_TRY (chp_motion_init (E, H, m));
+  chp_motion_set_one_minus_h2 (m, chp_phase_one_minus_h2 (l0, V0, Omega0,
+                                                           2.0 * E));
+  *g0 = chp_one_plus_sq (l0) * V0 * (V0 / (2.0 * E));
+  *gl = *g0 + (D - D0) * (2.0 * L0 + D + D0);
+  if (m->one_minus_h2 >= 0.0)
+    {
+      if (m->one_minus_h2 == 0.0 && l0 * l <= 0.0)
+        return l == 0.0 ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
+    }
+  else if (*gl < 0.0 || (l0 * l < 0.0) || (l == 0.0))
+    return CHAPLYGIN_ESTATE;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* chaplygin_discrete_heading: (B.2)
        theta(D) = theta0 + Int_D0^D dD' / sqrt( [1 + (L0+D')^2]/[1 + (L0+D0)^2]
                   * [ (V0/Omega0)^2 [1 + (L0+D')^2]/[1 + (L0+D0)^2]
@@ -179,62 +236,27 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
   if (!chp_finite4 (L0, D0, V0, Omega0) || !isfinite (D))
     return CHAPLYGIN_EDOM;
 
-  double l0 = L0 + D0, l = L0 + D;
   chp_far f;
   int scaled;
   CHP_TRY (leg_scaling (L0, D0, V0, Omega0, D, &f, &scaled));
   if (scaled)
     return scaled_heading (&f, L0, D0, V0, Omega0, D, opt, dtheta, dtau);
-  double n0 = chp_one_plus_sq (l0);
-  double E = 0.5 * (V0 * V0 + n0 * Omega0 * Omega0);
-  double H = n0 * Omega0;
-  if (!isfinite (E) || !isfinite (H))
-    return CHAPLYGIN_ERANGE;
   if (D == D0)
     {
+      double E = 0.0, H = 0.0;
+      CHP_TRY (leg_invariants (L0 + D0, V0, Omega0, &E, &H));
       if (dtheta)
         *dtheta = 0.0;
       if (dtau)
         *dtau = 0.0;
       return CHAPLYGIN_SUCCESS;
     }
-  if (E == 0.0)
-    return CHAPLYGIN_ESTATE;
-  double dirD = chp_sign (D - D0);
-  if (V0 != 0.0 && chp_sign (V0) != dirD)
-    return CHAPLYGIN_ESTATE;
-  if (V0 == 0.0)
-    {
-      if (l0 == 0.0)
-        return CHAPLYGIN_ESPIN;         /* the spinning equilibrium itself */
-      if (chp_sign (l0) != dirD)
-        return CHAPLYGIN_ESTATE;
-    }
-
   chp_motion m;
-  CHP_TRY (chp_motion_init (E, H, &m));
-  /* 1 - h^2 from the phase inputs themselves, not from the rounded E and
-     H, whose roundings it would amplify by 1/|1 - h^2| near the spinning
-     ratio 2E = H^2 (found by the Arb oracle: 282 ulps) */
-  chp_motion_set_one_minus_h2 (&m, chp_phase_one_minus_h2 (l0, V0, Omega0, 2.0 * E));
-  /* g = (1 + l^2) V^2/(2E) at both ends, from V0 and the factored (B.1):
-     g(l) = g(l0) + (D - D0)(2 L0 + D + D0), with no cancellation but that
-     of V^2 itself near a turning point (g from 1 - h^2 would lose
-     log10(l^2/g) digits for large |l|). */
-  double g0 = n0 * V0 * (V0 / (2.0 * E));
-  double gl = g0 + (D - D0) * (2.0 * L0 + D + D0);
-  if (m.one_minus_h2 >= 0.0)
-    {
-      if (m.one_minus_h2 == 0.0 && l0 * l <= 0.0)
-        return l == 0.0 ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
-    }
-  else if (gl < 0.0 || (l0 * l < 0.0) || (l == 0.0))
-    return CHAPLYGIN_ESTATE;
-
-  double th = 0.0, ta = 0.0;
+  double g0, gl, th = 0.0, ta = 0.0;
+  CHP_TRY (leg_motion (L0, D0, V0, Omega0, D, &m, &g0, &gl));
   if (o.method != CHAPLYGIN_ODE)
-    CHP_TRY (chp_leg (&m, l0, g0, l, gl, fabs (D - D0), &o, dtheta ? &th : NULL,
-                      dtau ? &ta : NULL));
+    CHP_TRY (chp_leg (&m, L0 + D0, g0, L0 + D, gl, fabs (D - D0), &o,
+                      dtheta ? &th : NULL, dtau ? &ta : NULL));
   else
     {
       double q0[4] = { D0, V0, 0.0, Omega0 }, q1[4];

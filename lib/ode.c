@@ -174,7 +174,147 @@ refine (struct integrator *it, gsl_odeiv2_system *sys, int comp,
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_ode_until: see internal.h.
+/* One integration of chp_ode_until: the integrator, the scaled problem
+   and its current state. */
+struct ode_run
+{
+  struct integrator it;
+  struct ode_params par;
+  gsl_odeiv2_system sys;
+  double D0, Dlo, Dhi;          /* the bounds, unscaled */
+  double dlo, dhi;              /* the bounds of d = D - D0 */
+  double lambda;                /* velocity scale: E = 1/2 */
+  int k;                        /* theta and Omega times 2^k (own scale) */
+  double y[4], t, h;
+};
+
+/* Phase 1: the scaled problem (E = 1/2, the position as d = D - D0, theta
+   and Omega times 2^k for a tiny Omega), the error control, the
+   integrator.  On failure nothing is left allocated. */
+static int
+ode_start (struct ode_run *r, double L0, const double q0[4], int k_in,
+           double Dlo, double Dhi, double tol)
+{
+  double D0 = q0[CHAPLYGIN_D], l0 = L0 + D0;
+  double n0 = chp_one_plus_sq (l0);
+  double om0 = ldexp (q0[CHAPLYGIN_OMEGA], -k_in);
+  double twoE = q0[CHAPLYGIN_V] * q0[CHAPLYGIN_V] + n0 * om0 * om0;
+  if (!isfinite (twoE))
+    return CHAPLYGIN_ERANGE;
+  if (!(twoE > 0.0))
+    return CHAPLYGIN_ESTATE;    /* at rest: no event is ever reached */
+  r->lambda = 1.0 / sqrt (twoE);
+
+  /* The position is integrated as d = D - D0, so that an excursion far
+     below the ulp of D (a turning point just inside the start) keeps its
+     relative precision; the bounds become Dlo - D0, Dhi - D0 (exactly 0
+     for the end the motion starts from).  l = l0 + d in the field. */
+  r->D0 = D0;
+  r->Dlo = Dlo;
+  r->Dhi = Dhi;
+  r->dlo = Dlo - D0;
+  r->dhi = Dhi - D0;
+  /* Scales of the components, in the units of E = 1/2: the error control
+     is relative (tol) with an absolute floor tol/100 times these.  d and
+     theta start at 0 and Omega never changes sign but may fall by orders
+     of magnitude along a long leg (as 1/l^2), so their floors are tiny
+     (relative control); V's is its initial size, because V passes through
+     0 at turning points, where relative control would stall. */
+  double span = (isfinite (Dlo) && isfinite (Dhi)) ? Dhi - Dlo
+    : isfinite (Dhi) ? Dhi - D0 : isfinite (Dlo) ? D0 - Dlo : 1.0;
+  double lscale = fmax (span, 1e-300);
+  double vscale = fmax (fabs (q0[CHAPLYGIN_V] * r->lambda), 1e-300);
+  double scale_abs[4] = { lscale * 0x1p-200, vscale, 1e-300, 1e-300 };
+
+  r->it.step = gsl_odeiv2_step_alloc (gsl_odeiv2_step_rk8pd, 4);
+  r->it.control = gsl_odeiv2_control_scaled_new (0.01 * tol, tol, 1.0, 0.0,
+                                                 scale_abs, 4);
+  r->it.evolve = gsl_odeiv2_evolve_alloc (4);
+  if (!r->it.step || !r->it.control || !r->it.evolve)
+    {
+      integrator_free (&r->it);
+      return CHAPLYGIN_ENOMEM;
+    }
+
+  /* theta and Omega times 2^k when |Omega| is below 2^-200 in these
+     units (1/2 <= 2^k |Omega| < 1): their error control is then relative
+     down to the subnormals, where the floor 1e-300 above would make it
+     absolute; theta starts at q0[THETA] + 0 (scaled from 0).  The
+     caller's own scale k_in adds to it. */
+  r->k = 0;
+  double om = q0[CHAPLYGIN_OMEGA] * r->lambda;
+  if (om != 0.0 && fabs (om) < 0x1p-200)
+    {
+      frexp (om, &r->k);
+      r->k = -r->k;
+    }
+  r->par.l0 = l0;
+  r->par.k = r->k + k_in;
+  r->sys = (gsl_odeiv2_system) { rhs_time, NULL, 4, &r->par };
+  r->y[0] = 0.0;
+  r->y[1] = q0[CHAPLYGIN_V] * r->lambda;
+  r->y[2] = r->k ? 0.0 : q0[CHAPLYGIN_THETA];
+  r->y[3] = ldexp (om, r->k);
+  r->t = 0.0;
+  r->h = 1e-3 * fmin (lscale, 1.0);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Phase 2: one accepted step and its events: 1 for a D bound, 2 for
+   V = 0 (if STOP_AT_TURN), located by refine, with the event time and
+   state in *te, ye; 0 for none; -1 where the integration fails (the
+   caller reports CHAPLYGIN_ENOCONV).  If V changed sign in the step, the
+   turning point is located first, and then the stretch to examine for a D
+   crossing is the part of the step before or after it. */
+static int
+ode_advance (struct ode_run *r, int stop_at_turn, double *te, double ye[4])
+{
+  double *y = r->y;
+  const double dlo = r->dlo, dhi = r->dhi;
+  double ta = r->t, ya[4] = { y[0], y[1], y[2], y[3] };
+  if (gsl_odeiv2_evolve_apply (r->it.evolve, r->it.control, r->it.step,
+                               &r->sys, &r->t, 1e300, &r->h, y)
+      != GSL_SUCCESS)
+    return -1;
+  /* the stretch to examine for a D crossing: [ta, tc] with state yc */
+  double tc = r->t, yc[4] = { y[0], y[1], y[2], y[3] };
+  if (ya[1] * y[1] < 0.0)
+    {
+      double tt, yt[4];
+      if (refine (&r->it, &r->sys, CHAPLYGIN_V, 0.0, ta, ya, r->t, y, &tt, yt)
+          != CHAPLYGIN_SUCCESS)
+        return -1;
+      if (yt[0] >= dhi || yt[0] <= dlo)
+        {
+          tc = tt;              /* the exit came before the turn */
+          for (int i = 0; i < 4; i++)
+            yc[i] = yt[i];
+        }
+      else if (stop_at_turn)
+        {
+          *te = tt;
+          for (int i = 0; i < 4; i++)
+            ye[i] = yt[i];
+          return 2;
+        }
+      else if (y[0] >= dhi || y[0] <= dlo)
+        {
+          ta = tt;              /* the exit came after the turn */
+          for (int i = 0; i < 4; i++)
+            ya[i] = yt[i];
+        }
+    }
+  if (!(yc[0] >= dhi || yc[0] <= dlo))
+    return 0;
+  const int upper = yc[0] >= dhi;
+  if (refine (&r->it, &r->sys, CHAPLYGIN_D, upper ? dhi : dlo, ta, ya, tc, yc,
+              te, ye) != CHAPLYGIN_SUCCESS)
+    return -1;
+  ye[0] = upper ? r->Dhi : r->Dlo;      /* land on the bound exactly */
+  return 1;
+}
+
+/* chp_ode_until: see ode.h.
    Method: (3.1), scaled to E = 1/2, for d = D - D0, integrated in time by
    rk8pd under an error control relative to tol with absolute floors (see
    the scales below).
@@ -192,118 +332,23 @@ chp_ode_until (double L0, const double q0[4], int k_in, double Dlo, double Dhi,
                int stop_at_turn, double tol, double q1[4], double *tau,
                int *turned)
 {
-  double D0 = q0[CHAPLYGIN_D], l0 = L0 + D0;
-  double n0 = chp_one_plus_sq (l0);
-  double om0 = ldexp (q0[CHAPLYGIN_OMEGA], -k_in);
-  double twoE = q0[CHAPLYGIN_V] * q0[CHAPLYGIN_V] + n0 * om0 * om0;
-  if (!isfinite (twoE))
-    return CHAPLYGIN_ERANGE;
-  if (!(twoE > 0.0))
-    return CHAPLYGIN_ESTATE;    /* at rest: no event is ever reached */
-  double lambda = 1.0 / sqrt (twoE);    /* velocity scale */
-
-  /* The position is integrated as d = D - D0, so that an excursion far
-     below the ulp of D (a turning point just inside the start) keeps its
-     relative precision; the bounds become Dlo - D0, Dhi - D0 (exactly 0
-     for the end the motion starts from).  l = l0 + d in the field. */
-  double dlo = Dlo - D0, dhi = Dhi - D0;
-  /* Scales of the components, in the units of E = 1/2: the error control
-     is relative (tol) with an absolute floor tol/100 times these.  d and
-     theta start at 0 and Omega never changes sign but may fall by orders
-     of magnitude along a long leg (as 1/l^2), so their floors are tiny
-     (relative control); V's is its initial size, because V passes through
-     0 at turning points, where relative control would stall. */
-  double span = (isfinite (Dlo) && isfinite (Dhi)) ? Dhi - Dlo
-    : isfinite (Dhi) ? Dhi - D0 : isfinite (Dlo) ? D0 - Dlo : 1.0;
-  double lscale = fmax (span, 1e-300);
-  double vscale = fmax (fabs (q0[CHAPLYGIN_V] * lambda), 1e-300);
-  double scale_abs[4] = { lscale * 0x1p-200, vscale, 1e-300, 1e-300 };
-
-  struct integrator it = { NULL, NULL, NULL };
-  it.step = gsl_odeiv2_step_alloc (gsl_odeiv2_step_rk8pd, 4);
-  it.control = gsl_odeiv2_control_scaled_new (0.01 * tol, tol, 1.0, 0.0,
-                                              scale_abs, 4);
-  it.evolve = gsl_odeiv2_evolve_alloc (4);
-  if (!it.step || !it.control || !it.evolve)
-    {
-      integrator_free (&it);
-      return CHAPLYGIN_ENOMEM;
-    }
-
-  /* theta and Omega times 2^k when |Omega| is below 2^-200 in these
-     units (1/2 <= 2^k |Omega| < 1): their error control is then relative
-     down to the subnormals, where the floor 1e-300 above would make it
-     absolute; theta starts at q0[THETA] + 0 (scaled from 0).  The
-     caller's own scale k_in adds to it. */
-  int k = 0;
-  double om = q0[CHAPLYGIN_OMEGA] * lambda;
-  if (om != 0.0 && fabs (om) < 0x1p-200)
-    {
-      frexp (om, &k);
-      k = -k;
-    }
-  struct ode_params par = { l0, k + k_in };
-  gsl_odeiv2_system sys = { rhs_time, NULL, 4, &par };
-
-  double y[4] = { 0.0, q0[1] * lambda, k ? 0.0 : q0[2], ldexp (om, k) };
-  double t = 0.0, h = 1e-3 * fmin (lscale, 1.0);
-  int status = CHAPLYGIN_ENOCONV, event = 0;    /* 1: D bound, 2: V = 0 */
+  struct ode_run r;
+  CHP_TRY (ode_start (&r, L0, q0, k_in, Dlo, Dhi, tol));
+  int event = 0;
   double te = 0.0, ye[4];
-
   for (long n = 0; n < ODE_MAX_STEPS && event == 0; n++)
-    {
-      double ta = t, ya[4] = { y[0], y[1], y[2], y[3] };
-      if (gsl_odeiv2_evolve_apply (it.evolve, it.control, it.step, &sys,
-                                   &t, 1e300, &h, y) != GSL_SUCCESS)
-        break;
-      /* the stretch to examine for a D crossing: [ta, tc] with state yc */
-      double tc = t, yc[4] = { y[0], y[1], y[2], y[3] };
-      if (ya[1] * y[1] < 0.0)
-        {
-          double tt, yt[4];
-          status = refine (&it, &sys, CHAPLYGIN_V, 0.0, ta, ya, t, y, &tt, yt);
-          if (status != CHAPLYGIN_SUCCESS)
-            break;
-          if (yt[0] >= dhi || yt[0] <= dlo)
-            {
-              tc = tt;          /* the exit came before the turn */
-              for (int i = 0; i < 4; i++)
-                yc[i] = yt[i];
-            }
-          else if (stop_at_turn)
-            {
-              te = tt;
-              for (int i = 0; i < 4; i++)
-                ye[i] = yt[i];
-              event = 2;
-              break;
-            }
-          else if (y[0] >= dhi || y[0] <= dlo)
-            {
-              ta = tt;          /* the exit came after the turn */
-              for (int i = 0; i < 4; i++)
-                ya[i] = yt[i];
-            }
-        }
-      if (yc[0] >= dhi || yc[0] <= dlo)
-        {
-          int upper = yc[0] >= dhi;
-          status = refine (&it, &sys, CHAPLYGIN_D, upper ? dhi : dlo, ta, ya, tc,
-                           yc, &te, ye);
-          if (status != CHAPLYGIN_SUCCESS)
-            break;
-          ye[0] = upper ? Dhi : Dlo;            /* land on the bound exactly */
-          event = 1;
-        }
-    }
-  integrator_free (&it);
-  if (event == 0)
+    event = ode_advance (&r, stop_at_turn, &te, ye);
+  integrator_free (&r.it);
+  if (event <= 0)
     return CHAPLYGIN_ENOCONV;
 
-  q1[CHAPLYGIN_D] = event == 1 ? ye[0] : D0 + ye[0];
+  /* Phase 3: the event state, unscaled */
+  const double lambda = r.lambda;
+  q1[CHAPLYGIN_D] = event == 1 ? ye[0] : r.D0 + ye[0];
   q1[CHAPLYGIN_V] = ye[1] / lambda;
-  q1[CHAPLYGIN_THETA] = k ? q0[CHAPLYGIN_THETA] + ldexp (ye[2], -k) : ye[2];
-  q1[CHAPLYGIN_OMEGA] = ldexp (ye[3] / lambda, -k);
+  q1[CHAPLYGIN_THETA] = r.k ? q0[CHAPLYGIN_THETA] + ldexp (ye[2], -r.k)
+    : ye[2];
+  q1[CHAPLYGIN_OMEGA] = ldexp (ye[3] / lambda, -r.k);
   *tau = te * lambda;
   *turned = (event == 2);
   return CHAPLYGIN_SUCCESS;

@@ -232,6 +232,79 @@ count_estimate (const chp_run *run, const chp_motion *m)
   return NAN;
 }
 
+/* A bracket lo < hi of the count: iterate lo passes (lo = 0: the current
+   segment, which the caller found to pass), iterate hi does not (its
+   outcome in *fhi), galloping up or down from k0 = ceil(x), x the closed
+   form's estimate (CHAPLYGIN_ERANGE beyond CHP_N_MAX). */
+static int
+count_bracket (const chp_run *run, double E, double H, double x,
+               unsigned long *lo_out, unsigned long *hi_out, int *fhi_out)
+{
+  unsigned long k0 = 1, lo = 0, hi = 0, step;
+  int f, fhi = CHP_SEGMENT_PASS;
+  if (x > 1.0)
+    k0 = x < (double) CHP_N_MAX ? (unsigned long) ceil (x) : CHP_N_MAX;
+  CHP_TRY (iterate_fate (run, E, H, k0, &f));
+  if (f == CHP_SEGMENT_PASS)
+    {
+      /* gallop up */
+      lo = k0;
+      for (step = 1;; step *= 2)
+        {
+          if (lo >= CHP_N_MAX)
+            return CHAPLYGIN_ERANGE;
+          hi = CHP_N_MAX - lo > step ? lo + step : CHP_N_MAX;
+          CHP_TRY (iterate_fate (run, E, H, hi, &fhi));
+          if (fhi != CHP_SEGMENT_PASS)
+            break;
+          lo = hi;
+        }
+    }
+  else
+    {
+      /* gallop down (iterate 0 passes) */
+      hi = k0;
+      fhi = f;
+      for (step = 1; hi - lo > 1; step *= 2)
+        {
+          unsigned long c = hi - lo > step ? hi - step : lo + 1;
+          CHP_TRY (iterate_fate (run, E, H, c, &f));
+          if (f == CHP_SEGMENT_PASS)
+            {
+              lo = c;
+              break;
+            }
+          hi = c;
+          fhi = f;
+        }
+    }
+  *lo_out = lo;
+  *hi_out = hi;
+  *fhi_out = fhi;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The bracket narrowed to hi - lo = 1 by bisection: hi is the count. */
+static int
+count_bisect (const chp_run *run, double E, double H, unsigned long *lo,
+              unsigned long *hi, int *fhi)
+{
+  int f;
+  while (*hi - *lo > 1)
+    {
+      unsigned long mid = *lo + (*hi - *lo) / 2;
+      CHP_TRY (iterate_fate (run, E, H, mid, &f));
+      if (f == CHP_SEGMENT_PASS)
+        *lo = mid;
+      else
+        {
+          *hi = mid;
+          *fhi = f;
+        }
+    }
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* chaplygin_discrete_collisions_before_reversal: (B.6), (B.7), corrected:
        n = ceil( log[(r (1 - C2^2) + 2 C1)/(rho (1 - C2^2) + 2 C1)]
                  / log C2^2 ),   rho = 1/(1 + m^2),
@@ -323,58 +396,12 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
     }
 
   /* It reverses after n >= 1 collisions: the smallest k whose iterate
-     does not pass, starting from the closed form. */
-  const double x = count_estimate (&run, &m);
-  unsigned long k0 = 1, lo = 0, hi = 0, step;
-  int f, fhi = CHP_SEGMENT_PASS;
-  if (x > 1.0)
-    k0 = x < (double) CHP_N_MAX ? (unsigned long) ceil (x) : CHP_N_MAX;
-  CHP_TRY (iterate_fate (&run, E, H, k0, &f));
-  if (f == CHP_SEGMENT_PASS)
-    {
-      /* gallop up */
-      lo = k0;
-      for (step = 1;; step *= 2)
-        {
-          if (lo >= CHP_N_MAX)
-            return CHAPLYGIN_ERANGE;
-          hi = CHP_N_MAX - lo > step ? lo + step : CHP_N_MAX;
-          CHP_TRY (iterate_fate (&run, E, H, hi, &fhi));
-          if (fhi != CHP_SEGMENT_PASS)
-            break;
-          lo = hi;
-        }
-    }
-  else
-    {
-      /* gallop down (iterate 0 passes) */
-      hi = k0;
-      fhi = f;
-      for (step = 1; hi - lo > 1; step *= 2)
-        {
-          unsigned long c = hi - lo > step ? hi - step : lo + 1;
-          CHP_TRY (iterate_fate (&run, E, H, c, &f));
-          if (f == CHP_SEGMENT_PASS)
-            {
-              lo = c;
-              break;
-            }
-          hi = c;
-          fhi = f;
-        }
-    }
-  while (hi - lo > 1)
-    {
-      unsigned long mid = lo + (hi - lo) / 2;
-      CHP_TRY (iterate_fate (&run, E, H, mid, &f));
-      if (f == CHP_SEGMENT_PASS)
-        lo = mid;
-      else
-        {
-          hi = mid;
-          fhi = f;
-        }
-    }
+     does not pass, bracketed from the closed form, then bisected. */
+  unsigned long lo, hi;
+  int fhi;
+  CHP_TRY (count_bracket (&run, E, H, count_estimate (&run, &m), &lo, &hi,
+                          &fhi));
+  CHP_TRY (count_bisect (&run, E, H, &lo, &hi, &fhi));
   if (fhi == CHP_SEGMENT_SPIN)
     return CHAPLYGIN_ESPIN;
   *reverses = 1;
