@@ -96,7 +96,8 @@ chp_rf (double x, double y, double z, chaplygin_precision prec, double *r)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_rd: Carlson's R_D(x, y, z) = 3/2 Int_0^inf dt/[sqrt((t+x)(t+y))(t+z)^(3/2)].
+/* chp_rd: Carlson's R_D(x, y, z)
+     = 3/2 Int_0^inf dt/[sqrt((t+x)(t+y))(t+z)^(3/2)].
    Domain: x, y >= 0, x + y > 0, z > 0, all finite.  (R_D is symmetric in x
    and y only.)
    Method: as chp_rf; R_D is homogeneous of degree -3/2; GSL's R_D needs
@@ -146,8 +147,9 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_quartic_interval: with P(t) = (t^2 + p)(t^2 + q), p = sqrt_p^2, q = sqrt_q^2,
-   p_minus_q = p - q > 0 (passed separately so that it keeps its relative accuracy)
+/* chp_quartic_interval: with P(t) = (t^2 + p)(t^2 + q), p = sqrt_p^2,
+   q = sqrt_q^2, p_minus_q = p - q > 0 (passed separately so that it keeps
+   its relative accuracy)
    and 0 <= y <= x,
        *F = sqrt(p) Int_y^x dt/sqrt(P(t)),
        *T = Int_y^x sqrt((t^2 + p)/(t^2 + q)) dt.
@@ -181,9 +183,9 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
    Accuracy: within 2 eps of 40-digit quadrature on the reference set
    (manual, "Speed and accuracy").  Errors from chp_rf/chp_rd are passed on. */
 int
-chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y, double x,
-                      double dxy, chaplygin_precision prec, double *F,
-                      double *T)
+chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
+                      double x, double dxy, chaplygin_precision prec,
+                      double *F, double *T)
 {
   if (!(dxy > 0.0))
     {
@@ -197,18 +199,19 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y, 
     return CHAPLYGIN_ESPIN;
 
   /* Everything below is scale invariant (degree 0 in t, sqrt p, sqrt q)
-     except dxy and p_minus_q/sqrt_p, which carry the dimension of T; so all of it is
-     formed from the arguments as given, and only the products inside
+     except dxy and p_minus_q/sqrt_p, which carry the dimension of T; so all
+     of it is formed from the arguments as given, and only the products inside
      tan(mu) are evaluated on a copy scaled by a power of two. */
   const double ax = hypot (x, sqrt_p), bx = hypot (x, sqrt_q);
   const double ay = hypot (y, sqrt_p), by = hypot (y, sqrt_q);
   double s;                     /* tan(mu) */
   if (y == 0.0)
-    s = x / sqrt_q;                 /* may be +Inf: mu = pi/2, the complete integral */
+    s = x / sqrt_q; /* may be +Inf: mu = pi/2, the complete integral */
   else if (fmax (x, sqrt_p) <= 0x1p250)
     {
       /* dxy (x + y) sqrt_p / (x ay by + y ax bx), with the denominator divided
-         by x + y (a weighted mean of ay by and ax bx, both >= sqrt_p sqrt_q > 0 or
+         by x + y (a weighted mean of ay by and ax bx, both >= sqrt_p sqrt_q
+         > 0 or
          >= y^2), so that tiny x, y, dxy do not underflow in a product */
       double wx = x / (x + y), wy = y / (x + y);
       s = dxy * sqrt_p / (wx * (ay * by) + wy * (ax * bx));
@@ -232,7 +235,8 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y, 
       sn = s * c;
     }
   const double c2 = c * c;
-  const double kprime2 = (sqrt_q / sqrt_p) * (sqrt_q / sqrt_p);     /* k'^2 = q/p */
+  const double kprime2
+      = (sqrt_q / sqrt_p) * (sqrt_q / sqrt_p);      /* k'^2 = q/p */
   const double Y = c2 + kprime2 * sn * sn;          /* 1 - k^2 sin^2(mu) */
 
   if (F)
@@ -251,9 +255,12 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y, 
       double ratio = (x + y) / (Ax + Ay);
       /* q (p - q)/((x^2 + q)(y^2 + q)), evaluated so that it neither
          overflows nor forms 0/0 (by > 0 here: y = q = 0 was excluded) */
-      double corr = (sqrt_q == 0.0) ? 0.0 : (sqrt_q / bx) * (sqrt_q / bx) * p_minus_q / by / by;
+      double corr = (sqrt_q == 0.0)
+                        ? 0.0
+                        : (sqrt_q / bx) * (sqrt_q / bx) * p_minus_q / by / by;
       double term1 = dxy * ratio * (1.0 + corr);
-      double term2 = (y == 0.0) ? 0.0 : (p_minus_q / sqrt_p) * (x / bx) * (y / by) * sn;
+      double term2
+          = (y == 0.0) ? 0.0 : (p_minus_q / sqrt_p) * (x / bx) * (y / by) * sn;
       double term3 = (p_minus_q / (3.0 * sqrt_p)) * (sn * sn * sn) * rd;
       *T = term1 + term2 + term3;
     }

@@ -1,4 +1,5 @@
-/* ellint.h -- kernel: Carlson's integrals and the reduction of every closed form of Appendix B to two of them (ellint.c).  Uses GSL only. */
+/* ellint.h -- kernel: Carlson's integrals and the reduction of every closed
+   form of Appendix B to two of them (ellint.c).  Uses GSL only. */
 #ifndef CHAPLYGIN_ELLINT_H
 #define CHAPLYGIN_ELLINT_H
 
@@ -22,7 +23,7 @@ int chp_rd (double x, double y, double z, chaplygin_precision prec,
      *T = Int_y^x sqrt((t^2 + p)/(t^2 + q)) dt.
    Either output may be NULL.  See ellint.c for the method. */
 int chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q,
-                          double y, double x, double dxy, chaplygin_precision prec,
-                          double *F, double *T);
+                          double y, double x, double dxy,
+                          chaplygin_precision prec, double *F, double *T);
 
 #endif /* CHAPLYGIN_ELLINT_H */

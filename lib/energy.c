@@ -122,7 +122,8 @@ chaplygin_discrete_energy_after (const chaplygin_discrete *sys, int dir,
           || chp_motion_init (e, h, &mk) != CHAPLYGIN_SUCCESS)
         return CHAPLYGIN_ESTATE;
       gk = chp_motion_g_exact (&mk, run.seg.l0, run.seg.l0_err);
-      int fate = gk > 0.0 ? chp_segment_classify (&run.seg, &mk, NULL) : CHP_SEGMENT_REVERSE;
+      int fate = gk > 0.0 ? chp_segment_classify (&run.seg, &mk, NULL)
+                          : CHP_SEGMENT_REVERSE;
       if (fate != CHP_SEGMENT_PASS)
         return fate_status (fate);
     }

@@ -262,7 +262,8 @@ chaplygin_discrete_heading (double L0, double D0, double V0, double Omega0,
       double q0[4] = { D0, V0, 0.0, Omega0 }, q1[4];
       int turned;
       double Dlo = D > D0 ? -HUGE_VAL : D, Dhi = D > D0 ? D : HUGE_VAL;
-      CHP_TRY (chp_ode_until (L0, q0, 0, Dlo, Dhi, 1, o.tol, q1, &ta, &turned));
+      CHP_TRY (
+          chp_ode_until (L0, q0, 0, Dlo, Dhi, 1, o.tol, q1, &ta, &turned));
       if (turned && gl != 0.0)
         return CHAPLYGIN_ENOCONV;       /* turned back short of D: D is within
                                            the integration error of the

@@ -94,9 +94,9 @@ qb_tau (double t, void *p)
    scale max(A + t, 1), and one Gauss-Kronrod panel cannot span decades
    (a leg may run from |l| ~ 1 to 1e100).  Sums into *th, *ta. */
 static int
-quad_geometric (double (*f_th) (double, void *), double (*f_ta) (double, void *),
-                const chp_motion *m, double A, double W, double tol, double *th,
-                double *ta)
+quad_geometric (double (*f_th) (double, void *),
+                double (*f_ta) (double, void *), const chp_motion *m, double A,
+                double W, double tol, double *th, double *ta)
 {
   struct quad_par qp = { m, A, fmax (fabs (m->h), 1.0) };
   double t = 0.0, r;
@@ -159,27 +159,27 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
           if (la * lb < 0.0)
             {
               double F1 = 0.0, T1 = 0.0, F2 = 0.0, T2 = 0.0;
-              CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, 0.0, aa, aa,
-                                             opt->precision, pF ? &F1 : NULL,
-                                             pT ? &T1 : NULL));
-              CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, 0.0, ab, ab,
-                                             opt->precision, pF ? &F2 : NULL,
-                                             pT ? &T2 : NULL));
+              CHP_TRY (chp_quartic_interval (
+                  m->sqrt_p, m->sqrt_q, m->p_minus_q, 0.0, aa, aa,
+                  opt->precision, pF ? &F1 : NULL, pT ? &T1 : NULL));
+              CHP_TRY (chp_quartic_interval (
+                  m->sqrt_p, m->sqrt_q, m->p_minus_q, 0.0, ab, ab,
+                  opt->precision, pF ? &F2 : NULL, pT ? &T2 : NULL));
               F = F1 + F2;
               T = T1 + T2;
             }
           else
-            CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, fmin (aa, ab),
-                                           fmax (aa, ab), dl, opt->precision,
-                                           pF, pT));
+            CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q,
+                                           fmin (aa, ab), fmax (aa, ab), dl,
+                                           opt->precision, pF, pT));
         }
       else
         {
           double wa = sqrt (ga), wb = sqrt (gb);
           double dw = dl * ((aa + ab) / (wa + wb));
-          CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q, fmin (wa, wb),
-                                         fmax (wa, wb), dw, opt->precision,
-                                         pF, pT));
+          CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q,
+                                         fmin (wa, wb), fmax (wa, wb), dw,
+                                         opt->precision, pF, pT));
         }
       if (dtheta)
         *dtheta = m->theta_factor * F;
@@ -196,12 +196,14 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
          integrand peaks), one otherwise */
       if (la * lb < 0.0)
         {
-          CHP_TRY (quad_geometric (qa_theta, qa_tau, m, 0.0, aa, opt->tol, qF, qT));
-          CHP_TRY (quad_geometric (qa_theta, qa_tau, m, 0.0, ab, opt->tol, qF, qT));
+          CHP_TRY (
+              quad_geometric (qa_theta, qa_tau, m, 0.0, aa, opt->tol, qF, qT));
+          CHP_TRY (
+              quad_geometric (qa_theta, qa_tau, m, 0.0, ab, opt->tol, qF, qT));
         }
       else
-        CHP_TRY (quad_geometric (qa_theta, qa_tau, m, fmin (aa, ab), dl, opt->tol,
-                                 qF, qT));
+        CHP_TRY (quad_geometric (qa_theta, qa_tau, m, fmin (aa, ab), dl,
+                                 opt->tol, qF, qT));
     }
   else
     {
@@ -209,8 +211,8 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
          and u_b - u_a = (|lb| - |la|)/(u_a + u_b) = +-dl/(u_a + u_b) */
       double c = m->sqrt_q;
       double ua = sqrt (ga / (aa + c)), ub = sqrt (gb / (ab + c));
-      CHP_TRY (quad_geometric (qb_theta, qb_tau, m, fmin (ua, ub), dl / (ua + ub),
-                               opt->tol, qF, qT));
+      CHP_TRY (quad_geometric (qb_theta, qb_tau, m, fmin (ua, ub),
+                               dl / (ua + ub), opt->tol, qF, qT));
     }
   F *= fmin (fabs (m->h), 1.0);
   if (dtheta)

@@ -1,4 +1,5 @@
-/* leg.h -- kernel: the heading and time along one leg of a motion between collisions (leg.c).  Uses motion.h, ellint.c, quad.c. */
+/* leg.h -- kernel: the heading and time along one leg of a motion between
+   collisions (leg.c).  Uses motion.h, ellint.c, quad.c. */
 #ifndef CHAPLYGIN_LEG_H
 #define CHAPLYGIN_LEG_H
 

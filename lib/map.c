@@ -831,9 +831,10 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
                           qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2, &Om));
   if (V2 < 0.0)
     V2 = 0.0;
-  double qminus[4] = { ev.Dminus, (ev.reversal ? -1 : 1) * copysign (sqrt (V2),
-                                                                 qplus[CHAPLYGIN_V]),
-                       qplus[CHAPLYGIN_THETA] + ev.dtheta, Om };
+  double qminus[4]
+      = { ev.Dminus,
+          (ev.reversal ? -1 : 1) * copysign (sqrt (V2), qplus[CHAPLYGIN_V]),
+          qplus[CHAPLYGIN_THETA] + ev.dtheta, Om };
   /* h: (3.6). */
   double q[4];
   CHP_TRY (chaplygin_discrete_collide (sys->L0, sys->Delta, qminus, q));

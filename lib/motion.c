@@ -108,7 +108,8 @@ chp_motion_set_one_minus_h2 (chp_motion *m, double one_minus_h2)
     }
 }
 
-/* chp_phase_one_minus_h2: 1 - h^2 = (2E - H^2)/(2E) of the phase state (l0, V0,
+/* chp_phase_one_minus_h2: 1 - h^2 = (2E - H^2)/(2E) of the phase state
+   (l0, V0,
    Omega0), 2E - H^2 = V0^2 - l0^2 (1 + l0^2) Omega0^2 = V0^2 - w^2 -
    (w l0)^2 with w = l0 Omega0, by error-free products and sums: accurate
    relative to the exact inputs however much the terms cancel.  twoE is

@@ -32,7 +32,8 @@ typedef struct
 
 int chp_motion_init (double E, double H, chp_motion *m);
 
-/* The cheap part of chp_motion_init: validation, E, H and one_minus_h2 only (all
+/* The cheap part of chp_motion_init: validation, E, H and one_minus_h2 only
+   (all
    that the exact classification and the (E, H) update need); then
    chp_motion_complete sets the rest. */
 int chp_motion_init_eh (double E, double H, chp_motion *m);
@@ -44,7 +45,8 @@ void chp_motion_set_one_minus_h2 (chp_motion *m, double one_minus_h2);
 
 /* 1 - h^2 of the phase state (l0, V0, Omega0) with 2E = twoE, by
    error-free arithmetic from the phase inputs (NaN/Inf on overflow). */
-double chp_phase_one_minus_h2 (double l0, double V0, double Omega0, double twoE);
+double chp_phase_one_minus_h2 (double l0, double V0, double Omega0,
+                               double twoE);
 
 /* 1 - h^2 = (2E - H^2)/(2E), E > 0, with its sign exact (0 iff 2E = H^2);
    -Inf on overflow. */

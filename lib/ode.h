@@ -1,4 +1,5 @@
-/* ode.h -- kernel: event-located integration of (3.1) (ode.c).  Uses GSL and motion.h. */
+/* ode.h -- kernel: event-located integration of (3.1) (ode.c).  Uses GSL
+   and motion.h. */
 #ifndef CHAPLYGIN_ODE_H
 #define CHAPLYGIN_ODE_H
 
@@ -12,8 +13,8 @@
    Omega of q0 and q1 are 2^k times the true ones (k = 0: unscaled; a
    caller with a tiny H passes it scaled, to keep its relative precision
    through the subnormal range). */
-int chp_ode_until (double L0, const double q0[4], int k, double Dlo, double Dhi,
-                   int stop_at_turn, double tol, double q1[4], double *tau,
-                   int *turned);
+int chp_ode_until (double L0, const double q0[4], int k, double Dlo,
+                   double Dhi, int stop_at_turn, double tol, double q1[4],
+                   double *tau, int *turned);
 
 #endif /* CHAPLYGIN_ODE_H */

@@ -1,4 +1,5 @@
-/* quad.h -- kernel: adaptive Gauss-Kronrod quadrature without allocation or GSL's error handler (quad.c).  Uses GSL only. */
+/* quad.h -- kernel: adaptive Gauss-Kronrod quadrature without allocation or
+   GSL's error handler (quad.c).  Uses GSL only. */
 #ifndef CHAPLYGIN_QUAD_H
 #define CHAPLYGIN_QUAD_H
 

@@ -135,9 +135,12 @@ chaplygin_discrete_reversal_range (double L0, double Delta, int dir,
     }
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
-  double lo = 1.0 / chp_one_plus_sq_exact (run.seg.l0, run.seg.l0_err), hi = lo;
+  double lo = 1.0 / chp_one_plus_sq_exact (run.seg.l0, run.seg.l0_err),
+         hi = lo;
   if (run.seg.toward)
-    hi = run.seg.crosses ? 1.0 : 1.0 / chp_one_plus_sq_exact (run.seg.l1, run.seg.l1_err);
+    hi = run.seg.crosses
+             ? 1.0
+             : 1.0 / chp_one_plus_sq_exact (run.seg.l1, run.seg.l1_err);
   *rlo = lo;
   *rhi = hi;
   *nonempty = run.seg.toward;
@@ -166,7 +169,8 @@ chaplygin_discrete_c3 (double L0, double Delta, int dir, double *C3)
   chp_run run;
   CHP_TRY (run_from_params (L0, Delta, dir, &run));
   /* |Delta (2 L0 + Delta)| < 2^1003: finite */
-  *C3 = dir * Delta * (run.s / chp_one_plus_sq_exact (run.seg.l1, run.seg.l1_err));
+  *C3 = dir * Delta
+        * (run.s / chp_one_plus_sq_exact (run.seg.l1, run.seg.l1_err));
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -223,7 +227,8 @@ count_estimate (const chp_run *run, const chp_motion *m)
     {
       double d = run->dir * run->Delta;
       den = (d * run->s / chp_one_plus_sq_exact (run->seg.l1, run->seg.l1_err))
-        * (run->C2 * run->C2 / chp_one_plus_sq_exact (run->seg.l0, run->seg.l0_err));
+            * (run->C2 * run->C2
+               / chp_one_plus_sq_exact (run->seg.l0, run->seg.l0_err));
     }
   /* (r (1-q) + 2 C1)/(rho (1-q) + 2 C1) = 1 + z */
   const double z = (run->omq / den) * rmr;
@@ -388,8 +393,10 @@ chaplygin_discrete_collisions_before_reversal (const chaplygin_discrete *sys,
     }
   if (!run.seg.toward || H == 0.0 || run.C2 == 0.0
       || (run.omq > 0.0
-          && !(chp_run_final_energy (&run, E, chp_motion_g_exact
-                                     (&m, run.seg.l0, run.seg.l0_err), H) < 0.0)))
+          && !(chp_run_final_energy (
+                   &run, E,
+                   chp_motion_g_exact (&m, run.seg.l0, run.seg.l0_err), H)
+               < 0.0)))
     {
       *reverses = 0;
       return CHAPLYGIN_SUCCESS;

@@ -49,7 +49,8 @@ chp_run_init (const chaplygin_discrete *sys, int dir, chp_run *run)
   r.s = s;
   /* 2 + l_f (2 L0 + Delta), cancelling near C2 = -1: from the exact
      parts of both factors */
-  const double t = fma (r.seg.l1, s, 2.0) + (r.seg.l1 * s_err + r.seg.l1_err * s);
+  const double t
+      = fma (r.seg.l1, s, 2.0) + (r.seg.l1 * s_err + r.seg.l1_err * s);
   r.c2m1 = -d * chp_L_over_one_plus_sq (r.seg.l1);
   r.c2p1 = t / nf;
   if (r.C2 == 0.0)
