@@ -213,10 +213,10 @@ chp_far_exponent (const chp_far *f, chp_quantity q)
     case CHP_Q_DHEADING_DENERGY:
       return f->j - 2 * f->m;
     case CHP_Q_DHEADING_DMOMENTUM:
+    default:
       /* the heading is linear in H where j > 0: j cancels */
       return f->k - f->m;
     }
-  return 0;
 }
 
 double
