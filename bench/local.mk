@@ -39,3 +39,29 @@ bench: bench/work-precision
 	  -e "png = '$(srcdir)/doc/figures/work-precision.png'" \
 	  $(srcdir)/doc/figures/style.gp $(srcdir)/bench/work-precision.gp
 .PHONY: bench
+
+# `make bench-carlson': the fused Carlson kernel (lib/carlson.c) against
+# GSL's R_F + R_D on the triples chp_quartic_interval forms: accuracy
+# against Arb, time (min and median of rounds) and instruction counts
+# (callgrind, when valgrind is installed), as ratios to GSL in one run;
+# writes bench/carlson.csv.  Needs Arb; not part of `make check'.
+EXTRA_PROGRAMS += bench/carlson
+bench_carlson_SOURCES = bench/carlson.c
+bench_carlson_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
+bench_carlson_LDADD = lib/libchaplygin-core.la $(GSL_LIBS) $(ARB_LIBS) \
+	$(CODE_COVERAGE_LIBS) -lm
+EXTRA_DIST += bench/carlson.csv
+
+bench-carlson:
+	@if test $(BENCH_HAVE_ARB) != yes; then \
+	  echo "make bench-carlson: the reference values need Arb, and" \
+	    "configure did not find it (install libflint-arb-dev and rerun" \
+	    "configure)" >&2; \
+	  exit 1; \
+	fi
+	$(MAKE) $(AM_MAKEFLAGS) bench/carlson
+	@if command -v valgrind >/dev/null 2>&1; then cg=; else \
+	  echo "make bench-carlson: valgrind not found: no instruction" \
+	    "counts" >&2; cg=--no-callgrind; fi; \
+	./bench/carlson $$cg --csv $(srcdir)/bench/carlson.csv
+.PHONY: bench-carlson

@@ -19,6 +19,8 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/flow.c \
 	lib/map.c \
 	lib/ellint.c \
+	lib/carlson.h \
+	lib/carlson.c \
 	lib/quad.c \
 	lib/ode.c \
 	lib/stability.c \

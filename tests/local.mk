@@ -16,6 +16,7 @@ UNIT_CHECKS = \
 	tests/test_flow \
 	tests/test_map \
 	tests/test_ellint \
+	tests/test_carlson \
 	tests/test_quad \
 	tests/test_ode \
 	tests/test_stability \
@@ -57,6 +58,20 @@ tests_test_map_LDADD = $(TEST_LDADD)
 tests_test_ellint_SOURCES = tests/test_ellint.c tests/ref_ellint.h
 tests_test_ellint_CFLAGS = $(TEST_CFLAGS)
 tests_test_ellint_LDADD = $(TEST_LDADD)
+# the fused Carlson kernel (lib/carlson.c): closed forms in binary128,
+# same bits across requests and entries, GSL, statuses; and, where
+# configure found Arb, its accuracy against Arb (tests/test_carlson_arb,
+# the same source with -DCHP_TEST_ARB)
+tests_test_carlson_SOURCES = tests/test_carlson.c
+tests_test_carlson_CFLAGS = $(TEST_CFLAGS)
+tests_test_carlson_LDADD = $(TEST_LDADD) -lquadmath
+if HAVE_ARB
+check_PROGRAMS += tests/test_carlson_arb
+TESTS += tests/test_carlson_arb
+endif
+tests_test_carlson_arb_SOURCES = tests/test_carlson.c
+tests_test_carlson_arb_CFLAGS = $(TEST_CFLAGS) -DCHP_TEST_ARB
+tests_test_carlson_arb_LDADD = $(TEST_LDADD) -lquadmath $(ARB_LIBS)
 tests_test_quad_SOURCES = tests/test_quad.c
 tests_test_quad_CFLAGS = $(TEST_CFLAGS)
 tests_test_quad_LDADD = $(TEST_LDADD)
