@@ -14,6 +14,7 @@
 
 #include "eft.h"        /* error-free arithmetic, CHP_TRY; uses libm */
 #include "status.h"     /* options; uses nothing */
+#include "carlson.h"    /* Carlson's R_F, R_D, one duplication; libm */
 #include "ellint.h"     /* Carlson integrals, the quartic; uses GSL */
 #include "quad.h"       /* adaptive quadrature; uses GSL */
 #include "collision.h"  /* the collision, a system's constants; eft */
