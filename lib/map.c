@@ -221,7 +221,7 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    cover everything excluded here), 1 with E', H' and the reversal flag
    written. */
 #define EH_MARGIN 0x1p-40
-static inline int
+static CHP_ALWAYS_INLINE int
 eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
          int start, double *E1, double *H1, int *reversal)
 {
