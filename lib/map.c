@@ -393,7 +393,6 @@ step_begin (step_work *w, const chaplygin_discrete *sys,
   w->in = in;
   w->request = request & CHAPLYGIN_WANT_PEG ? request | CHAPLYGIN_WANT_THETA
     : request;
-  chp_segment_init (sys, in->dir, &w->seg);
   w->fast = 0;
   w->E1 = w->H1 = w->Vminus = w->dtheta = w->dtau = 0.0;
   return CHAPLYGIN_SUCCESS;
@@ -559,12 +558,12 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
 {
   step_work w;
   CHP_TRY (step_begin (&w, sys, in, request, opt, out));
-  if (fabs (w.seg.l0) > CHP_L_MAX || fabs (w.seg.l1) > CHP_L_MAX)
+  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
     return g0_phase ? CHAPLYGIN_ERANGE
       : step_far (sys, in, w.request, opt, out, ev);
   int fast_reversal = 0;
   w.fast = w.o.method != CHAPLYGIN_ODE
-    && eh_fast (sys, in, w.seg.start, &w.E1, &w.H1, &fast_reversal);
+    && eh_fast (sys, in, in->dir > 0 ? 0 : 1, &w.E1, &w.H1, &fast_reversal);
   if (w.fast && w.request == 0 && !ev)
     {
       *out = *in;
@@ -573,6 +572,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
       out->H = w.H1;
       return CHAPLYGIN_SUCCESS;
     }
+  chp_segment_init (sys, in->dir, &w.seg);
   CHP_TRY (step_classify (&w, g0_phase));
   if (w.o.method == CHAPLYGIN_ODE)
     CHP_TRY (step_by_ode (&w));

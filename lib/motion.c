@@ -207,19 +207,6 @@ chp_field (double L0, const double q[4], double dq[4])
   return CHAPLYGIN_SUCCESS;
 }
 
-void
-chp_segment_init (const chaplygin_discrete *sys, int dir, chp_segment *seg)
-{
-  seg->dir = dir;
-  seg->start = dir > 0 ? 0 : 1;
-  seg->far = 1 - seg->start;
-  seg->l0 = sys->l_end[seg->start];
-  seg->l0_err = sys->l_err[seg->start];
-  seg->l1 = sys->l_end[seg->far];
-  seg->l1_err = sys->l_err[seg->far];
-  seg->toward = dir > 0 ? seg->l0 < 0.0 : seg->l0 > 0.0;
-  seg->crosses = chp_crosses (seg->l0, seg->l1);
-}
 
 int
 chp_segment_classify (const chp_segment *seg, const chp_motion *m,

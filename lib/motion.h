@@ -125,9 +125,20 @@ typedef struct
 } chp_segment;
 
 /* The segment of direction dir (+1 or -1, not checked) of a system made by
-   chaplygin_discrete_init. */
-void chp_segment_init (const chaplygin_discrete *sys, int dir,
-                       chp_segment *seg);
+   chaplygin_discrete_init (inline: every step of the map sets one up). */
+static inline void
+chp_segment_init (const chaplygin_discrete *sys, int dir, chp_segment *seg)
+{
+  seg->dir = dir;
+  seg->start = dir > 0 ? 0 : 1;
+  seg->far = 1 - seg->start;
+  seg->l0 = sys->l_end[seg->start];
+  seg->l0_err = sys->l_err[seg->start];
+  seg->l1 = sys->l_end[seg->far];
+  seg->l1_err = sys->l_err[seg->far];
+  seg->toward = dir > 0 ? seg->l0 < 0.0 : seg->l0 > 0.0;
+  seg->crosses = chp_crosses (seg->l0, seg->l1);
+}
 
 /* The exact classification of the motion m (E, H valid for the start) on
    the segment: the least V^2 has the sign of 1 - h^2 (exact) where the
