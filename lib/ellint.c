@@ -16,18 +16,10 @@
 #include <float.h>
 #include <math.h>
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_sf_ellint.h>
-
+#include "carlson.h"
 #include "chaplygin.h"
 #include "eft.h"
 #include "ellint.h"
-
-static gsl_mode_t
-gsl_mode (chaplygin_precision prec)
-{
-  return prec == CHAPLYGIN_PREC_SINGLE ? GSL_PREC_SINGLE : GSL_PREC_DOUBLE;
-}
 
 /* Sort three numbers ascending. */
 static void
@@ -42,33 +34,13 @@ sort3 (double *a, double *b, double *c)
     t = *a, *a = *b, *b = t;
 }
 
-/* Bring the largest of x <= y <= z into [1, 4) by an even power of two,
-   returning the exponent k: the arguments are multiplied by 2^k. */
-static int
-scale_even (double *x, double *y, double *z)
-{
-  int e;
-  frexp (*z, &e);               /* z = f 2^e, 1/2 <= f < 1 */
-  int k = -(e - 1);             /* z 2^k in [1/2, 1) * 2 = [1, 2) */
-  if (k % 2 != 0)
-    k += 1;                     /* z 2^k in [1, 4) */
-  *x = ldexp (*x, k);
-  *y = ldexp (*y, k);
-  *z = ldexp (*z, k);
-  return k;
-}
-
 /* chp_rf: Carlson's R_F(x, y, z) = 1/2 Int_0^inf dt/sqrt((t+x)(t+y)(t+z)).
    Domain: x, y, z >= 0 finite, at most one of them zero.
-   Method: GSL's gsl_sf_ellint_RF_e (Carlson's duplication, errtol 1e-3 for
-   double precision) when the arguments lie well inside its domain
-   [GSL requires pairwise sums >= 5 DBL_MIN and max < 0.2 DBL_MAX];
-   otherwise exact scaling by an even power of two (R_F is homogeneous of
-   degree -1/2), or, when the two smaller arguments sum to less than 2^-100
-   times the largest, the asymptotic form
-       R_F(x, y, z) = log(4 sqrt(z)/(sqrt(x) + sqrt(y)))/sqrt(z)
-   whose relative error is O((x + y)/z) < 1e-28 there (checked against
-   mpmath at 50 digits).
+   Method: the library's kernel (carlson.c: one duplication loop for R_F
+   and R_D, its guards: exact power-of-two scaling outside [2^-500, 2^500],
+   the asymptotic form when the two smaller arguments sum to less than
+   2^-100 times the largest) on the arguments sorted ascending, so that the
+   result does not depend on their order (the kernel's may by an ulp).
    Errors: CHAPLYGIN_EDOM for a negative or non-finite argument,
    CHAPLYGIN_ERANGE when two arguments are zero (the integral diverges). */
 int
@@ -78,73 +50,21 @@ chp_rf (double x, double y, double z, chaplygin_precision prec, double *r)
       || !isfinite (z))
     return CHAPLYGIN_EDOM;
   sort3 (&x, &y, &z);
-  if (y == 0.0)
-    return CHAPLYGIN_ERANGE;
-  if (x + y < z * 0x1p-100)
-    {
-      double sz = sqrt (z);
-      *r = log (4.0 * sz / (sqrt (x) + sqrt (y))) / sz;
-      return CHAPLYGIN_SUCCESS;
-    }
-  int k = 0;
-  if (!(z <= 0x1p500 && x + y >= 0x1p-500))
-    k = scale_even (&x, &y, &z);
-  gsl_sf_result res;
-  if (gsl_sf_ellint_RF_e (x, y, z, gsl_mode (prec), &res) != GSL_SUCCESS)
-    return CHAPLYGIN_EDOM;      /* unreachable: the domain was checked */
-  *r = ldexp (res.val, k / 2);
-  return CHAPLYGIN_SUCCESS;
+  return chp_carlson_rfrd (x, y, z, prec, r, NULL);
 }
 
 /* chp_rd: Carlson's R_D(x, y, z)
      = 3/2 Int_0^inf dt/[sqrt((t+x)(t+y))(t+z)^(3/2)].
    Domain: x, y >= 0, x + y > 0, z > 0, all finite.  (R_D is symmetric in x
    and y only.)
-   Method: as chp_rf; R_D is homogeneous of degree -3/2; GSL's R_D needs
-   min(x + y, z) >= 2/DBL_MAX^(2/3) ~ 6e-206 and max below ~1e202.  When
-   x + y < 2^-100 z the asymptotic form
-       R_D(x, y, z) = 3 [log(4 sqrt(z)/(sqrt(x) + sqrt(y))) - 1]/z^(3/2)
-   is used (relative error O((x + y)/z), checked against mpmath).
+   Method: the kernel of carlson.c, with its guards (as chp_rf).
    Errors: CHAPLYGIN_EDOM for negative or non-finite arguments or z = 0;
-   CHAPLYGIN_ERANGE for x = y = 0 (divergent), and for z < 2^-600 times the
-   largest argument (not supported: no caller needs it). */
+   CHAPLYGIN_ERANGE for x = y = 0 (divergent), an overflowing R_D, and
+   max(x, y, z) > 2^500 with z < 2^-600 of it (not supported). */
 int
 chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
 {
-  if (!(x >= 0.0 && y >= 0.0 && z > 0.0) || !isfinite (x) || !isfinite (y)
-      || !isfinite (z))
-    return CHAPLYGIN_EDOM;
-  if (x + y == 0.0)
-    return CHAPLYGIN_ERANGE;
-  double m = fmax (fmax (x, y), z);
-  if (x + y < z * 0x1p-100)
-    {
-      double sz = sqrt (z);
-      *r = 3.0 * (log (4.0 * sz / (sqrt (x) + sqrt (y))) - 1.0) / (z * sz);
-      return CHAPLYGIN_SUCCESS;
-    }
-  int k = 0;
-  if (!(m <= 0x1p500 && x + y >= 0x1p-500 && z >= 0x1p-500))
-    {
-      int e;
-      frexp (m, &e);
-      k = -(e - 1);
-      if (k % 2 != 0)
-        k += 1;
-      x = ldexp (x, k);
-      y = ldexp (y, k);
-      z = ldexp (z, k);
-      /* Now max in [1, 4).  A z below 2^-600 of the largest argument is
-         outside what this wrapper supports (GSL needs z >= 6e-206; the
-         library only calls it with z = 1 >= x, y). */
-      if (z < 0x1p-600)
-        return CHAPLYGIN_ERANGE;
-    }
-  gsl_sf_result res;
-  if (gsl_sf_ellint_RD_e (x, y, z, gsl_mode (prec), &res) != GSL_SUCCESS)
-    return CHAPLYGIN_EDOM;      /* unreachable: the domain was checked */
-  *r = ldexp (res.val, 3 * k / 2);
-  return CHAPLYGIN_SUCCESS;
+  return chp_carlson_rfrd (x, y, z, prec, NULL, r);
 }
 
 /* chp_quartic_interval: with P(t) = (t^2 + p)(t^2 + q), p = sqrt_p^2,
@@ -239,16 +159,14 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
       = (sqrt_q / sqrt_p) * (sqrt_q / sqrt_p);      /* k'^2 = q/p */
   const double Y = c2 + kprime2 * sn * sn;          /* 1 - k^2 sin^2(mu) */
 
+  /* R_F and R_D of (c2, Y, 1) from one duplication loop, each with the
+     same bits whether the other is requested or not */
+  double rf = 0.0, rd = 0.0;
+  CHP_TRY (chp_carlson_rfrd_z1 (c2, Y, prec, F ? &rf : NULL, T ? &rd : NULL));
   if (F)
-    {
-      double rf;
-      CHP_TRY (chp_rf (c2, Y, 1.0, prec, &rf));
-      *F = sn * rf;
-    }
+    *F = sn * rf;
   if (T)
     {
-      double rd;
-      CHP_TRY (chp_rd (c2, Y, 1.0, prec, &rd));
       /* (x + y)/(A(x) + A(y)), A(t) = t sqrt((t^2 + p)/(t^2 + q)) */
       double Ax = x * (ax / bx);
       double Ay = (y == 0.0) ? 0.0 : y * (ay / by);

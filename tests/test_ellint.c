@@ -157,15 +157,17 @@ END_TEST
 
 START_TEST (test_carlson_guards)
 {
-  /* Inside GSL's domain chp_rf/chp_rd are GSL's values exactly. */
+  /* Inside GSL's domain chp_rf/chp_rd (the kernel of carlson.c) and GSL
+     agree within the sum of their errors against Arb (kernel <= 6 ulps
+     for R_F, 8 for R_D; GSL 4.6 and 6.2: tests/test_carlson): 16 eps. */
   double r;
   gsl_sf_result g;
   ck_assert_ok (chp_rf (0.25, 1.5, 2.385, 0, &r));
   gsl_sf_ellint_RF_e (0.25, 1.5, 2.385, GSL_PREC_DOUBLE, &g);
-  ck_assert (r == g.val);
+  ck_assert_eps (r, g.val, 16);
   ck_assert_ok (chp_rd (0.25, 1.5, 2.385, 0, &r));
   gsl_sf_ellint_RD_e (0.25, 1.5, 2.385, GSL_PREC_DOUBLE, &g);
-  ck_assert (r == g.val);
+  ck_assert_eps (r, g.val, 16);
   /* Scaling branch: homogeneity of degree -1/2 and -3/2. */
   double a, b;
   ck_assert_ok (chp_rf (0.25, 1.5, 2.385, 0, &a));
@@ -194,11 +196,13 @@ START_TEST (test_carlson_guards)
       ck_assert_ok (chp_rf (perm[k][0], perm[k][1], perm[k][2], 0, &b));
       ck_assert_rel (b, a, 2 * DBL_EPSILON);
     }
-  /* R_D with z far below x, y: only z >= 2^-600 max is supported. */
+  /* R_D with z far below x, y (the GSL wrapper supported only
+     z >= 2^-600 max; the kernel of carlson.c computes it). */
   ck_assert_ok (chp_rd (1.0, 2.0, 1e-170, 0, &a));
   /* z -> 0: R_D -> 3/sqrt(x y z), relative correction O(sqrt(z)) */
   ck_assert_rel (a, 3.0 / sqrt (2.0 * 1e-170), 16 * DBL_EPSILON);
-  ck_assert_status (chp_rd (1.0, 2.0, 1e-200, 0, &a), CHAPLYGIN_ERANGE);
+  ck_assert_ok (chp_rd (1.0, 2.0, 1e-200, 0, &a));
+  ck_assert_rel (a, 3.0 / sqrt (2.0 * 1e-200), 16 * DBL_EPSILON);
   /* Errors. */
   ck_assert_status (chp_rf (-1.0, 1.0, 1.0, 0, &r), CHAPLYGIN_EDOM);
   ck_assert_status (chp_rf (NAN, 1.0, 1.0, 0, &r), CHAPLYGIN_EDOM);
