@@ -90,6 +90,20 @@ chp_sq_exact (double l, double el)
   return fma (l, l, 2.0 * l * el);
 }
 
+/* sqrt(a^2 + b^2) without libm's hypot where the squares cannot overflow
+   or lose bits to underflow (the larger of |a|, |b| in [2^-450, 2^450]:
+   the smaller one's square may underflow, but is then below 2^-122 of the
+   larger's): sqrt(fma(a, a, b b)) within 2^-52 relative (two roundings
+   inside the root, halved, and the root's own); hypot elsewhere. */
+static inline double
+chp_hypot (double a, double b)
+{
+  const double aa = fabs (a), bb = fabs (b), m = aa > bb ? aa : bb;
+  if (m >= 0x1p-450 && m <= 0x1p450)    /* false for NaN: hypot's NaN */
+    return sqrt (fma (a, a, b * b));
+  return hypot (a, b);
+}
+
 /* L/(1 + L^2) without overflow (eft.c). */
 double chp_L_over_one_plus_sq (double L);
 

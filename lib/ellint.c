@@ -122,8 +122,8 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
      except dxy and p_minus_q/sqrt_p, which carry the dimension of T; so all
      of it is formed from the arguments as given, and only the products inside
      tan(mu) are evaluated on a copy scaled by a power of two. */
-  const double ax = hypot (x, sqrt_p), bx = hypot (x, sqrt_q);
-  const double ay = hypot (y, sqrt_p), by = hypot (y, sqrt_q);
+  const double ax = chp_hypot (x, sqrt_p), bx = chp_hypot (x, sqrt_q);
+  const double ay = chp_hypot (y, sqrt_p), by = chp_hypot (y, sqrt_q);
   double s;                     /* tan(mu) */
   if (y == 0.0)
     s = x / sqrt_q; /* may be +Inf: mu = pi/2, the complete integral */
@@ -142,8 +142,8 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
       frexp (fmax (x, sqrt_p), &e);
       double xs = ldexp (x, -e), ys = ldexp (y, -e), ds = ldexp (dxy, -e);
       double ps = ldexp (sqrt_p, -e), qs = ldexp (sqrt_q, -e);
-      s = ds * (xs + ys) * ps / (xs * (hypot (ys, ps) * hypot (ys, qs))
-                                 + ys * (hypot (xs, ps) * hypot (xs, qs)));
+      s = ds * (xs + ys) * ps / (xs * (chp_hypot (ys, ps) * chp_hypot (ys, qs))
+                                 + ys * (chp_hypot (xs, ps) * chp_hypot (xs, qs)));
     }
 
   double c, sn;                 /* cos(mu), sin(mu) */
@@ -151,7 +151,7 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
     c = 0.0, sn = 1.0;
   else
     {
-      c = 1.0 / hypot (1.0, s);
+      c = 1.0 / chp_hypot (1.0, s);
       sn = s * c;
     }
   const double c2 = c * c;
