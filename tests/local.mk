@@ -94,7 +94,7 @@ tests_test_energy_SOURCES = tests/test_energy.c
 tests_test_energy_CFLAGS = $(TEST_CFLAGS)
 tests_test_energy_LDADD = $(TEST_LDADD)
 
-EXTRA_DIST += tests/concordance.sh tests/layers.sh tests/ref/make_refs.py tests/ref/README
+EXTRA_DIST += tests/concordance.sh tests/layers.sh tests/fp-digest.sh tests/ref/make_refs.py tests/ref/README
 
 # the extremes of issue 6: every entry point, each method, at the edges of
 # its domain (documented result with its accuracy, or a documented status)
@@ -128,7 +128,8 @@ SAN_DIR = $(distdir)-asan
 check-sanitizers: distdir
 	rm -rf $(SAN_DIR) && mv $(distdir) $(SAN_DIR)
 	cd $(SAN_DIR) && ./configure --enable-sanitizers --disable-shared \
-	  --without-arb --enable-werror CFLAGS="-O1 -g" >/dev/null \
+	  --without-arb --enable-werror --disable-fma CFLAGS="-O1 -g" \
+	  >/dev/null \
 	  && $(MAKE) $(AM_MAKEFLAGS) \
 	  && { nm tools/chaplygin | grep __asan_init >/dev/null \
 	       && nm tools/chaplygin | grep __ubsan_handle >/dev/null \
@@ -138,6 +139,15 @@ check-sanitizers: distdir
 	  && ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
 	     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	     $(MAKE) $(AM_MAKEFLAGS) check
+	@# the same bits with and without the FMA instruction (this build may
+	@# use -mfma; the sanitizer build above does not)
+	$(SHELL) $(srcdir)/tests/fp-digest.sh ./tools/chaplygin $(srcdir) \
+	  > fp-digest.main
+	cd $(SAN_DIR) && $(SHELL) tests/fp-digest.sh ./tools/chaplygin . \
+	  > ../fp-digest.portable
+	cmp fp-digest.main fp-digest.portable \
+	  && echo "check-sanitizers: the portable build prints the same bits"
+	rm -f fp-digest.main fp-digest.portable
 	rm -rf $(SAN_DIR)
 	$(MAKE) $(AM_MAKEFLAGS) check-tsan
 .PHONY: check-sanitizers
