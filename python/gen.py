@@ -445,6 +445,16 @@ def py_doc(f, sig, outs, optional):
     return '\n'.join(lines)
 
 
+_CTYPES = {}
+
+
+def _ctype_const(text):
+    """The name of a module constant holding ffi.typeof(TEXT)."""
+    if text not in _CTYPES:
+        _CTYPES[text] = '_C%d' % len(_CTYPES)
+    return _CTYPES[text]
+
+
 def py_wrapper(f, idx):
     """The source of the Python wrapper of F."""
     fname = '_f%d' % idx
@@ -507,7 +517,8 @@ def py_wrapper(f, idx):
         if nullable:
             c = '(%s is None or %s)' % (p.name, c)
         conds.append(c)
-    body.append('    if %s:' % (' and '.join(conds) if conds else 'True'))
+    conds.append("errors == 'raise'")
+    body.append('    if %s:' % ' and '.join(conds))
     cargs = []
     for k, p in enumerate(f.params):
         nullable = defaults.get(p.cname) == 'None'
@@ -521,12 +532,10 @@ def py_wrapper(f, idx):
         elif p.kind == 'opt':
             cargs.append('_opt')
         else:
-            if p.kind == 'out':
-                t = "'%s *'" % p.ctype
-            elif p.kind == 'out_array':
-                t = "'%s[%d]'" % (p.ctype, p.dims)
+            if p.kind == 'out_array':
+                t = _ctype_const('%s[%d]' % (p.ctype, p.dims))
             else:
-                t = "'%s *'" % p.ctype
+                t = _ctype_const('%s *' % p.ctype)
             if p.cname in optional:
                 body.append('        _o%d = _new(%s) if return_%s else _NULL'
                             % (k, t, p.name))
@@ -556,7 +565,20 @@ def py_wrapper(f, idx):
             v = '(%s if _o%d[0] else None)' % (v, kc)
         res.append((p, v))
     names = [p.name for p, _ in res]
-    if any(p.cname in optional for p, _ in res):
+    # the outputs returned by default: explicitly (no _pick on the way)
+    dflt = [(p, v) for p, v in res if optional.get(p.cname, True)]
+    if len(dflt) == 1:
+        ret = dflt[0][1]
+    elif not dflt:
+        ret = 'None'
+    else:
+        ret = '_R%d(%s)' % (idx, ', '.join(v for _, v in dflt))
+    opt_res = [p for p, _ in res if p.cname in optional]
+    if opt_res:
+        same = ' and '.join(('return_%s' if optional[p.cname] else
+                             'not return_%s') % p.name for p in opt_res)
+        body.append('        if %s:' % same)
+        body.append('            return %s' % ret)
         flags = ', '.join(('return_%s' % p.name) if p.cname in optional
                           else 'True' for p, _ in res)
         body.append('        return _pick(%r, (%s), (%s,))'
@@ -564,12 +586,8 @@ def py_wrapper(f, idx):
                        ', '.join('%s if return_%s else None' % (v, p.name)
                                  if p.cname in optional else v
                                  for p, v in res)))
-    elif len(res) == 1:
-        body.append('        return %s' % res[0][1])
-    elif not res:
-        body.append('        return None')
     else:
-        body.append('        return _R%d(%s)' % (idx, ', '.join(v for _, v in res)))
+        body.append('        return %s' % ret)
     # the vectorised path
     wants = []
     for p in f.params:
@@ -583,9 +601,9 @@ def py_wrapper(f, idx):
                 % (f.cname, vin, ', '.join(wants) + (',' if len(wants) == 1 else ''),
                    '_opt' if has_opt else 'None'))
     src = '\n'.join(body) + '\n'
-    if len(res) > 1 and not any(p.cname in optional for p, _ in res):
-        src = '_R%d = _namedtuple(%r, %r)\n' % (
-            idx, f.pyname + '_result', tuple(names)) + src
+    if len(dflt) > 1:
+        src = '_R%d = _nt(%r)\n' % (idx, tuple(p.name for p, _ in dflt)) \
+            + src
     return src, fname
 
 
@@ -596,7 +614,7 @@ def py_module(funcs, structs, enums, options_default):
 # _core.py supplies the helpers (_vec: the vectorised path, _fail: the
 # exceptions, struct classes _S_*).
 from ._core import (_ffi, _lib, _NULL, _new, _arr, _fail, _vec, _pick,
-                    _options, _request, _namedtuple, _SC, _SQ, _struct_class,
+                    _options, _request, _nt, _SC, _SQ, _struct_class,
                     SPEC)
 
 _T = type
@@ -616,10 +634,14 @@ _T = type
         out.append('FUNCTIONS[%r] = (%r, %r)\n' % (f.cname, f.group,
                                                   f.pyname))
     out.append('\n')
+    wrappers = []
     for idx, f in enumerate(funcs):
-        if not generic(f):
-            continue
-        src, fname = py_wrapper(f, idx)
+        if generic(f):
+            wrappers.append((f, py_wrapper(f, idx)))
+    out.append('\n# the C types of the outputs, resolved once\n')
+    for text, const in sorted(_CTYPES.items(), key=lambda x: int(x[1][2:])):
+        out.append('%s = _ffi.typeof(%r)\n' % (const, text))
+    for f, (src, fname) in wrappers:
         out.append('\n' + src)
         out.append('%s.__name__ = %s.__qualname__ = %r\n'
                    % (fname, fname, f.pyname))

@@ -38,7 +38,17 @@ def _int_dtype(cname):
     return np.dtype(('u' if unsigned else 'i') + str(size))
 
 
+_DTYPES = {}
+
+
 def _scalar_dtype(cname):
+    dt = _DTYPES.get(cname)
+    if dt is None:
+        dt = _DTYPES[cname] = _scalar_dtype_of(cname)
+    return dt
+
+
+def _scalar_dtype_of(cname):
     if cname in ('double',):
         return np.dtype(np.float64)
     if cname == 'float':
@@ -503,16 +513,31 @@ def _arr(cdata, n):
 # The vectorised path
 
 def _ptr(arr):
+    """A char * to the data of the NumPy array ARR (which must stay alive
+    while it is used)."""
+    if arr.flags.c_contiguous:
+        return _ffi.cast('char *', _ffi.from_buffer(arr))
     return _ffi.cast('char *', arr.__array_interface__['data'][0])
 
 
+_F8 = np.dtype(np.float64)
 _INT_LIMITS = {}
 
 
+def _limits(dtype):
+    lim = _INT_LIMITS.get(dtype)
+    if lim is None:
+        info = np.iinfo(dtype)
+        lim = _INT_LIMITS[dtype] = (int(info.min), int(info.max))
+    return lim
+
+
 def _as_float(name, x):
+    if type(x) is np.ndarray and x.dtype is _F8:
+        return x
     a = np.asarray(x)
     kind = a.dtype.kind
-    if kind == 'f' and a.dtype == np.float64:
+    if a.dtype == _F8:
         return a
     if kind in 'biuf':
         return a.astype(np.float64)
@@ -526,6 +551,12 @@ def _as_float(name, x):
 
 
 def _as_int(name, x, dtype):
+    if type(x) is int:
+        lo, hi = _limits(dtype)
+        if not lo <= x <= hi:
+            raise OverflowError('%s: %d out of the range of C %s'
+                                % (name, x, dtype))
+        return np.asarray(x, dtype)
     a = np.asarray(x)
     kind = a.dtype.kind
     if kind == 'O':
@@ -545,11 +576,11 @@ def _as_int(name, x, dtype):
             lo = hi = 0
     else:
         raise TypeError('%s: integers expected, not %s' % (name, a.dtype))
-    info = np.iinfo(dtype)
-    if lo < info.min or hi > info.max:
+    imin, imax = _limits(dtype)
+    if lo < imin or hi > imax:
         raise OverflowError('%s: %d..%d out of the range of C %s'
                             % (name, lo, hi, dtype))
-    return a.astype(dtype)
+    return a.astype(dtype, copy=False)
 
 
 def _as_struct(name, ctype, x):
@@ -613,11 +644,11 @@ def _flat(arr, shape, inner):
     to one element and are kept contiguous."""
     bnd = arr.ndim - inner
     bshape = arr.shape[:bnd]
-    elem = arr.itemsize * (int(np.prod(arr.shape[bnd:])) if inner else 1)
+    elem = arr.itemsize * (math.prod(arr.shape[bnd:]) if inner else 1)
     inner_ok = (not inner or arr[(0,) * bnd].flags.c_contiguous
                 if arr.size else True)
     if arr.flags.aligned and inner_ok:
-        if int(np.prod(bshape)) == 1:
+        if math.prod(bshape) == 1:
             return arr, 0
         if tuple(bshape) == tuple(shape):
             dims = [(n, s) for n, s in zip(bshape, arr.strides[:bnd])
@@ -629,6 +660,19 @@ def _flat(arr, shape, inner):
     full = tuple(shape) + tuple(arr.shape[bnd:])
     out = np.ascontiguousarray(np.broadcast_to(arr, full))
     return out, elem
+
+
+_MAX_ELEMENTS = np.iinfo(np.intp).max // 64
+
+
+def _broadcast(shapes):
+    """np.broadcast_shapes, quickly where all shapes are equal or ()."""
+    shape = ()
+    for sh in shapes:
+        if sh == shape or not sh:
+            continue
+        shape = sh if not shape else np.broadcast_shapes(shape, sh)
+    return shape
 
 
 def _fill_failed(out, bad):
@@ -717,9 +761,9 @@ def _vec(cname, inputs, wants, opt, errors, spec=None):
             prepared.append(opt)
         else:
             prepared.append(next(it_want))
-    shape = np.broadcast_shapes(*shapes) if shapes else ()
-    n = int(np.prod(shape, dtype=np.int64)) if shape else 1
-    if n < 0 or n > np.iinfo(np.intp).max // 64:
+    shape = _broadcast(shapes)
+    n = math.prod(shape)
+    if n > _MAX_ELEMENTS:
         raise MemoryError('%s: %d elements' % (cname, n))
     ptrs, strides, keep, outs = [], [], [], []
     flags = {}
@@ -784,7 +828,9 @@ def _vec(cname, inputs, wants, opt, errors, spec=None):
         if errors == 'return':
             return _nt(tuple(names) + ('status',))(*vals, st)
         return _pick(names, [True] * len(vals), vals)
-    vals = [o[5] for o in outs if o is not None]
+    vals = [o[5].reshape(shape + (4, 4))
+            if o[1] == 'out_array' and o[3] == 16 else o[5]
+            for o in outs if o is not None]
     if nfail and errors == 'raise':
         first = int(np.flatnonzero(status.reshape(-1))[0])
         index = np.unravel_index(first, shape)

@@ -233,7 +233,7 @@ def _fate(cname, sys, init_kind, init, max_collisions, reversal_cap, errors):
         if not cap:
             return _nt(('fate', 'status'))(fate, rc) \
                 if errors == 'return' else fate
-        ra = np.array(rev[0:min(cap, f.reversals)], dtype=_UL) \
+        ra = np.array(_ffi.unpack(rev, min(cap, f.reversals)), dtype=_UL) \
             if not rc else None
         if errors == 'return':
             return _nt(('fate', 'reversal_at', 'status'))(fate, ra, rc)

@@ -12,7 +12,7 @@ that is an array of N numbers in C (q[4], peg[2]) is an array of shape
 structured array of the class's dtype (or a dict of its fields, arrays
 broadcast, missing ones 0), or one object, used for every element.  Each
 output gains the broadcast shape: a number becomes an array of that shape,
-an array of N numbers one of shape (..., N) (J[16]: (..., 16)), a struct a
+an array of N numbers one of shape (..., N) (J[16]: (..., 4, 4)), a struct a
 structured array of its dtype (chaplygin.as_columns splits one into a dict
 of plain arrays).  The results are exactly those of the scalar calls, bit
 for bit.
