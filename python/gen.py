@@ -43,8 +43,9 @@ How parameters become Python (from the C declaration alone):
   const chaplygin_options *opt                   keyword-only method=, tol=,
                                                  precision=
 A function with a size_t parameter (a buffer length), a const pointer to a
-scalar (an array of caller-chosen length) or listed in MANUAL has no generated
-wrapper: python/chaplygin/*.py defines it by hand, and the test
+scalar (an array of caller-chosen length), a parameter of any other type
+(char *, a function pointer, ...) or listed in MANUAL has no generated
+wrapper (and no C loop if a parameter is of another type): python/chaplygin/*.py defines it by hand, and the test
 python/tests/test_reachable.py fails until it does.  What the signature cannot
 say (an output that may be NULL, one written only when a flag is set, a
 default) is in OPTIONAL, CONDITIONAL, COUNTED and DEFAULTS below.
@@ -255,6 +256,36 @@ def type_name(node):
     raise ValueError('unsupported type %r' % t)
 
 
+def classify(p, structs, enums):
+    """The Param of the parameter declaration P; kind 'unknown' for what
+    the generator cannot wrap (the function is then wrapped by hand, and
+    test_reachable.py fails until it is)."""
+    from pycparser import c_ast
+    name = getattr(p, 'name', None) or 'arg'
+    try:
+        t = p.type
+        base, const = type_name(t)
+    except (AttributeError, ValueError):
+        return Param(name, 'unknown', 'void', None, False)
+    kind, dims = 'unknown', None
+    if isinstance(t, c_ast.TypeDecl):
+        if base in SCALARS or base.startswith('enum ') or base in enums:
+            kind = 'in'
+    elif isinstance(t, c_ast.ArrayDecl):
+        if isinstance(t.type, c_ast.TypeDecl) and base in SCALARS and \
+                isinstance(t.dim, c_ast.Constant):
+            dims = int(t.dim.value, 0)
+            kind = 'in_array' if const else 'out_array'
+    elif isinstance(t, c_ast.PtrDecl) and isinstance(t.type, c_ast.TypeDecl):
+        if base == 'chaplygin_options':
+            kind = 'opt' if const else 'unknown'
+        elif base in structs:
+            kind = 'in_struct' if const else 'out_struct'
+        elif base in SCALARS:
+            kind = 'in_ptr' if const else 'out'
+    return Param(name, kind, base, dims, const)
+
+
 def parse(header_text):
     """The functions, struct typedefs and enum types of the header."""
     from pycparser import c_ast, c_parser, c_generator
@@ -295,39 +326,22 @@ def parse(header_text):
             continue
         fd = ext.type
         ret_t = fd.type
+        try:
+            base, const = type_name(ret_t)
+        except ValueError:
+            base, const = 'unknown', False
         if isinstance(ret_t, c_ast.PtrDecl):
-            ret = 'string'
+            ret = 'string' if base == 'char' and const and \
+                isinstance(ret_t.type, c_ast.TypeDecl) else 'unknown'
         else:
-            ret = type_name(ret_t)[0]
+            ret = base
         params = []
         for p in fd.args.params if fd.args else []:
-            if isinstance(p, c_ast.Typename):   # (void)
+            if isinstance(p, c_ast.Typename) and \
+                    isinstance(p.type, c_ast.TypeDecl) and \
+                    type_name(p.type)[0] == 'void':     # (void)
                 continue
-            t = p.type
-            base, const = type_name(t)
-            if isinstance(t, c_ast.TypeDecl):
-                kind, dims = 'in', None
-            elif isinstance(t, c_ast.ArrayDecl):
-                dims = int(t.dim.value)
-                kind = 'in_array' if const else 'out_array'
-            elif isinstance(t, c_ast.PtrDecl):
-                dims = None
-                if base == 'chaplygin_options':
-                    kind = 'opt'
-                elif base in structs:
-                    kind = 'in_struct' if const else 'out_struct'
-                elif base in SCALARS:
-                    kind = 'in_ptr' if const else 'out'
-                else:
-                    raise ValueError('%s: parameter %s of unknown type %s'
-                                     % (ext.name, p.name, base))
-            else:
-                raise ValueError('%s: parameter %s' % (ext.name, p.name))
-            if kind in ('in',) and base not in SCALARS and \
-                    not base.startswith('enum') and base not in enums:
-                raise ValueError('%s: parameter %s of type %s'
-                                 % (ext.name, p.name, base))
-            params.append(Param(p.name, kind, base, dims, const))
+            params.append(classify(p, structs, enums))
         proto = gen.visit(ext).replace('\n', ' ')
         funcs.append(Function(ext.name, ret, params, docs.get(ext.name),
                               proto))
@@ -337,9 +351,15 @@ def parse(header_text):
     return funcs, structs, enums, options_default
 
 
+def looped(f):
+    """Whether F gets a C loop (chpv_NAME): it returns int and every
+    parameter is classified."""
+    return f.ret == 'int' and all(p.kind != 'unknown' for p in f.params)
+
+
 def generic(f):
     """Whether F gets a generated Python wrapper."""
-    if f.cname in MANUAL:
+    if f.cname in MANUAL or any(p.kind == 'unknown' for p in f.params):
         return False
     if f.ret == 'string':
         return all(p.kind == 'in' for p in f.params)
@@ -660,7 +680,7 @@ def main(argv):
     with open(extra) as fh:
         etext = fh.read()
     funcs, structs, enums, options_default = parse(htext)
-    loops = [f for f in funcs if f.ret == 'int']
+    loops = [f for f in funcs if looped(f)]
 
     def write(path, text):
         tmp = path + '.tmp'
