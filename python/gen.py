@@ -192,20 +192,22 @@ def scan(text):
 
 
 def clean_comment(body):
-    lines = body.split('\n')
-    out = []
-    for line in lines:
-        line = line.rstrip()
-        line = re.sub(r'^\s*\* ?', '', line) if re.match(r'^\s*\*', line) \
-            else line.strip() if not out else line
-        out.append(line)
+    """The text of a C comment: the first line, and the others without the
+    leading ' * ' of a starred comment or their common indentation."""
+    lines = [l.rstrip() for l in body.split('\n')]
+    first, rest = lines[0].strip(), lines[1:]
+    starred = [l for l in rest if l.strip()] and all(
+        re.match(r'^\s*\*( |$)', l) for l in rest if l.strip())
+    if starred:
+        rest = [re.sub(r'^\s*\* ?', '', l) for l in rest]
+    ind = min((len(l) - len(l.lstrip()) for l in rest if l.strip()),
+              default=0)
+    out = [first] + [l[ind:] for l in rest]
     while out and not out[0].strip():
         out.pop(0)
     while out and not out[-1].strip():
         out.pop()
-    # dedent
-    ind = min((len(l) - len(l.lstrip()) for l in out if l.strip()), default=0)
-    return '\n'.join(l[ind:] for l in out)
+    return '\n'.join(out)
 
 
 def cdef_text(text):
@@ -448,6 +450,10 @@ def py_doc(f, sig, outs, optional):
             what = {'out': 'scalar', 'out_array': 'ndarray of %d' % (p.dims or 0),
                     'out_struct': p.ctype}.get(p.kind, p.kind)
             s = '%s (%s)' % (p.name, what)
+            if p.cname in CONDITIONAL.get(f.cname, {}):
+                s += ' (None unless %s)' % CONDITIONAL[f.cname][p.cname]
+            if p.cname in COUNTED.get(f.cname, {}):
+                s += ' (its first %s)' % COUNTED[f.cname][p.cname]
             if p.cname in optional:
                 s += ' if return_%s (default %s)' % (p.name,
                                                      optional[p.cname])
