@@ -7,7 +7,6 @@
 
 import collections
 import math
-import numbers
 import operator
 
 import numpy as np

@@ -21,6 +21,7 @@ from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_struct, _flat,
                     _check_errors, _scalar_dtype)
 from ._groups import export
 
+__all__ = []
 export(globals(), 'discrete')
 
 Discrete = _struct_class('chaplygin_discrete')

@@ -8,6 +8,7 @@ from ._core import _ffi, _lib, _NULL, _ptr
 from ._groups import export
 from . import discrete as _discrete
 
+__all__ = []
 export(globals(), 'massless')
 __all__ += ['orbit']
 

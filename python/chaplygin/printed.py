@@ -11,4 +11,5 @@ asked for (return_dtau=True), and then the library refuses them
 """
 from ._groups import export
 
+__all__ = []
 export(globals(), 'printed')

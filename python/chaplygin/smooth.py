@@ -7,6 +7,7 @@ help(chaplygin.smooth.closed_form) shows the header's comment.
 from ._groups import export
 from ._core import _struct_class
 
+__all__ = []
 export(globals(), 'smooth')
 
 SmoothDim = _struct_class('chaplygin_smooth_dim')

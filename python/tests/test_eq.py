@@ -9,7 +9,6 @@ paper's equation and the header, not from the program."""
 import csv
 import io
 import math
-import os
 import subprocess
 from fractions import Fraction
 

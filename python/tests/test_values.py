@@ -12,7 +12,6 @@ too)."""
 import math
 
 import numpy as np
-import pytest
 
 import chaplygin as c
 from chaplygin import discrete as d, smooth as s

@@ -4,7 +4,6 @@ invalid, so that statuses are exercised too), in one call with
 errors='return', then element by element; every output and status must be
 the same, bit for bit.  Then the same through strided, broadcast,
 multi-dimensional and read-only arrays."""
-import math
 
 import numpy as np
 import pytest
