@@ -1,0 +1,90 @@
+"""The sweeps of Figure 2 (chaplygin_sweep_*): x = L0/Delta,
+y = (1/Delta)^2 >= 0.
+
+  sigma4(x, y, dir)   Fig. 2(a): sigma4 (3.10) over x for each y
+  stability(x, y)     Fig. 2(b): the stability regions on the grid x by y
+
+Both call the library's own array functions (one call per y for sigma4).
+"""
+import numpy as np
+
+from ._core import (_ffi, _lib, _NULL, _fail, _as_float, _ptr, _nt,
+                    _check_errors)
+
+__all__ = ['sigma4', 'stability']
+
+
+def sigma4(x, y, dir, *, errors='raise'):
+    """sweep.sigma4(x, y, dir, *, errors='raise')
+
+    Fig. 2(a): sigma4[i] of (3.10) for the direction dir at
+    y = (1/Delta)^2 >= 0 and each x[i] = L0/Delta.  x: an array of any
+    shape; y: a number (result of x's shape) or a 1-D array (result of
+    shape (len(y),) + x.shape, row i at y[i]).  Points that fail (x
+    non-finite, y = 0 with x = -1 (dir +1) or 0 (dir -1)) are NaN with
+    their status: errors='raise' raises the first failure's exception
+    (statuses and partial attached); errors='return' returns
+    (sigma4, status).
+
+    C: int chaplygin_sweep_sigma4(int dir, double y, size_t n,
+    const double *x, double *sigma4, int *status)
+    """
+    _check_errors(errors)
+    xa = np.ascontiguousarray(_as_float('x', x))
+    ya = _as_float('y', y)
+    if ya.ndim > 1:
+        raise ValueError('y: a number or a 1-D array expected')
+    ys = ya.reshape(-1)
+    shape = (xa.shape if ya.ndim == 0 else (ys.size,) + xa.shape)
+    out = np.empty((ys.size,) + xa.shape, np.float64)
+    status = np.zeros((ys.size,) + xa.shape, np.intc)
+    n = xa.size
+    first = 0
+    for i, yv in enumerate(ys):
+        o, s = out[i], status[i]
+        rc = _lib.chaplygin_sweep_sigma4(
+            dir, float(yv), n, _ffi.cast('double *', _ptr(xa)) if n else _NULL,
+            _ffi.cast('double *', _ptr(o)) if n else _NULL,
+            _ffi.cast('int *', _ptr(s)) if n else _NULL)
+        if rc and not n or rc and not s.any():
+            s[...] = rc            # a failure of the call as a whole
+        if rc and not first:
+            first = rc
+    bad = status != 0
+    out[bad] = np.nan
+    out = out.reshape(shape)
+    status = status.reshape(shape)
+    if first and errors == 'raise':
+        flat = np.flatnonzero(status.reshape(-1))
+        index = np.unravel_index(int(flat[0]), shape) if flat.size else None
+        _fail(first, 'chaplygin_sweep_sigma4', statuses=status,
+              partial=out, index=index)
+    if errors == 'return':
+        return _nt(('sigma4', 'status'))(out if shape else out.item(),
+                                         status if shape else status.item())
+    return out if shape else out.item()
+
+
+def stability(x, y):
+    """sweep.stability(x, y)
+
+    Fig. 2(b): region[i, j] = (1 if V* > 0 is stable by (3.11)) + (2 if
+    V* < 0 is stable by (3.12)) at (x[j], y[i]), x and y 1-D arrays (y >= 0),
+    as a uint8 array of shape (len(y), len(x)).  A non-finite x or y, or
+    y < 0, raises DomainError (nothing is computed).
+
+    C: int chaplygin_sweep_stability(size_t nx, const double *x, size_t ny,
+    const double *y, unsigned char *region)
+    """
+    xa = np.ascontiguousarray(_as_float('x', x)).reshape(-1)
+    ya = np.ascontiguousarray(_as_float('y', y)).reshape(-1)
+    region = np.zeros((ya.size, xa.size), np.uint8)
+    if region.size == 0:
+        return region
+    rc = _lib.chaplygin_sweep_stability(
+        xa.size, _ffi.cast('double *', _ptr(xa)), ya.size,
+        _ffi.cast('double *', _ptr(ya)),
+        _ffi.cast('unsigned char *', _ptr(region)))
+    if rc:
+        _fail(rc, 'chaplygin_sweep_stability')
+    return region
