@@ -15,7 +15,7 @@
 #include "eft.h"
 #include "far.h"
 #include "motion.h"
-#include "run.h"
+#include "series.h"
 
 /* Common validation: the run of dir, the motion (E, H) and its validity
    as a post-collision state; *g0 = g(l_s). */

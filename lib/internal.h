@@ -22,6 +22,6 @@
 #include "ode.h"        /* (3.1) integrated; motion */
 #include "leg.h"        /* heading and time of a leg; motion, ellint, quad */
 #include "far.h"        /* the far-regime scaling; eft, collision */
-#include "run.h"        /* a run without reversal; eft, motion */
+#include "series.h"     /* a run without reversal; eft, motion */
 
 #endif /* CHAPLYGIN_INTERNAL_H */

@@ -31,8 +31,8 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/energy.c \
 	lib/far.h \
 	lib/far.c \
-	lib/run.h \
-	lib/run.c \
+	lib/series.h \
+	lib/series.c \
 	lib/ellint.h \
 	lib/quad.h \
 	lib/ode.h \

@@ -42,7 +42,7 @@
 #include "eft.h"
 #include "far.h"
 #include "motion.h"
-#include "run.h"
+#include "series.h"
 
 /* The largest count the printed (B.6) returns: 2^62, as the corrected
    chaplygin_discrete_collisions_before_reversal (or ULONG_MAX if smaller). */

@@ -22,7 +22,7 @@
 #include "eft.h"
 #include "far.h"
 #include "motion.h"
-#include "run.h"
+#include "series.h"
 
 /* The largest count (B.6) returns: 2^62, or ULONG_MAX if smaller; beyond
    2^53 consecutive counts are not resolved (documented). */

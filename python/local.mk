@@ -23,7 +23,7 @@ PY_TESTS = python/tests/conftest.py \
 	python/tests/test_docs.py
 PY_GENERATED = python/gen/module.c python/gen/vec.c python/gen/vec.h \
 	python/chaplygin/_generated.py
-EXTRA_DIST += python/gen.py python/README doc/python.texi $(PY_PACKAGE) \
+EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \
 	$(PY_TESTS) \
 	python/tests/run-pytest.in python/tests/cvalues.c \
 	python/src/chp_python.h python/src/errstream.h python/src/orbit.c \

@@ -16,7 +16,7 @@ top_srcdir=${top_srcdir:-.}
 archive=$top_builddir/lib/.libs/libchaplygin-core.a
 
 # The kernel, in layer order: each uses only files before it.
-kernel="eft status carlson ellint quad collision motion ode leg far run"
+kernel="eft status carlson ellint quad collision motion ode leg far series"
 # The paper's sections (they may use the kernel and each other, acyclically).
 sections="units smooth discrete flow map stability reversal energy fate massless sweep printed"
 

@@ -1,8 +1,8 @@
-/* run.h -- kernel: a run of collisions without reversal in one direction
-   (run.c): the (B.3) coefficients and what the series (B.6), (B.9), (B.10)
+/* series.h -- kernel: a run of collisions without reversal in one direction
+   (series.c): the (B.3) coefficients and what the series (B.6), (B.9), (B.10)
    need of them.  Uses eft.h and motion.h. */
-#ifndef CHAPLYGIN_RUN_H
-#define CHAPLYGIN_RUN_H
+#ifndef CHAPLYGIN_SERIES_H
+#define CHAPLYGIN_SERIES_H
 
 #include "chaplygin.h"
 #include "motion.h"
@@ -46,4 +46,4 @@ int chp_run_momentum (const chp_run *run, double H, double k, double *Hk);
 double chp_run_final_energy (const chp_run *run, double E, double g0,
                              double H);
 
-#endif /* CHAPLYGIN_RUN_H */
+#endif /* CHAPLYGIN_SERIES_H */

@@ -1,4 +1,5 @@
-/* run.c -- kernel: a run of collisions without reversal (run.h), shared by
+/* series.c -- kernel: a run of collisions without reversal and its
+   series (series.h), shared by
    the reversal counts (reversal.c) and the energy series (energy.c).
    Uses eft.h and motion.c.
 
@@ -12,7 +13,7 @@
 
 #include "eft.h"
 #include "motion.h"
-#include "run.h"
+#include "series.h"
 
 /* chp_run_init: the run of collisions without reversal in direction dir.
    Method: C2 is the system's (3.7) coefficient of the far end (the one
@@ -110,7 +111,7 @@ c2_power (const chp_run *run, double k, double *a, int *j, double *L)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_run_state: the (B.9) iterate (run.h).
+/* chp_run_state: the (B.9) iterate (series.h).
    Method: S_k = (1 - q^k)/(1 - q) as expm1(k log q)/(q - 1), with log q
    = 2 log1p(|C2| - 1) and q - 1 = (C2 - 1)(C2 + 1) from the accurate
    factors of chp_run_init: no cancellation when q is near 1 and no
@@ -155,7 +156,7 @@ chp_run_state (const chp_run *run, double E, double H, double k, double *Ek,
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_run_momentum: H_k alone (run.h). */
+/* chp_run_momentum: H_k alone (series.h). */
 int
 chp_run_momentum (const chp_run *run, double H, double k, double *Hk)
 {
@@ -175,7 +176,7 @@ chp_run_momentum (const chp_run *run, double H, double k, double *Hk)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* chp_run_final_energy: (B.10) in the form of (B.12) (run.h). */
+/* chp_run_final_energy: (B.10) in the form of (B.12) (series.h). */
 double
 chp_run_final_energy (const chp_run *run, double E, double g0, double H)
 {
