@@ -108,36 +108,26 @@
 #include "carlson.h"
 
 #if defined __GNUC__
-#define CHP_ALWAYS_INLINE static inline __attribute__ ((always_inline))
+#define CARLSON_INLINE static inline __attribute__ ((always_inline))
 #else
-#define CHP_ALWAYS_INLINE static inline
+#define CARLSON_INLINE static inline
 #endif
 
-/* The square root, correctly rounded (IEEE 754), of an x >= 0.  With the
-   default -fmath-errno, sqrt () compiles to the instruction plus a test
-   for a negative argument and a call for errno; the kernel's arguments are
-   never negative, and on SSE2 the instruction alone gives the same bits. */
-#if defined __SSE2__
-#include <emmintrin.h>
-CHP_ALWAYS_INLINE double
-root (double x)
-{
-  const __m128d v = _mm_set_sd (x);
-  return _mm_cvtsd_f64 (_mm_sqrt_sd (v, v));
-}
-#else
+/* The square root, correctly rounded (IEEE 754).  The library is built
+   with -fno-math-errno where the compiler has it (configure.ac), so sqrt
+   is the instruction alone, without the test and call that set errno for
+   a negative argument (the kernel's arguments are never negative). */
 #define root sqrt
-#endif
 
 /* max and min of numbers that are not NaN (fmax and fmin are library calls
    on x86-64 unless NaN semantics are waived) */
-CHP_ALWAYS_INLINE double
+CARLSON_INLINE double
 max2 (double a, double b)
 {
   return a > b ? a : b;
 }
 
-CHP_ALWAYS_INLINE double
+CARLSON_INLINE double
 min2 (double a, double b)
 {
   return a < b ? a : b;
@@ -150,7 +140,7 @@ static const double tau[2] = { 0.0105, 0.042 };
    -1/10, 1/14, 1/24, -3/44, -5/208, 3/104, 1/16 (DLMF 19.36.1); each
    rounds to double with relative error <= 2^-53 on terms below 0.01
    (|E2| <= 3 t^2, t <= 0.05), which is below 1e-18 in the result. */
-CHP_ALWAYS_INLINE double
+CARLSON_INLINE double
 series_rf (double E2, double E3)
 {
   return E2 * (-1.0 / 10 + E2 * (1.0 / 24 - 5.0 / 208 * E2 + 1.0 / 16 * E3)
@@ -159,7 +149,7 @@ series_rf (double E2, double E3)
 }
 
 /* The R_D series (step 2) minus its leading 1 (DLMF 19.36.2). */
-CHP_ALWAYS_INLINE double
+CARLSON_INLINE double
 series_rd (double E2, double E3, double E4, double E5)
 {
   return E2 * (-3.0 / 14 + E2 * (9.0 / 88 - 1.0 / 16 * E2 + 45.0 / 272 * E3)
@@ -207,7 +197,7 @@ chp_carlson_series_rd (double E2, double E3, double E4, double E5)
    sx, sy, sz their square roots (passed in so that z = 1 needs none).
    Writes R_F to *rf and R_D to *rd where non-NULL.  Always inlined, so
    that the z = 1 entry is this code with a constant. */
-CHP_ALWAYS_INLINE void
+CARLSON_INLINE void
 duplicate (double x, double y, double z, double sx, double sy, double sz,
            int single, double *rf, double *rd)
 {
