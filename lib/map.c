@@ -369,6 +369,8 @@ typedef struct
   chp_segment seg;
   chp_motion m;
   double g0, g1;        /* g = (1 + l^2) V^2/(2E) at the two ends */
+  const double *g0_phase;       /* g0 from V+ itself (poincare), or NULL */
+  int have_g1;                  /* g1 formed (step_g1: only where needed) */
   int fast;             /* E1, H1 (and reversal) from eh_fast */
   int reversal;
   int iminus;           /* the end the peg leaves: 0 front, 1 rear */
@@ -394,8 +396,32 @@ step_begin (step_work *w, const chaplygin_discrete *sys,
   w->request = request & CHAPLYGIN_WANT_PEG ? request | CHAPLYGIN_WANT_THETA
     : request;
   w->fast = 0;
+  w->have_g1 = 0;
   w->E1 = w->H1 = w->Vminus = w->dtheta = w->dtau = 0.0;
   return CHAPLYGIN_SUCCESS;
+}
+
+/* g at the far end, formed once when first needed: from (E, H) by
+   error-free arithmetic when they are the input, exact for them; from a
+   phase state g0 + (l1 - l0)(l1 + l0), l1 - l0 = dir Delta exactly, unless
+   that cancels worse than E and H (rounded from the phase state) are
+   conditioned there. */
+static const double *
+step_g1 (step_work *w)
+{
+  if (!w->have_g1)
+    {
+      const chaplygin_discrete *sys = w->sys;
+      const chp_segment *seg = &w->seg;
+      const double delta = w->in->dir * sys->Delta
+        * (2.0 * sys->L0 + sys->Delta);
+      w->g1 = (w->g0_phase && w->g0 + fabs (delta)
+               <= chp_one_plus_sq (seg->l1) + fabs (1.0 - w->m.one_minus_h2))
+        ? w->g0 + delta
+        : chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
+      w->have_g1 = 1;
+    }
+  return &w->g1;
 }
 
 /* Phase 3: the motion and its exact classification.  g0_phase, if not
@@ -406,7 +432,6 @@ step_begin (step_work *w, const chaplygin_discrete *sys,
 static int
 step_classify (step_work *w, const double *g0_phase)
 {
-  const chaplygin_discrete *sys = w->sys;
   const chp_segment *seg = &w->seg;
   CHP_TRY (chp_motion_init_eh (w->in->E, w->in->H, &w->m));
   if ((w->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU))
@@ -418,16 +443,13 @@ step_classify (step_work *w, const double *g0_phase)
     : chp_motion_g_exact (&w->m, seg->l0, seg->l0_err);
   if (!(w->g0 > 0.0))
     return CHAPLYGIN_ESTATE;
-  /* At the far end: from (E, H) by error-free arithmetic when they are the
-     input, exact for them; from a phase state g0 + (l1 - l0)(l1 + l0),
-     l1 - l0 = dir Delta exactly, unless that cancels worse than E and H
-     (rounded from the phase state) are conditioned there. */
-  const double delta = w->in->dir * sys->Delta * (2.0 * sys->L0 + sys->Delta);
-  const double g1_eh = chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
-  w->g1 = (g0_phase && w->g0 + fabs (delta)
-           <= chp_one_plus_sq (seg->l1) + fabs (1.0 - w->m.one_minus_h2))
-    ? w->g0 + delta : g1_eh;
-  const int outcome = chp_segment_classify (seg, &w->m, &w->g1);
+  w->g0_phase = g0_phase;
+  /* g at the far end matters to the classification only for a motion
+     towards l = 0 with turning points that does not cross it */
+  const double *g_far = NULL;
+  if (!seg->crosses && seg->toward && w->m.one_minus_h2 < 0.0)
+    g_far = step_g1 (w);
+  const int outcome = chp_segment_classify (seg, &w->m, g_far);
   if (outcome == CHP_SEGMENT_SPIN)
     return CHAPLYGIN_ESPIN;
   w->reversal = outcome == CHP_SEGMENT_REVERSE;
@@ -444,7 +466,8 @@ step_by_integrals (step_work *w, int want_event)
   const chaplygin_discrete *sys = w->sys;
   const chaplygin_discrete_state *in = w->in;
   const chp_segment *seg = &w->seg;
-  const double gm = w->reversal ? w->g0 : w->g1;
+  const double gm = w->reversal ? w->g0
+    : (!w->fast || want_event) ? *step_g1 (w) : 0.0;
   const double lm = w->reversal ? seg->l0 : seg->l1;
   if (!w->fast)
     {
@@ -473,8 +496,12 @@ step_by_integrals (step_work *w, int want_event)
   double *pth = want_theta ? &w->dtheta : NULL;
   double *pta = want_tau ? &w->dtau : NULL;
   if (!w->reversal)
-    return chp_leg (&w->m, seg->l0, w->g0, seg->l1, w->g1, sys->Delta, &w->o,
-                    pth, pta);
+    {
+      /* g at the ends matters to the legs only with turning points */
+      const double g1 = w->m.one_minus_h2 < 0.0 ? *step_g1 (w) : 0.0;
+      return chp_leg (&w->m, seg->l0, w->g0, seg->l1, g1, sys->Delta, &w->o,
+                      pth, pta);
+    }
   /* Out to the turning point and back: twice one leg.  |l0| - c =
      g0/(|l0| + c) without cancellation. */
   const double c = w->m.sqrt_q, lc = copysign (c, seg->l0);
