@@ -120,6 +120,14 @@ int chp_quartic_interval (double sp, double sq, double pmq, double y,
 int chp_integrate (double (*f) (double, void *), void *params, double a,
                    double b, double epsrel, double *result);
 
+/* Int_a^b f(t) dt for a 2-vector integrand f(t, params, y) (returns a
+   status; y[0], y[1] the components), the same strategy and rule with
+   each node evaluated once, to an ABSOLUTE tolerance: the summed error
+   estimates of both components at most epsabs.  CHAPLYGIN_ENOCONV,
+   CHAPLYGIN_ERANGE as chp_integrate; the integrand's first failure. */
+int chp_integrate2 (int (*f) (double, void *, double[2]), void *params,
+                    double a, double b, double epsabs, double result[2]);
+
 /* ---- ode.c: event-located integration of (3.1) ----------------------- */
 
 /* Integrate (3.1) from q0 (tau = 0) until D leaves the open interval
