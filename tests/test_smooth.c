@@ -987,6 +987,16 @@ START_TEST (smooth_path)
       ck_assert (fabs (p.C[1] - 0.5 * (cos (0.3) - cos (th))) < 4 * DBL_EPSILON);
       ck_assert (G[0] == p.C[0] && G[1] == p.C[1]);
     }
+  /* many short steps add no rounding (the compensated sum): 10000 steps
+     of 1e-3 along a line from C0 = (1e6, -1e6); a plain sum would drift
+     by thousands of ulps of 1e6 (each increment rounded the same way) */
+  const double far0[2] = { 1e6, -1e6 };
+  ck_assert_ok (chaplygin_smooth_motion_init (0.5, line, &m));
+  ck_assert_ok (chaplygin_smooth_path_init (0.0, far0, &p));
+  for (int k = 1; k <= 10000; k++)
+    ck_assert_ok (chaplygin_smooth_path_advance (&m, &p, k * 1e-3, NULL));
+  ck_assert (fabs (p.C[0] - (1e6 - 20.0 * cos (0.3))) <= 2 * DBL_EPSILON * 1e6);
+  ck_assert (fabs (p.C[1] - (-1e6 - 20.0 * sin (0.3))) <= 2 * DBL_EPSILON * 1e6);
   /* spinning in place and rest: C stays */
   const double spin[4] = { 0, 0, 0.3, 2.0 };
   const double C0[2] = { 1.0, -1.0 };
