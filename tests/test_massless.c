@@ -1597,7 +1597,9 @@ START_TEST (test_flow_edges)
   ck_assert (Om1 == Om);
   ck_assert_rel (dth1, ev.dtheta - dth, 4 * DBL_EPSILON);
   ck_assert_rel (dta1, ev.dtau - dta, 4 * DBL_EPSILON);
-  /* across the peg from the start (l < 0 < l0): never reached */
+  /* on the peg (l = 0, H != 0) and across it: never reached */
+  ck_assert_status (chaplygin_massless_flow (-0.5, &st, 0.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
   ck_assert_status (chaplygin_massless_flow (-0.5, &st, 0.75, 0, &V, &Om, &dth, &dta),
                     CHAPLYGIN_ESTATE);
 
