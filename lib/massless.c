@@ -645,9 +645,10 @@ chaplygin_massless_mass_centre (double L0, const chaplygin_discrete_state *st,
    Accuracy: within 2 ulps of H/(L0 + D)^2 (binary128 on 2000 random
    points and 4 extreme ones, test massless_omega: 1.0), 2.5 where the
    result is subnormal.
-   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite),
-   CHAPLYGIN_ESTATE (l = 0 with H != 0: the peg on the point mass carries
-   no momentum), CHAPLYGIN_ERANGE (the rate overflows). */
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, or
+   L0 + D overflows), CHAPLYGIN_ESTATE (l = 0 with H != 0: the peg on the
+   point mass carries no momentum), CHAPLYGIN_ERANGE (the rate
+   overflows). */
 int
 chaplygin_massless_omega (double L0, double D, double H, double *Omega)
 {
@@ -662,6 +663,8 @@ chaplygin_massless_omega (double L0, double D, double H, double *Omega)
     }
   double l, le;
   chp_two_sum (L0, D, &l, &le);         /* L0 + D = l + le exactly */
+  if (!isfinite (l))
+    return CHAPLYGIN_EDOM;
   if (l == 0.0)
     return CHAPLYGIN_ESTATE;
   const double l2 = l * l;

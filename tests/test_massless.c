@@ -1426,6 +1426,7 @@ START_TEST (test_omega)
   ck_assert_status (chaplygin_massless_omega (NAN, 0.0, 1.0, &Om), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_massless_omega (0.5, INFINITY, 1.0, &Om), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_massless_omega (0.5, 0.0, NAN, &Om), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_omega (DBL_MAX, DBL_MAX, 1.0, &Om), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_massless_omega (0.5, 0.0, 1.0, NULL), CHAPLYGIN_EINVAL);
   ck_assert (Om == 7);
 }

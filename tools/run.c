@@ -20,7 +20,6 @@
 #include <config.h>
 
 #include <errno.h>
-#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
