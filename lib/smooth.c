@@ -856,22 +856,33 @@ path_integrand (double tau, void *params, double y[2])
    Int |dC_x| + |dC_y|, at most 50 sqrt(2) eps times the arc length). */
 #define PATH_TOL (128.0 * DBL_EPSILON)
 
-/* The time after t at which the heading has turned one radian further,
-   or tau if it never does before tau: z = z0 + sgn(a) |a| c t, psi =
-   gd(z), psi' = psi + sgn(a) |L|/B, t' = sgn(a) (gd^-1(psi') - z0)/(|a| c)
-   (only a partition: rounding does no harm); at least t + B/c, in which
-   the heading turns at most one radian (|Omega| <= c/B), so that the
-   partition advances also where psi has no resolution (tiny L). */
+/* The end of the quadrature piece that starts at t (at most tau).  The
+   integrand V e(theta) varies on two scales: the heading, and z = z0 +
+   sgn(a) |a| c t (V = c tanh z).  A piece ends where the heading has
+   turned one more radian (psi = gd(z) moved by |L|/B: t' = sgn(a)
+   (gd^-1(psi') - z0)/(|a| c)) or z has moved by 1, whichever is first, so
+   that no feature of the integrand falls between the nodes of a long
+   piece; at least t + B/c, in which the heading turns by at most a radian
+   (|Omega| <= c/B), so that the partition advances where psi has no
+   resolution (tiny L).  Once z moves away from 0 beyond
+   ZCUT + log(B/|L|), V and theta are constant to within e^-40 (theta has
+   (B/|L|) 2 e^-|z| left to turn): the rest is one piece.  Only a
+   partition: rounding does no harm. */
+#define ZCUT 40.0
+
 static double
 path_next (const chaplygin_smooth_motion *m, double t, double tau)
 {
   const double sa = chp_sign (m->a);
   const double z0 = m->q0[CHAPLYGIN_V] < 0.0 ? -m->Z : m->Z;
-  const double psi = atan (sinh (z0 + sa * m->ac * t));
-  const double psi1 = psi + sa * fabs (m->L) / m->B;
-  double t1 = t + m->B / m->c;
+  const double z = z0 + sa * m->ac * t;
+  if (sa * z > ZCUT + fmax (0.0, log (m->B / fabs (m->L))))
+    return tau;
+  double t1 = t + 1.0 / m->ac;                  /* z moves by 1 */
+  const double psi1 = atan (sinh (z)) + sa * fabs (m->L) / m->B;
   if (fabs (psi1) < M_PI_2)
-    t1 = fmax (t1, sa * (asinh (tan (psi1)) - z0) / m->ac);
+    t1 = fmin (t1, fmax (t + m->B / m->c,
+                         sa * (asinh (tan (psi1)) - z0) / m->ac));
   return t1 > t && t1 < tau ? t1 : tau;
 }
 
@@ -918,14 +929,16 @@ chaplygin_smooth_path_init (double tau, const double C[2],
    along theta0, or by V0 dtau sinc(Omega0 dtau/2) along the mean heading);
    otherwise adaptive 21-point Gauss-Kronrod quadrature in time
    (chp_integrate2), over pieces in which the heading turns by at most one
-   radian, to an absolute error estimate of 128 eps times the arc length
-   of each piece.  Why quadrature: in closed form the integral is
+   radian and z = atanh(V/sqrt(2E)) moves by at most 1 (path_next: no
+   transient between the nodes of a long piece), to an absolute error
+   estimate of 128 eps times the arc length of each piece.  Why quadrature: in closed form the integral is
    Int tan(psi) exp(i k psi) dpsi (k = B/L), a hypergeometric function of
    unit-modulus argument that neither libm nor GSL provides; why time:
    there the integrand is analytic (in a strip of half-width pi/(2|a|c)),
    also through the reversal, where in the arc length theta has a
    square-root singularity.  Cost: proportional to the turn of the heading
-   over the interval, plus a logarithmic number of bisections.
+   and to the change of z (at most ~90 + 2 Z pieces for the approach,
+   reversal and decay) over the interval.
    At an arc length S: advance to the time chaplygin_smooth_closed_form
    gives for S.
    Accuracy: against C and G from the 32-digit Taylor-series integration of

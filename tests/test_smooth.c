@@ -1030,6 +1030,24 @@ START_TEST (smooth_path)
   ck_assert_ok (chaplygin_smooth_path_advance (&m, &p, 100.0, NULL));
   ode_at_time (1e-3, 1.0, 1.0, 0.0, 100.0, y);
   ck_assert (fabs (p.C[0] - y[5]) < 1e-9 && fabs (p.C[1] - y[6]) < 1e-9);
+  /* a transient at the start of a long interval (less than a radian to
+     turn, z from 0.66 to 3e4): one step to tau = 2e4 and 1e6.  Reference:
+     the 30-digit Taylor-series integration to tau = 60, where V = sqrt(2E)
+     and theta is constant to 1e-33, then the straight line (mpmath) */
+  const double qt[4] = { 0, 2.0, 0, -1.0 };
+  const double tt[2] = { 2e4, 1e6 };
+  const double xt[2][2] = { { 33493.701127392218328, -39422.206544193598852 },
+                            { 1674643.0383031647369, -1971184.3174386801711 } };
+  ck_assert_ok (chaplygin_smooth_motion_init (1.3, qt, &m));
+  for (int k = 0; k < 2; k++)
+    {
+      double qq[4];
+      ck_assert_ok (chaplygin_smooth_path_init (0.0, NULL, &p));
+      ck_assert_ok (chaplygin_smooth_path_advance (&m, &p, tt[k], NULL));
+      ck_assert_ok (chaplygin_smooth_at_time (&m, tt[k], qq));
+      ck_assert_abs_eps (p.C[0], xt[k][0], 8, qq[0]);
+      ck_assert_abs_eps (p.C[1], xt[k][1], 8, qq[0]);
+    }
   /* tiny L (1e-20): the heading has no resolution in psi, the pieces come
      from the bound |Omega| <= sqrt(2E)/B: the circle to rounding */
   ck_assert_ok (chaplygin_smooth_motion_init (1e-20, qn, &m));
