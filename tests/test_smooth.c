@@ -1054,6 +1054,15 @@ START_TEST (smooth_path)
   ck_assert_ok (chaplygin_smooth_path_init (0.0, NULL, &p));
   ck_assert_ok (chaplygin_smooth_path_advance (&m, &p, 20.0, NULL));
   ck_assert (fabs (p.C[0] - sin (20.0)) < 1e-13 && fabs (p.C[1] - (1 - cos (20.0))) < 1e-13);
+  /* a time where a unit step is below the ulp of t (t = 1e17, tiny L): the
+     partition cannot advance and takes the rest as one piece (here 64
+     time units, 0.064 radians; theta ~ 1e14 has ulps of 1/64 there, so
+     only the length of the chord, 2000 sin(0.032) = 63.989, to 1e-2) */
+  const double qs17[4] = { 0, 1.0, 0, 1e-3 };
+  ck_assert_ok (chaplygin_smooth_motion_init (1e-20, qs17, &m));
+  ck_assert_ok (chaplygin_smooth_path_init (1e17, NULL, &p));
+  ck_assert_ok (chaplygin_smooth_path_advance (&m, &p, 1e17 + 64, NULL));
+  ck_assert (fabs (hypot (p.C[0], p.C[1]) - 2000 * sin (0.032)) < 1e-2);
   /* a motion that runs far: psi reaches +-pi/2 in double long before tau
      (one piece to the end, bisected) */
   const double qr[4] = { 0, 1.0, 0, 1.0 };
