@@ -878,12 +878,16 @@ path_next (const chaplygin_smooth_motion *m, double t, double tau)
   const double z = z0 + sa * m->ac * t;
   if (sa * z > ZCUT + fmax (0.0, log (m->B / fabs (m->L))))
     return tau;
+  if (t + m->B / m->c == t)
+    return tau;         /* B/c below the ulp of t: no piece can be shorter */
+  /* t1 > t: t + B/c > t, and t + 1/(|a| c) > t since |a| c t < 2^53
+     (else sgn(a) z > 2^53 - 745 would have cut off above) */
   double t1 = t + 1.0 / m->ac;                  /* z moves by 1 */
   const double psi1 = atan (sinh (z)) + sa * fabs (m->L) / m->B;
   if (fabs (psi1) < M_PI_2)
     t1 = fmin (t1, fmax (t + m->B / m->c,
                          sa * (asinh (tan (psi1)) - z0) / m->ac));
-  return t1 > t && t1 < tau ? t1 : tau;
+  return t1 < tau ? t1 : tau;
 }
 
 /* x + y as hi + lo (hi the rounded sum), error-free, |x| >= |y| not
