@@ -209,6 +209,58 @@ int chaplygin_smooth_closed_form_eh (double L, const double p0[4], int dir0,
    H*_C = 0, E* = V*^2/2. */
 int chaplygin_smooth_steady_eh (double Vstar, double *E, double *H);
 
+/* A motion of the smooth sleigh from q0, in time: set up once by
+   chaplygin_smooth_motion_init, then evaluated at any elapsed time.  The
+   fields are derived constants of the closed form in time (lib/smooth.c);
+   treat them as read-only. */
+typedef struct
+{
+  double L;
+  double q0[4];       /* the initial state, S0 = q0[CHAPLYGIN_S] */
+  int kind;           /* rest, straight line, circle (L = 0), general */
+  int sigma;          /* sgn V0 (sgn L if V0 = 0): the first direction */
+  int approaching;    /* 1 if V reverses (L V0 < 0, Omega0 != 0) */
+  double s;           /* sgn Omega0: theta turns that way */
+  double a, B;        /* L/(1 + L^2), sqrt(1 + L^2) */
+  double c;           /* sqrt(2E) */
+  double ac;          /* |a| c: z = z0 + sgn(a) ac tau */
+  double T, Tm, Sc;   /* |V0|/c, 1 - |V0|/c, B |Omega0|/c */
+  double Z;           /* |z0| = atanh(|V0|/c) */
+  double sigma_c;     /* arc length from q0 to the reversal (A.1) */
+} chaplygin_smooth_motion;
+
+/* The motion with parameter L from q0 = {S0, V0, theta0, Omega0}. */
+int chaplygin_smooth_motion_init (double L, const double q0[4],
+                                  chaplygin_smooth_motion *m);
+
+/* The state q = {S, V, theta, Omega} at elapsed time tau >= 0 after q0:
+   (2.1) solved in closed form in time (V = sqrt(2E) tanh z, z linear in
+   tau), through the reversal, S the arc length; no root finding. */
+int chaplygin_smooth_at_time (const chaplygin_smooth_motion *m, double tau,
+                              double q[4]);
+
+/* A walk along the path of the contact point C: C at time tau, and the
+   rounding error of its accumulation (C + Cerr is the sum of the
+   increments to ~eps^2, so that many short steps add no rounding). */
+typedef struct
+{
+  double tau;
+  double C[2];
+  double Cerr[2];
+} chaplygin_smooth_path;
+
+/* Start a path at time tau >= 0 with C there (NULL: the origin). */
+int chaplygin_smooth_path_init (double tau, const double C[2],
+                                chaplygin_smooth_path *path);
+
+/* Advance the path of the motion m to time tau >= path->tau: path->C
+   becomes C(tau), by adaptive Gauss-Kronrod quadrature of dC/dtau =
+   V (cos theta, sin theta) (exact for a line or a circle); G (may be NULL)
+   receives the mass centre C + L (cos theta, sin theta) at tau. */
+int chaplygin_smooth_path_advance (const chaplygin_smooth_motion *m,
+                                   chaplygin_smooth_path *path, double tau,
+                                   double G[2]);
+
 /* ------------------------------------------------------------------ */
 /* Section 3: the discrete skate                                       */
 /* q = {D, V, theta, Omega}; p = {D, E, theta, H_P}.                   */
@@ -225,6 +277,18 @@ int chaplygin_discrete_energy (double L0, double D, double V, double Omega,
 /* (3.4) H_P = [1 + (L0 + D)^2] Omega, angular momentum about the peg. */
 int chaplygin_discrete_momentum (double L0, double D, double Omega,
                                  double *H);
+
+/* Omega = H/(1 + (L0 + D)^2), the momentum (3.4) inverted, without
+   overflow for large |L0 + D|. */
+int chaplygin_discrete_omega (double L0, double D, double H, double *Omega);
+
+/* The skate in the plane, heading theta, peg P at slot position D: the
+   slot front P + D (cos theta, sin theta) and the mass centre
+   P + (L0 + D) (cos theta, sin theta) (either may be NULL).  Also the
+   massless skate's, in its units (Delta = 1). */
+int chaplygin_discrete_positions (double L0, double D, double theta,
+                                  const double peg[2], double front[2],
+                                  double G[2]);
 
 /* (3.6) the collision rule in phase form: qminus[D] = Delta if V- > 0,
    0 if V- < 0;  D+ = Delta - D-, V+ = V-, theta+ = theta-,
@@ -615,6 +679,20 @@ int chaplygin_massless_jacobian2 (double L0, const chaplygin_discrete_state *st,
    of a post-collision state. */
 int chaplygin_massless_mass_centre (double L0, const chaplygin_discrete_state *st,
                                     double G[2]);
+
+/* Omega = H/(L0 + D)^2 (0 if H = 0), the momentum (3.4) at rho = 0
+   inverted, without intermediate overflow or underflow. */
+int chaplygin_massless_omega (double L0, double D, double H, double *Omega);
+
+/* The motion between collisions, the analogue of (B.1) and (B.2): on the
+   segment that starts at the post-collision state st, the velocity V, the
+   rate Omega, and the heading and time increments from the start, at slot
+   position D of leg 0 (from the start towards the far end or the turning
+   point) or leg 1 (of a reversing segment: from the turning point back to
+   the start end).  Any output may be NULL (not computed). */
+int chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
+                             double D, int leg, double *V, double *Omega,
+                             double *dtheta, double *dtau);
 
 /* ------------------------------------------------------------------ */
 /* Section 3.1.3 and Appendix B.2.1, B.2.2: reversals, energy series   */

@@ -27,6 +27,7 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/sweep.c \
 	lib/fate.c \
 	lib/massless.c \
+	lib/skate.c \
 	lib/reversal.c \
 	lib/energy.c \
 	lib/far.h \

@@ -1,5 +1,5 @@
 /* quad.h -- kernel: adaptive Gauss-Kronrod quadrature without allocation or
-   GSL's error handler (quad.c).  Uses GSL only. */
+   GSL's error handler (quad.c).  Uses GSL and eft. */
 #ifndef CHAPLYGIN_QUAD_H
 #define CHAPLYGIN_QUAD_H
 
@@ -12,5 +12,13 @@
 #define CHP_QUAD_LIMIT 256
 int chp_integrate (double (*f) (double, void *), void *params, double a,
                    double b, double epsrel, double *result);
+
+/* Int_a^b f(t) dt for a 2-vector integrand f(t, params, y) (returns a
+   status; y[0], y[1] the components), the same strategy and rule with
+   each node evaluated once, to an ABSOLUTE tolerance: the summed error
+   estimates of both components at most epsabs.  CHAPLYGIN_ENOCONV,
+   CHAPLYGIN_ERANGE as chp_integrate; the integrand's first failure. */
+int chp_integrate2 (int (*f) (double, void *, double[2]), void *params,
+                    double a, double b, double epsabs, double result[2]);
 
 #endif /* CHAPLYGIN_QUAD_H */

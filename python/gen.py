@@ -64,6 +64,7 @@ import sys
 # written, or point to more than one element.
 MANUAL = {
     'chaplygin_discrete_step_eh_n',   # st is read and written (in place)
+    'chaplygin_smooth_path_advance',  # path is read and written (in place)
 }
 
 # Outputs that may be NULL: a keyword return_NAME=default chooses whether
@@ -106,6 +107,7 @@ DEFAULTS = {
                                        'peg': 'None'},
     'chaplygin_discrete_state_from_phase': {'tau': '0.0', 'peg': 'None'},
     'chaplygin_massless_state_from_phase': {'tau': '0.0', 'peg': 'None'},
+    'chaplygin_smooth_path_init': {'tau': '0.0', 'C': 'None'},
 }
 
 # Python names for C parameter names that are Python keywords.

@@ -18,7 +18,7 @@ archive=$top_builddir/lib/.libs/libchaplygin-core.a
 # The kernel, in layer order: each uses only files before it.
 kernel="eft status carlson ellint quad collision motion ode leg far series"
 # The paper's sections (they may use the kernel and each other, acyclically).
-sections="units smooth discrete flow map stability reversal energy fate massless sweep printed"
+sections="units smooth discrete flow map stability reversal energy fate massless skate sweep printed"
 
 echo "1..3"
 if test ! -r "$archive"; then

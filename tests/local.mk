@@ -22,6 +22,7 @@ UNIT_CHECKS = \
 	tests/test_stability \
 	tests/test_fate \
 	tests/test_massless \
+	tests/test_skate \
 	tests/test_reversal \
 	tests/test_energy \
 	tests/test_threads \
@@ -86,7 +87,10 @@ tests_test_fate_CFLAGS = $(TEST_CFLAGS)
 tests_test_fate_LDADD = $(TEST_LDADD)
 tests_test_massless_SOURCES = tests/test_massless.c
 tests_test_massless_CFLAGS = $(TEST_CFLAGS)
-tests_test_massless_LDADD = $(TEST_LDADD)
+tests_test_massless_LDADD = $(TEST_LDADD) -lquadmath
+tests_test_skate_SOURCES = tests/test_skate.c
+tests_test_skate_CFLAGS = $(TEST_CFLAGS)
+tests_test_skate_LDADD = $(TEST_LDADD) -lquadmath
 tests_test_reversal_SOURCES = tests/test_reversal.c
 tests_test_reversal_CFLAGS = $(TEST_CFLAGS)
 tests_test_reversal_LDADD = $(TEST_LDADD)

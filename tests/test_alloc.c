@@ -175,7 +175,7 @@ START_TEST (hot_path_no_allocation)
   const double y[4] = { 0.5, 1.0, 2.0, 4.0 };
   for (int j = 0; j < 64; j++)
     x[j] = -2.0 + j / 16.0;
-  int status[12], ns = 0;
+  int status[20], ns = 0;
   ARM ();
   for (int i = 0; i < 3; i++)
     {
@@ -194,12 +194,33 @@ START_TEST (hot_path_no_allocation)
     status[ns] = chaplygin_massless_step (-0.4, &ms, CHAPLYGIN_WANT_ALL, &ms,
                                           NULL);
   ns++;
+  /* what the program calls per sample between collisions and along the
+     smooth sleigh (a reversing motion: all three regimes, the path by
+     quadrature) */
+  double sV, sOm, sdth, sdta, sq[4], sG[2], sF[2];
+  chaplygin_discrete_state mt = { 1, 0.6, 0.2, 0.0, 0.0, { 0.0, 0.0 } };
+  status[ns++] = chaplygin_massless_flow (-0.4, &mt, 0.1, 0, &sV, &sOm, &sdth,
+                                          &sdta);
+  status[ns++] = chaplygin_massless_omega (-0.4, 0.1, 0.2, &sOm);
+  status[ns++] = chaplygin_discrete_omega (-0.4, 0.1, 0.2, &sOm);
+  status[ns++] = chaplygin_discrete_positions (-0.4, 0.1, 0.3, mt.peg, sF, sG);
+  chaplygin_smooth_motion sm;
+  chaplygin_smooth_path sp;
+  const double sq0[4] = { 0.0, 1.0, 0.0, 0.1 };
+  status[ns++] = chaplygin_smooth_motion_init (-1.4142135623730951, sq0, &sm);
+  status[ns++] = chaplygin_smooth_path_init (0.0, NULL, &sp);
+  for (int k = 1; k <= 40 && !status[ns - 1]; k++)
+    {
+      status[ns - 1] = chaplygin_smooth_at_time (&sm, 0.5 * k, sq);
+      if (!status[ns - 1])
+        status[ns - 1] = chaplygin_smooth_path_advance (&sm, &sp, 0.5 * k, sG);
+    }
   long n = DISARM ();
   for (int i = 0; i < ns; i++)
     ck_assert_msg (status[i] == CHAPLYGIN_SUCCESS, "call %d: %s", i,
                    chaplygin_strerror (status[i]));
-  ck_assert_msg (n == 0, "poincare/heading/fate/sweeps/massless: %ld "
-                 "allocations", n);
+  ck_assert_msg (n == 0, "poincare/heading/fate/sweeps/massless/smooth: "
+                 "%ld allocations", n);
 #else
   fprintf (stderr, "test_alloc: allocation counting is not available in "
            "this build (sanitizer or not glibc): skipped\n");

@@ -21,13 +21,27 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_odeiv2.h>
+#include <quadmath.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "internal.h"
 #include "testutil.h"
 
 typedef __float128 q128;
+
+/* |got - want| <= n eps scale. */
+#define ck_assert_abs_eps(got, want, n, scale)                               \
+  do                                                                         \
+    {                                                                        \
+      double g_ = (got), w_ = (want), s_ = (scale);                          \
+      ck_assert_msg (fabs (g_ - w_) <= (n) * DBL_EPSILON * s_,               \
+                     "%s = %.17g, expected %.17g: error %.3g eps of %.3g > %g", \
+                     #got, g_, w_, fabs (g_ - w_) / DBL_EPSILON / s_, s_,    \
+                     (double) (n));                                          \
+    }                                                                        \
+  while (0)
 
 /* ------------------------------------------------------------------ */
 /* 50-digit Cartesian references (script at the end of this file)     */
@@ -1369,6 +1383,283 @@ START_TEST (test_edge_cases)
 }
 END_TEST
 
+/* ------------------------------------------------------------------ */
+/* Between collisions: Omega from H, the state at D                    */
+/* ------------------------------------------------------------------ */
+
+START_TEST (test_omega)
+{
+  /* Route: binary128 H/l^2 with l = L0 + D formed exactly (both doubles
+     within 2^60 of each other's exponent).  Tolerance 2 ulps: the
+     quotient, the square and the first-order correction for the rounding
+     of l; 2.5 where the result is subnormal. */
+  tu_rng r;
+  tu_rng_seed (&r, 515);
+  double worst = 0;
+  for (int k = 0; k < 2000; k++)
+    {
+      double L0 = tu_uniform (&r, -3, 2), D = tu_uniform (&r, 0, 1);
+      double H = tu_uniform (&r, -5, 5), Om;
+      ck_assert_ok (chaplygin_massless_omega (L0, D, H, &Om));
+      q128 l = (q128) L0 + D;
+      ck_assert_rel (Om, (double) ((q128) H / (l * l)), 2 * DBL_EPSILON);
+      worst = fmax (worst, tu_relerr (Om, (double) ((q128) H / (l * l))) / DBL_EPSILON);
+    }
+  printf ("# massless_omega vs binary128, 2000 points: worst %.2f eps\n", worst);
+  /* |l| where l^2 overflows or underflows: (H/l)/l */
+  const double cases[][3] = { { 0x1p600, 0.5, 3.0 }, { -0x1p1020, 1.0, -1e300 },
+                              { 0x1p-600, 0.0, 1e-300 }, { -0x1p-520, 0.0, 2.5e-310 } };
+  for (int k = 0; k < 4; k++)
+    {
+      double Om;
+      ck_assert_ok (chaplygin_massless_omega (cases[k][0], cases[k][1], cases[k][2], &Om));
+      q128 l = (q128) cases[k][0] + cases[k][1];
+      ck_assert_rel (Om, (double) ((q128) cases[k][2] / (l * l)), 2.5 * DBL_EPSILON);
+    }
+  /* H = 0: 0, also with G on the peg; errors leave the output alone */
+  double Om = 7;
+  ck_assert_ok (chaplygin_massless_omega (-0.5, 0.5, 0.0, &Om));
+  ck_assert (Om == 0.0);
+  Om = 7;
+  ck_assert_status (chaplygin_massless_omega (-0.5, 0.5, 1.0, &Om), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_massless_omega (1e-200, 0.0, 1e200, &Om), CHAPLYGIN_ERANGE);
+  ck_assert_status (chaplygin_massless_omega (NAN, 0.0, 1.0, &Om), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_omega (0.5, INFINITY, 1.0, &Om), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_omega (0.5, 0.0, NAN, &Om), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_omega (DBL_MAX, DBL_MAX, 1.0, &Om), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_omega (0.5, 0.0, 1.0, NULL), CHAPLYGIN_EINVAL);
+  ck_assert (Om == 7);
+}
+END_TEST
+
+/* Cartesian geometry of the point mass in binary128: P = 0, e0 = (1, 0),
+   G0 = l0 e0, v = V0 e0 + (H/l0) e_n with V0 = dir sqrt(2E - H^2/l0^2)
+   (E, H the state's doubles, exact); the time t > 0 at which |G(t)| = |l|
+   (l = L0 + D) on the leg (the smaller root on leg 0, the larger on leg
+   1; the positive one when G recedes); V = dl/dt = G.v/l, Omega =
+   (G x v)/l^2, dtheta the angle of G(t)/l (the slot direction), dtau = t.
+   Needs L0 + D0 and L0 + D exact in binary128. */
+static void
+cartesian_flow (double L0, const chaplygin_discrete_state *st, double D,
+                int leg, double out[4])
+{
+  const q128 D0 = st->dir > 0 ? 0 : 1, l0 = L0 + D0, l = (q128) L0 + D;
+  const q128 E = st->E, H = st->H;
+  const q128 V0 = st->dir * sqrtq (2 * E - H * H / (l0 * l0));
+  const q128 v0 = V0, v1 = H / l0;
+  const q128 a = v0 * v0 + v1 * v1, b = l0 * v0, c = l0 * l0 - l * l;
+  q128 disc = b * b - a * c;
+  const q128 rt = disc > 0 ? sqrtq (disc) : 0;
+  const q128 t1 = (-b - rt) / a, t2 = (-b + rt) / a;
+  const q128 t = leg == 1 || t1 < 0 ? t2 : t1;
+  const q128 g0 = l0 + v0 * t, g1 = v1 * t;
+  out[0] = (double) ((g0 * v0 + g1 * v1) / l);
+  out[1] = (double) ((g0 * v1 - g1 * v0) / (l * l));
+  out[2] = (double) atan2q (g1 / l, g0 / l);
+  out[3] = (double) t;
+}
+
+/* A post-collision state from a phase state, via the library's (B.17)
+   conventions (D+ = 0 for V+ > 0, 1 for V+ < 0). */
+static chaplygin_discrete_state
+phase_state (double L0, double V, double Omega)
+{
+  chaplygin_discrete_state st;
+  const double q[4] = { V > 0 ? 0.0 : 1.0, V, 0.25, Omega };
+  ck_assert_ok (chaplygin_massless_state_from_phase (L0, q, 0.0, NULL, &st));
+  return st;
+}
+
+static const struct massless_flow_ref { double L0; int dir; double E, H, D; int leg; double V, Omega, dtheta, dtau; } ref_massless_flow[] = {
+  { 5.617791046444737e+306, -1, 0.5, 5.617791046444737e+306, 0.5, 0, -4.21907464594519956506108e-154, 1.780059086805761106472186e-307, 1.747597939014965829571692e-154, 9.817640054583550931853746e+152 },
+  { 5.617791046444737e+306, -1, 0.5, 5.617791046444737e+306, 0.25, 1, 2.983336292480082697316386e-154, 1.780059086805761106472186e-307, 8.950008877440248091949158e-154, 5.027927973728473912340259e+153 },
+  { 5.617791046444737e+306, -1, 0.5, 5.617791046444737e+306, 1.0, 1, 5.966672584960165394632772e-154, 1.780059086805761106472186e-307, 1.193334516992033078926554e-153, 6.703903964971298549787012e+153 },
+  { -1.1235582092889474e+307, 1, 0.5, 1e+300, 0.5, 0, 9.999999999999960392370594e-1, 7.921525881299400801147087e-315, 3.960762940649716088216615e-315, 5.000000000000019803814703e-1 },
+  { -1.1235582092889474e+307, 1, 0.5, 8.426686569667106e+306, 1.0, 0, 6.614378277661476476254039e-1, 6.675221575521604149270698e-308, 1.009198642004738639431317e-307, 1.511857892036908908858066 },
+  { 1.1235582092889474e+307, -1, 2.0, -1e+305, 0.375, 0, -1.999980196087248011429349, -7.921525881299399904024713e-310, -2.47550135021244098855004e-310, 3.125030943920080328879312e-1 },
+  { 1e+300, 1, 0.75, 1e+299, 0.625, 0, 1.220655561573370295189786, 9.999999999999999474952397e-302, 5.120199503244002647229689e-302, 5.120199503244002916064537e-1 },
+};
+
+START_TEST (test_flow)
+{
+  /* Route: cartesian_flow (binary128) on 12000 random samples: mass in
+     and around the slot, both directions, reversing or not, both legs;
+     D kept 1e-6 of the slot away from a turning point, where t(D) has a
+     square-root sensitivity that binary128 resolves only to ~1e-17.
+     Tolerance 8 eps (each result a product or quotient of about six
+     rounded factors: p = |H|/sqrt(2E), w, w0, the error-free l + l0, and
+     the atan2 or the division): V relative to sqrt(2E) (V -> 0 at the
+     turning point), the others relative.  Measured: V 1.9, Omega 1.4,
+     dtheta 3.5, dtau 2.1. */
+  tu_rng r;
+  tu_rng_seed (&r, 1717);
+  int legs1 = 0;
+  for (int k = 0; k < 3000; k++)
+    {
+      const double L0 = k % 7 == 0 ? tu_uniform (&r, -1e5, 1e5) : tu_uniform (&r, -3, 2);
+      const double V = (k % 2 ? 1 : -1) * tu_uniform (&r, 0.05, 2);
+      const double l0 = V > 0 ? L0 : L0 + 1;
+      const double Om = tu_uniform (&r, -2, 2) / fmax (fabs (l0), 0.1);
+      chaplygin_discrete_state st = phase_state (L0, V, Om), nx;
+      chaplygin_discrete_event ev;
+      if (chaplygin_massless_step (L0, &st, CHAPLYGIN_WANT_ALL, &nx, &ev) == CHAPLYGIN_ESPIN)
+        continue;
+      const double s = sqrt (2 * st.E), D0 = V > 0 ? 0.0 : 1.0;
+      for (int j = 0; j < 4; j++)
+        {
+          const int leg = ev.reversal && j >= 2;
+          const double Dend = ev.reversal ? ev.Dc : 1.0 - D0;
+          const double D = D0 + (Dend - D0) * tu_uniform (&r, 0.0, 1.0 - 1e-6);
+          double got[4], want[4];
+          ck_assert_ok (chaplygin_massless_flow (L0, &st, D, leg, &got[0], &got[1],
+                                                 &got[2], &got[3]));
+          cartesian_flow (L0, &st, D, leg, want);
+          legs1 += leg;
+          ck_assert_abs_eps (got[0], want[0], 8, s);
+          ck_assert_rel (got[1], want[1], 8 * DBL_EPSILON);
+          ck_assert_rel (got[2], want[2], 8 * DBL_EPSILON);
+          ck_assert_rel (got[3], want[3], 8 * DBL_EPSILON);
+        }
+    }
+  ck_assert_int_gt (legs1, 2000);
+}
+END_TEST
+
+START_TEST (test_flow_edges)
+{
+  /* |L0| near the cap 2^1020 (|l|^2 and w^2 overflow in double): against
+     2400-bit Cartesian geometry (mpmath; generator at the end of this
+     file), 8 eps as test_flow */
+  for (size_t i = 0; i < sizeof ref_massless_flow / sizeof ref_massless_flow[0]; i++)
+    {
+      const struct massless_flow_ref *f = &ref_massless_flow[i];
+      const chaplygin_discrete_state st = make_state (f->dir, f->E, f->H, 0, 0, 0, 0);
+      double V, Om, dth, dta;
+      ck_assert_ok (chaplygin_massless_flow (f->L0, &st, f->D, f->leg, &V, &Om, &dth, &dta));
+      ck_assert_abs_eps (V, f->V, 8, sqrt (2 * f->E));
+      ck_assert_rel (Om, f->Omega, 8 * DBL_EPSILON);
+      ck_assert_rel (dth, f->dtheta, 8 * DBL_EPSILON);
+      ck_assert_rel (dta, f->dtau, 8 * DBL_EPSILON);
+    }
+
+  /* bit for bit the step's values: at the far end, at the turning point
+     (V = +0, half the heading and time), back at the start on leg 1 */
+  chaplygin_discrete_state st, nx;
+  chaplygin_discrete_event ev;
+  double V, Om, dth, dta;
+  const double L0s[] = { -0.6666666666666666, -0.5, -0.25, 0.3, -1.5, 2.385 };
+  for (int i = 0; i < 6; i++)
+    for (int dir = -1; dir <= 1; dir += 2)
+      for (int k = 0; k < 3; k++)
+        {
+          const double L0 = L0s[i], l0 = dir > 0 ? L0 : L0 + 1;
+          st = phase_state (L0, dir * (0.3 + 0.4 * k), (1.1 - 0.45 * k) / fabs (l0));
+          if (chaplygin_massless_step (L0, &st, CHAPLYGIN_WANT_ALL, &nx, &ev))
+            continue;
+          const double D0 = dir > 0 ? 0.0 : 1.0;
+          if (!ev.reversal)
+            {
+              ck_assert_ok (chaplygin_massless_flow (L0, &st, 1.0 - D0, 0, &V, &Om, &dth, &dta));
+              ck_assert (V == ev.Vminus && dth == ev.dtheta && dta == ev.dtau);
+              ck_assert_status (chaplygin_massless_flow (L0, &st, 0.5, 1, &V, &Om, &dth, &dta),
+                                CHAPLYGIN_ESTATE);
+              continue;
+            }
+          for (int leg = 0; leg <= 1; leg++)
+            {
+              ck_assert_ok (chaplygin_massless_flow (L0, &st, ev.Dc, leg, &V, &Om, &dth, &dta));
+              ck_assert (V == 0.0 && !signbit (V));
+              ck_assert (dth == 0.5 * ev.dtheta && dta == 0.5 * ev.dtau);
+              /* within 8 eps of D_c: D_c itself */
+              const double Dn = ev.Dc + (D0 == 0 ? 4 : -4) * DBL_EPSILON;
+              ck_assert_ok (chaplygin_massless_flow (L0, &st, Dn, leg, &V, NULL, &dth, NULL));
+              ck_assert (V == 0.0 && dth == 0.5 * ev.dtheta);
+            }
+          ck_assert_ok (chaplygin_massless_flow (L0, &st, D0, 1, &V, &Om, &dth, &dta));
+          ck_assert (V == ev.Vminus && dth == ev.dtheta && dta == ev.dtau);
+          /* D0 on leg 0: the start */
+          ck_assert_ok (chaplygin_massless_flow (L0, &st, D0, 0, &V, &Om, &dth, &dta));
+          ck_assert (dth == 0.0 && dta == 0.0);
+          /* beyond the turning point: not reached */
+          const double Db = ev.Dc + (D0 == 0 ? 1e-9 : -1e-9);
+          ck_assert_status (chaplygin_massless_flow (L0, &st, Db, 0, &V, &Om, &dth, &dta),
+                            CHAPLYGIN_ESTATE);
+        }
+
+  /* the symmetric period-2 skate L0 = -1/2: the return leg mirrors the
+     outgoing one (time reversal about the turning point) */
+  st = phase_state (-0.5, 1.0, 1.6);
+  ck_assert_ok (chaplygin_massless_step (-0.5, &st, CHAPLYGIN_WANT_ALL, &nx, &ev));
+  ck_assert (ev.reversal);
+  double V1, Om1, dth1, dta1;
+  ck_assert_ok (chaplygin_massless_flow (-0.5, &st, 0.1, 0, &V, &Om, &dth, &dta));
+  ck_assert_ok (chaplygin_massless_flow (-0.5, &st, 0.1, 1, &V1, &Om1, &dth1, &dta1));
+  ck_assert_rel (V1, -V, 2 * DBL_EPSILON);
+  ck_assert (Om1 == Om);
+  ck_assert_rel (dth1, ev.dtheta - dth, 4 * DBL_EPSILON);
+  ck_assert_rel (dta1, ev.dtau - dta, 4 * DBL_EPSILON);
+  /* on the peg (l = 0, H != 0) and across it: never reached */
+  ck_assert_status (chaplygin_massless_flow (-0.5, &st, 0.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_massless_flow (-0.5, &st, 0.75, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
+
+  /* H = 0: along the slot, through the point mass (l = 0 at D = 1/2) */
+  st = make_state (-1, 0.5, 0.0, 0.1, 0, 0, 0);
+  ck_assert_ok (chaplygin_massless_flow (-0.5, &st, 0.5, 0, &V, &Om, &dth, &dta));
+  ck_assert (V == -1.0 && Om == 0.0 && dth == 0.0 && dta == 0.5);
+  ck_assert_status (chaplygin_massless_flow (-0.5, &st, 0.5, 1, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
+
+  /* a state whose next collision has no successor (L0 = 0: the new peg on
+     the point mass): the motion up to it exists */
+  st = phase_state (0.0, -1.0, 0.8);
+  ck_assert_status (chaplygin_massless_step (0.0, &st, 0, &nx, NULL), CHAPLYGIN_ESPIN);
+  ck_assert_ok (chaplygin_massless_flow (0.0, &st, 0.75, 0, &V, &Om, &dth, &dta));
+
+  /* errors: outputs untouched */
+  V = Om = dth = dta = 7;
+  st = phase_state (-0.25, 1.0, 0.5);
+  ck_assert_status (chaplygin_massless_flow (-0.25, NULL, 0.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_massless_flow (-0.25, &st, 0.5, 2, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_massless_flow (-0.25, &st, NAN, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_flow (NAN, &st, 0.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_massless_flow (-0.25, &st, 1.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_massless_flow (-0.25, &st, -0.0625, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
+  chaplygin_discrete_state bad = st;
+  bad.E = 0;
+  ck_assert_status (chaplygin_massless_flow (-0.25, &bad, 0.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ESTATE);
+  /* the overflow guard: |L0| > 2^1020 */
+  ck_assert_status (chaplygin_massless_flow (0x1p1021, &st, 0.5, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ERANGE);
+  /* the time overflows: |L0| = 2^1019, the turning point at the far end,
+     the return leg 2 sqrt(2^1020) long at speed sqrt(2E) = 2^-530 */
+  st = make_state (-1, 0x1p-1061, 0x1p489, 0, 0, 0, 0);
+  ck_assert_ok (chaplygin_massless_flow (0x1p1019, &st, 1 - 0x1p-40, 0, &V, &Om, &dth, &dta));
+  V = Om = dth = dta = 7;
+  ck_assert_status (chaplygin_massless_flow (0x1p1019, &st, 1.0, 1, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ERANGE);
+  /* Omega overflows: the turning point at |l| = p = |H|/sqrt(2E) ~ 1e-310,
+     where Omega = H/l^2 ~ 1e310 (D_c rounds to 0, l = L0 = 1e-320) */
+  st = phase_state (1e-320, -1.0, 1e-310);
+  ck_assert_ok (chaplygin_massless_step (1e-320, &st, 0, &nx, &ev));
+  ck_assert (ev.reversal);
+  ck_assert_status (chaplygin_massless_flow (1e-320, &st, ev.Dc, 0, &V, &Om, &dth, &dta),
+                    CHAPLYGIN_ERANGE);
+  ck_assert (V == 7 && Om == 7 && dth == 7 && dta == 7);
+  /* every output may be NULL */
+  st = phase_state (-0.25, 1.0, 0.5);
+  ck_assert_ok (chaplygin_massless_flow (-0.25, &st, 0.1, 0, NULL, NULL, NULL, NULL));
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1384,6 +1675,12 @@ main (void)
   tu_add (s, "massless_jacobian", test_jacobian);
   tu_add (s, "massless_straight_line", test_straight_line);
   tu_add (s, "massless_edge_cases", test_edge_cases);
+  tu_add (s, "massless_omega", test_omega);
+  TCase *t = tcase_create ("massless_flow");
+  tcase_set_timeout (t, 60);
+  tcase_add_test (t, test_flow);
+  tcase_add_test (t, test_flow_edges);
+  suite_add_tcase (s, t);
   return tu_run (s);
 }
 
@@ -1503,4 +1800,50 @@ for (L0, dr, E, H, th, P, note) in cases:
           "%s, %s, %s, %s, { %s, %s }, %s, \"%s\" },"
           % (L0, dr, E, H, th, P[0], P[1], r['rev'], r['dir1'], r['Dm'], f(r['H1']), f(r['dth']),
              f(r['dtau']), f(r['Vm']), f(r['peg'][0]), f(r['peg'][1]), f(r['Dc']), note))
+*/
+
+/* The generator of ref_massless_flow (python3 with mpmath 1.3):
+
+# The massless skate between collisions for |L0| near the cap 2^1020, by
+# Cartesian geometry of the point mass at 2400 bits: P = 0, e0 = (1, 0),
+# G0 = l0 e0, v = V0 e0 + (H/l0) e_n, V0 = dir sqrt(2E - H^2/l0^2); the
+# time t > 0 at which |G(t)| = |l| (l = L0 + D) on the requested leg (the
+# first or the second crossing); V = G.v/l, Omega = (G x v)/l^2, dtheta the
+# angle of G(t)/l, dtau = t.
+from mpmath import mp, mpf, sqrt, atan2, nstr
+mp.prec = 2400
+def flow(L0, dr, E, H, D, leg):
+    L0, E, H, D = mpf(L0), mpf(E), mpf(H), mpf(D)
+    D0 = 0 if dr > 0 else 1
+    l0 = L0 + D0; l = L0 + D
+    V0 = dr * sqrt(2*E - H**2/l0**2)
+    v = (V0, H/l0)
+    G0 = (l0, mpf(0))
+    # |G0 + v t|^2 = l^2
+    a = v[0]**2 + v[1]**2; b = G0[0]*v[0] + G0[1]*v[1]; c = l0**2 - l**2
+    disc = b*b - a*c
+    r = sqrt(disc) if disc > 0 else mpf(0)
+    ts = sorted([t for t in ((-b - r)/a, (-b + r)/a) if t >= 0])
+    t = ts[0] if leg == 0 else ts[1]
+    G = (G0[0] + v[0]*t, G0[1] + v[1]*t)
+    V = (G[0]*v[0] + G[1]*v[1]) / l
+    Om = (G[0]*v[1] - G[1]*v[0]) / l**2
+    dth = atan2(G[1]/l, G[0]/l)
+    return V, Om, dth, t
+cases = [
+    # L0, dir, E, H, D, leg
+    (2.0**1019, -1, 0.5, 2.0**1019, 0.5, 0),      # turning point exactly at D = 0
+    (2.0**1019, -1, 0.5, 2.0**1019, 0.25, 1),
+    (2.0**1019, -1, 0.5, 2.0**1019, 1.0, 1),      # back at the start end
+    (-2.0**1020, 1, 0.5, 1e300, 0.5, 0),          # at the cap, no reversal
+    (-2.0**1020, 1, 0.5, 2.0**1019 * 1.5, 1.0, 0),
+    (2.0**1020, -1, 2.0, -1e305, 0.375, 0),
+    (1e300, 1, 0.75, 1e299, 0.625, 0),            # receding, |l|^2 overflows in double
+]
+print("static const struct massless_flow_ref { double L0; int dir; double E, H, D; int leg; double V, Omega, dtheta, dtau; } ref_massless_flow[] = {")
+for (L0, dr, E, H, D, leg) in cases:
+    V, Om, dth, t = flow(L0, dr, E, H, D, leg)
+    f = lambda x: nstr(x, 25, min_fixed=1, max_fixed=0)
+    print("  { %r, %d, %r, %r, %r, %d, %s, %s, %s, %s }," % (L0, dr, E, H, D, leg, f(V), f(Om), f(dth), f(t)))
+print("};")
 */

@@ -405,13 +405,9 @@ parse_skate (int argc, char **argv, skate_args *args)
   return -1;
 }
 
-static void
-print_row (long n, double D, int reversal, const chaplygin_discrete_state *s)
-{
-  printf ("%ld,%.17g,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", n, D,
-          reversal, s->E, s->H, s->theta, s->tau, s->peg[0], s->peg[1]);
-}
-
+/* "chaplygin skate": the options validated here (messages naming them),
+   then the per-collision run of a scene with the same skate and outputs
+   E,H,theta,tau,peg (run.c: one mechanism for both). */
 static int
 run_skate (int argc, char **argv)
 {
@@ -436,9 +432,8 @@ run_skate (int argc, char **argv)
 
   const double q[4] = { args.V > 0.0 ? 0.0 : args.Delta, args.V, args.theta,
                         args.Omega };
-  const double peg[2] = { 0.0, 0.0 };
   chaplygin_discrete_state st;
-  status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, peg, &st);
+  status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st);
   if (status != CHAPLYGIN_SUCCESS)
     {
       fprintf (stderr, "chaplygin: initial state --L0 %.17g --Delta %.17g "
@@ -448,29 +443,27 @@ run_skate (int argc, char **argv)
       return EXIT_USAGE;
     }
 
-  const chaplygin_options opt = { args.method, args.tol,
-                                  CHAPLYGIN_PREC_DOUBLE };
-
-  puts ("n,D,reversal,E,H,theta,tau,peg_x,peg_y");
-  print_row (0, q[CHAPLYGIN_D], 0, &st);
-  for (long n = 1; n <= args.collisions; n++)
-    {
-      chaplygin_discrete_state next;
-      chaplygin_discrete_event ev;
-      status = chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_ALL, &opt,
-                                        &next, &ev);
-      if (status != CHAPLYGIN_SUCCESS)
-        {
-          /* The rows already printed stay printed. */
-          (void) finish_output ();
-          fprintf (stderr, "chaplygin: collision %ld: %s\n", n,
-                   chaplygin_strerror (status));
-          return EXIT_FAILURE_LIB;
-        }
-      st = next;
-      print_row (n, st.dir > 0 ? 0.0 : sys.Delta, ev.reversal, &st);
-    }
-  return finish_output ();
+  static scene sc;              /* large: keep it off the stack */
+  memset (&sc, 0, sizeof sc);
+  sc.model = SCENE_DISCRETE;
+  sc.L0 = args.L0;
+  sc.Delta = args.Delta;
+  sc.L = NAN;
+  sc.V = args.V;
+  sc.Omega = args.Omega;
+  sc.theta = args.theta;
+  sc.collisions = args.collisions;
+  sc.duration = NAN;
+  sc.samples = -1;
+  sc.outputs = SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA | SCENE_OUT_TAU
+    | SCENE_OUT_PEG;
+  sc.method = args.method;
+  sc.tolerance = args.tol;
+  sc.sweep = SWEEP_NONE;
+  rc = scene_run (&sc, "skate", 0, stdout, NULL);
+  if (rc == EXIT_OK)
+    rc = finish_output ();
+  return rc;
 }
 
 /* The arguments of "run". */

@@ -4,13 +4,12 @@ bin_PROGRAMS = tools/chaplygin
 tools_chaplygin_SOURCES = tools/chaplygin.c tools/scene.c tools/scene.h \
 	tools/run.c tools/run.h tools/sweep.c tools/sweep.h tools/progress.c \
 	tools/progress.h tools/eq.c tools/eq.h tools/number.c tools/number.h
-tools_chaplygin_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS) $(INIH_CFLAGS) \
-	$(OPENMP_CFLAGS)
+tools_chaplygin_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) $(OPENMP_CFLAGS)
 tools_chaplygin_CPPFLAGS = $(AM_CPPFLAGS) \
 	-DCHAPLYGIN_SCENES_DIR='"$(scenesdir)"' 
 tools_chaplygin_LDFLAGS = $(OPENMP_CFLAGS)
 tools_chaplygin_LDADD = lib/libchaplygin.la $(INIH_LIBS) $(MPFR_LIBS) \
-	$(GSL_LIBS) $(CODE_COVERAGE_LIBS) -lm
+	$(CODE_COVERAGE_LIBS) -lm
 # The man page names the installed scenes: @pkgdatadir@ substituted here,
 # so that its EXAMPLES work from an installation.  The manual's "Program
 # reference" is generated from the same source (doc/local.mk).

@@ -20,15 +20,11 @@
 #include <config.h>
 
 #include <errno.h>
-#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 
 #include "chaplygin.h"
 #include "progress.h"
@@ -50,10 +46,6 @@ enum
 #define PROGRESS_SMOOTH 100000.0
 #define PROGRESS_EVERY 256              /* iterations between updates */
 #define ROW_MAX 1024                    /* holds any row (<= 16 numbers) */
-#define PATH_LIMIT 20000                /* subintervals of a path quadrature */
-#define PATH_EPSREL 1e-12
-#define PATH_EPSABS 1e-13               /* times the arc length covered */
-#define ROOT_ITER_MAX 200
 
 /* ------------------------------------------------------------------ */
 /* CSV rows                                                             */
@@ -242,15 +234,13 @@ typedef struct
   double D0, V0, Omega0;        /* post-collision D+, V+, Omega+ */
 } segment_start;
 
-/* Omega from the angular momentum H about the peg at D:
-   H/(1 + l^2) (discrete) or H/l^2 (massless, 0 if H = 0). */
-static double
-skate_omega (const skate *k, double H, double D)
+/* Omega from the angular momentum H about the peg at D. */
+static int
+skate_omega (const skate *k, double H, double D, double *Omega)
 {
-  double l = k->L0 + D;
   if (k->massless)
-    return H == 0.0 ? 0.0 : H / (l * l);
-  return H / (1.0 + l * l);
+    return chaplygin_massless_omega (k->L0, D, H, Omega);
+  return chaplygin_discrete_omega (k->L0, D, H, Omega);
 }
 
 /* One step of the return map (B.3)/(B.4) or (B.15), counted. */
@@ -269,20 +259,15 @@ skate_step (const skate *k, const chaplygin_discrete_state *in,
   return chaplygin_discrete_step (&k->sys, in, request, &k->opt, out, ev);
 }
 
-/* The positions of a point at slot coordinate D, heading theta, with the
-   peg at PEG: slot front peg + D e, mass centre peg + (L0 + D) e. */
-static void
+/* The peg, slot front and mass centre of a point at slot coordinate D,
+   heading theta, with the peg at PEG. */
+static int
 skate_positions (const skate *k, double D, double theta, const double peg[2],
                  point *p)
 {
-  double sn, cs;
-  sincos (theta, &sn, &cs);
   p->peg[0] = peg[0];
   p->peg[1] = peg[1];
-  p->path[0] = peg[0] + D * cs;
-  p->path[1] = peg[1] + D * sn;
-  p->G[0] = peg[0] + (k->L0 + D) * cs;
-  p->G[1] = peg[1] + (k->L0 + D) * sn;
+  return chaplygin_discrete_positions (k->L0, D, theta, peg, p->path, p->G);
 }
 
 /* The point of a post-collision state S with velocity V+ (its Omega+ from
@@ -297,18 +282,10 @@ skate_post_point (const skate *k, const chaplygin_discrete_state *s,
   p->theta = s->theta;
   p->tau = s->tau;
   p->V = V;
-  p->Omega = skate_omega (k, s->H, D);
-  if (k->need_positions)
-    {
-      skate_positions (k, D, s->theta, s->peg, p);
-      if (k->massless)
-        {
-          int status = chaplygin_massless_mass_centre (k->L0, s, p->G);
-          if (status != CHAPLYGIN_SUCCESS)
-            return status;
-        }
-    }
-  return CHAPLYGIN_SUCCESS;
+  int status = skate_omega (k, s->H, D, &p->Omega);
+  if (status == CHAPLYGIN_SUCCESS && k->need_positions)
+    status = skate_positions (k, D, s->theta, s->peg, p);
+  return status;
 }
 
 /* "chaplygin: PATH: collision N: <status>" after flushing the rows
@@ -481,70 +458,33 @@ skate_run_collisions (const skate *k, const scene *sc, segment_start *cur,
 
 /* ---- dense output ---------------------------------------------------- */
 
-/* The geometry of one segment of the massless skate: G moves on a line at
-   speed s = sqrt(2E), at distance p = |H|/s from the peg; sigma is the
-   position of G along its line from the foot of the perpendicular from
-   the peg (increasing with time), |l|^2 = p^2 + sigma^2. */
-typedef struct
-{
-  double s, p;
-  double w0;                    /* |sigma| at the start: |V0| |l0|/s */
-  int approaching;              /* sigma < 0 at the start (|l| falls) */
-} massless_line;
-
-/* V, Omega and the heading and time increments at D on the outgoing leg
-   of the segment from START (D between the start and the turning point or
-   the far end).  WANT_THETA: compute *dtheta (else left 0).  Discrete:
-   (B.1) chaplygin_discrete_flow and (B.2) chaplygin_discrete_heading;
-   massless: the straight-line motion of G. */
+/* V, Omega and the heading and time increments from the start of the
+   segment from START at D on leg LEG (0: the outgoing leg, from the start
+   to the far end or the turning point; 1: the return leg of a reversing
+   segment, massless only).  WANT_THETA: compute *dtheta (else left 0).
+   Discrete: (B.1) chaplygin_discrete_flow and (B.2)
+   chaplygin_discrete_heading; massless: chaplygin_massless_flow. */
 static int
-out_leg_sample (const skate *k, const segment_start *start,
-                const massless_line *ml, double D, int want_theta,
-                double *V, double *Omega, double *dtheta, double *dtau)
+leg_sample (const skate *k, const segment_start *start, int leg, double D,
+            int want_theta, double *V, double *Omega, double *dtheta,
+            double *dtau)
 {
   const double D0 = start->D0, V0 = start->V0, Om0 = start->Omega0;
   *dtheta = 0.0;
   k->stats->heading_evals++;
-  if (!k->massless)
-    {
-      double V2, Om;
-      int status = chaplygin_discrete_flow (k->L0, D0, V0, Om0, D, &V2, &Om);
-      if (status != CHAPLYGIN_SUCCESS)
-        return status;
-      status = chaplygin_discrete_heading (k->L0, D0, V0, Om0, D, &k->opt,
-                                           want_theta ? dtheta : NULL, dtau);
-      if (status != CHAPLYGIN_SUCCESS)
-        return status;
-      *V = copysign (sqrt (V2), V0);
-      *Omega = Om;
-      return CHAPLYGIN_SUCCESS;
-    }
-
-  const double H = start->st.H, l = k->L0 + D;
-  if (H == 0.0)
-    {
-      /* along the slot axis: V constant, no rotation */
-      *V = V0;
-      *Omega = 0.0;
-      *dtau = fabs (D - D0) / fabs (V0);
-      return isfinite (*dtau) ? CHAPLYGIN_SUCCESS : CHAPLYGIN_ERANGE;
-    }
-  /* w^2 = w0^2 + l^2 - l0^2, l^2 - l0^2 = (D - D0)(2 L0 + D + D0) */
-  const double Q = (D - D0) * (2.0 * k->L0 + D + D0);
-  const double w = sqrt (fmax (ml->w0 * ml->w0 + Q, 0.0));
-  const double sigma0 = ml->approaching ? -ml->w0 : ml->w0;
-  const double sigma = ml->approaching ? -w : w;
-  /* sigma - sigma0 = +-(w^2 - w0^2)/(w + w0), no cancellation */
-  const double dsigma = ml->w0 + w > 0.0
-    ? (ml->approaching ? -Q : Q) / (ml->w0 + w) : 0.0;
-  *dtheta = copysign (atan2 (ml->p * dsigma,
-                             ml->p * ml->p + sigma * sigma0), H);
-  *dtau = dsigma / ml->s;
-  *V = sigma * ml->s / l;
-  *Omega = H / (l * l);
-  if (!isfinite (*dtheta) || !isfinite (*dtau) || !isfinite (*V)
-      || !isfinite (*Omega))
-    return CHAPLYGIN_ERANGE;
+  if (k->massless)
+    return chaplygin_massless_flow (k->L0, &start->st, D, leg, V, Omega,
+                                    want_theta ? dtheta : NULL, dtau);
+  double V2, Om;
+  int status = chaplygin_discrete_flow (k->L0, D0, V0, Om0, D, &V2, &Om);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status;
+  status = chaplygin_discrete_heading (k->L0, D0, V0, Om0, D, &k->opt,
+                                       want_theta ? dtheta : NULL, dtau);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status;
+  *V = copysign (sqrt (V2), V0);
+  *Omega = Om;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -563,7 +503,14 @@ dense_row (const skate *k, sink *s, const segment_start *start, long n,
   p.V = V;
   p.Omega = Omega;
   if (k->need_positions)
-    skate_positions (k, D, theta, start->st.peg, &p);
+    {
+      int status = skate_positions (k, D, theta, start->st.peg, &p);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          (void) collision_failure (k, s, n, status);
+          return -1;
+        }
+    }
   row_begin (s);
   row_printf (s, "%ld,%ld,%d", n, ki, reversal);
   row_num (s, tau);
@@ -618,7 +565,6 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
       const int dir = st->dir;
       chaplygin_discrete_state next;
       chaplygin_discrete_event ev;
-      massless_line ml = { 0.0, 0.0, 0.0, 0 };
       double V, Om, dth, dta;
       long ki = 0;
 
@@ -627,13 +573,6 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
         {
           rc = collision_failure (k, s, n, status);
           break;
-        }
-      if (k->massless)
-        {
-          ml.s = sqrt (2.0 * st->E);
-          ml.p = fabs (st->H) / ml.s;
-          ml.w0 = fabs (cur->V0) * fabs (k->L0 + D0) / ml.s;
-          ml.approaching = dir * (k->L0 + D0) < 0.0;
         }
 
       if (dense_row (k, s, cur, n, ki++, ev.reversal, D0, cur->V0,
@@ -649,15 +588,14 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
             {
               double D = k->Delta * (double) (dir > 0 ? j : N + 1 - j)
                 / (double) (N + 1);
-              status = out_leg_sample (k, cur, &ml, D, want_theta, &V, &Om,
-                                       &dth, &dta);
+              status = leg_sample (k, cur, 0, D, want_theta, &V, &Om, &dth,
+                                   &dta);
               if (status != CHAPLYGIN_SUCCESS && j == N + 1)
                 {
                   /* the far end within rounding of a turning point: the
                      step's values */
-                  status = CHAPLYGIN_SUCCESS;
                   V = ev.Vminus;
-                  Om = skate_omega (k, st->H, D);
+                  status = skate_omega (k, st->H, D, &Om);
                   dth = ev.dtheta;
                   dta = ev.dtau;
                 }
@@ -673,14 +611,15 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
         }
       else
         {
-          /* out to the turning point Dc and back, mirrored */
+          /* out to the turning point Dc and back: the massless skate's
+             return leg from the library, the discrete skate's mirrored */
           const double Dc = ev.Dc;
           for (long j = 1; j <= m && rc == RUN_OK; j++)
             {
               double D = D0 + (Dc - D0) * (double) j / (double) (m + 1);
               double *b = buf + 5 * (j - 1);
-              status = out_leg_sample (k, cur, &ml, D, want_theta, &V, &Om,
-                                       &dth, &dta);
+              status = leg_sample (k, cur, 0, D, want_theta, &V, &Om, &dth,
+                                   &dta);
               if (status != CHAPLYGIN_SUCCESS)
                 break;
               b[0] = D, b[1] = V, b[2] = Om, b[3] = dth, b[4] = dta;
@@ -690,20 +629,40 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
             }
           if (status == CHAPLYGIN_SUCCESS && rc == RUN_OK)
             {
-              if (dense_row (k, s, cur, n, ki++, 1, Dc, 0.0,
-                             skate_omega (k, st->H, Dc),
-                             theta0 + 0.5 * ev.dtheta, tau0 + 0.5 * ev.dtau)
-                  != 0)
+              if (k->massless)
+                status = leg_sample (k, cur, 0, Dc, want_theta, &V, &Om,
+                                     &dth, &dta);
+              else
+                {
+                  V = 0.0;
+                  status = skate_omega (k, st->H, Dc, &Om);
+                  dth = 0.5 * ev.dtheta;
+                  dta = 0.5 * ev.dtau;
+                }
+              if (status == CHAPLYGIN_SUCCESS
+                  && dense_row (k, s, cur, n, ki++, 1, Dc, V, Om,
+                                theta0 + dth, tau0 + dta) != 0)
                 rc = RUN_FAILED;
-              for (long j = m; j >= 1 && rc == RUN_OK; j--)
+              for (long j = m; j >= 1 && rc == RUN_OK
+                   && status == CHAPLYGIN_SUCCESS; j--)
                 {
                   const double *b = buf + 5 * (j - 1);
-                  if (dense_row (k, s, cur, n, ki++, 1, b[0], -b[1], b[2],
-                                 theta0 + (ev.dtheta - b[3]),
-                                 tau0 + (ev.dtau - b[4])) != 0)
+                  if (k->massless)
+                    status = leg_sample (k, cur, 1, b[0], want_theta, &V,
+                                         &Om, &dth, &dta);
+                  else
+                    {
+                      V = -b[1];
+                      Om = b[2];
+                      dth = ev.dtheta - b[3];
+                      dta = ev.dtau - b[4];
+                    }
+                  if (status == CHAPLYGIN_SUCCESS
+                      && dense_row (k, s, cur, n, ki++, 1, b[0], V, Om,
+                                    theta0 + dth, tau0 + dta) != 0)
                     rc = RUN_FAILED;
                 }
-              if (rc == RUN_OK
+              if (rc == RUN_OK && status == CHAPLYGIN_SUCCESS
                   && dense_row (k, s, cur, n, ki++, 1, D0, -cur->V0,
                                 cur->Omega0, theta0 + ev.dtheta,
                                 tau0 + ev.dtau) != 0)
@@ -721,7 +680,12 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
       cur->st = next;
       cur->D0 = next.dir > 0 ? 0.0 : k->Delta;
       cur->V0 = ev.Vminus;
-      cur->Omega0 = skate_omega (k, next.H, cur->D0);
+      status = skate_omega (k, next.H, cur->D0, &cur->Omega0);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          rc = collision_failure (k, s, n, status);
+          break;
+        }
       if (n % PROGRESS_EVERY == 0)
         progress_update (&bar, (double) n);
     }
@@ -750,252 +714,25 @@ skate_run (const scene *sc, const char *path, run_stats *stats, sink *s)
 /* The smooth sleigh                                                    */
 /* ------------------------------------------------------------------ */
 
-/* The smooth motion from q0 = {0, V0, theta0, Omega0}: the closed form
-   (A.2) in the arc length S of the path of C. */
-typedef struct
-{
-  double L;
-  double q0[4];
-  int singular;                 /* theta ~ sqrt(|S - S_sing|) at S_sing, */
-  double S_sing;                /* the reversal S_c, or 0 if V0 = 0 */
-  const char *path;
-  run_stats *stats;
-  int status;                   /* first failure inside a quadrature */
-} smooth_motion;
-
-/* The state q and elapsed time *tau (may be NULL) at arc length S,
-   counted. */
-static int
-smooth_at (smooth_motion *m, double S, double q[4], double *tau)
-{
-  m->stats->closed_form_evals++;
-  return chaplygin_smooth_closed_form (m->L, m->q0, S, q, tau);
-}
-
-/* The arc length S >= S_lo at which tau(S) = T, where tau(S_lo) = TAU_LO
-   <= T and Q_LO is the state at S_lo (tau(S) increases: dS/dtau = |V|).
-   VMAX = sqrt(2E) >= |V| everywhere, so S_lo + VMAX (T - TAU_LO) is past
-   the root (the bracket is widened if rounding says otherwise).
-   Safeguarded Newton on tau(S) - T (dtau/dS = 1/|V|) from
-   S_lo + |V(S_lo)| (T - TAU_LO), bisection where Newton leaves the bracket
-   or |f| does not halve, until f = 0, the bracket is a few ulps wide or
-   the iterate stops moving.  *S_out receives the S of least |f| seen, q
-   its state (q may be Q_LO). */
-static int
-smooth_find_S (smooth_motion *m, double T, double S_lo, double tau_lo,
-               const double q_lo[4], double vmax, double *S_out, double q[4])
-{
-  int status;
-  double dt = T - tau_lo;
-  double lo = S_lo, hi, tau_hi, qq[4];
-  double best_S = S_lo, best_f = tau_lo - T, best_q[4];
-  double step = fmax (vmax * dt * (1.0 + 1e-12),
-                      4.0 * DBL_EPSILON * S_lo) + DBL_MIN;
-
-  memcpy (best_q, q_lo, sizeof best_q);
-  if (dt <= 0.0)
-    {
-      *S_out = S_lo;
-      memcpy (q, best_q, sizeof best_q);
-      return CHAPLYGIN_SUCCESS;
-    }
-  /* the bracket [lo, hi]: tau(lo) <= T <= tau(hi) */
-  for (int i = 0;; i++)
-    {
-      hi = S_lo + step;
-      status = smooth_at (m, hi, qq, &tau_hi);
-      if (status != CHAPLYGIN_SUCCESS)
-        return status;
-      if (tau_hi >= T)
-        break;
-      if (i == 60)
-        return CHAPLYGIN_ERANGE;
-      lo = hi;
-      step *= 2.0;
-    }
-  if (tau_hi - T < fabs (best_f))
-    {
-      best_S = hi;
-      best_f = tau_hi - T;
-      memcpy (best_q, qq, sizeof qq);
-    }
-
-  double x = S_lo + fabs (q_lo[CHAPLYGIN_V]) * dt;
-  if (!(x > lo && x < hi))
-    x = lo + 0.5 * (hi - lo);
-  double last_f = HUGE_VAL;
-  for (int i = 0; i < ROOT_ITER_MAX && best_f != 0.0; i++)
-    {
-      double tx;
-      status = smooth_at (m, x, qq, &tx);
-      if (status != CHAPLYGIN_SUCCESS)
-        return status;
-      double f = tx - T;
-      if (fabs (f) < fabs (best_f))
-        {
-          best_S = x;
-          best_f = f;
-          memcpy (best_q, qq, sizeof qq);
-        }
-      if (f == 0.0)
-        break;
-      if (f < 0.0)
-        lo = x;
-      else
-        hi = x;
-      if (hi - lo <= 4.0 * DBL_EPSILON * fmax (fabs (hi), DBL_MIN))
-        break;
-      /* Newton, unless it leaves the bracket or |f| did not halve */
-      double xn = x - f * fabs (qq[CHAPLYGIN_V]);
-      int bisect = !(xn > lo && xn < hi) || fabs (f) > 0.5 * last_f;
-      last_f = fabs (f);
-      if (bisect)
-        xn = lo + 0.5 * (hi - lo);
-      if (xn == x)
-        break;
-      x = xn;
-    }
-  *S_out = best_S;
-  memcpy (q, best_q, sizeof best_q);
-  return CHAPLYGIN_SUCCESS;
-}
-
-/* The integrand of a path quadrature: one component of
-   dC/dS = sgn(V) e(theta), in the variable S (side 0) or in
-   u = sqrt(|S - S_sing|) (side -1: S = S_sing - u^2, side +1:
-   S = S_sing + u^2, dS = 2u du), which makes it smooth at a reversal
-   (theta ~ sqrt(|S - S_c|) there). */
-typedef struct
-{
-  smooth_motion *m;
-  int side;
-  int component;                /* 0: x, 1: y */
-} path_integrand;
-
-static double
-path_f (double t, void *params)
-{
-  path_integrand *pi = params;
-  smooth_motion *m = pi->m;
-  double S = t, jac = 1.0, q[4];
-  if (pi->side != 0)
-    {
-      S = m->S_sing + pi->side * t * t;
-      jac = 2.0 * t;
-      if (S < 0.0)
-        S = 0.0;
-    }
-  int status = smooth_at (m, S, q, NULL);
-  if (status != CHAPLYGIN_SUCCESS)
-    {
-      if (m->status == CHAPLYGIN_SUCCESS)
-        m->status = status;
-      return 0.0;
-    }
-  double v = q[CHAPLYGIN_V];
-  double sgn = v > 0.0 ? 1.0 : v < 0.0 ? -1.0 : 0.0;
-  double e = pi->component ? sin (q[CHAPLYGIN_THETA])
-    : cos (q[CHAPLYGIN_THETA]);
-  return sgn * e * jac;
-}
-
-/* Integrate dC/dS over [a, b] (a <= b, both on one side of S_sing) in the
-   variable of SIDE, adding to d[2].  Returns 0, or -1 after a message. */
-static int
-path_piece (smooth_motion *m, gsl_integration_workspace *ws, int side,
-            double a, double b, double d[2])
-{
-  double ta = a, tb = b;
-  if (side < 0)
-    {
-      ta = sqrt (fmax (m->S_sing - b, 0.0));
-      tb = sqrt (fmax (m->S_sing - a, 0.0));
-    }
-  else if (side > 0)
-    {
-      ta = sqrt (fmax (a - m->S_sing, 0.0));
-      tb = sqrt (fmax (b - m->S_sing, 0.0));
-    }
-  if (!(tb > ta))
-    return 0;
-  for (int c = 0; c < 2; c++)
-    {
-      path_integrand pi = { m, side, c };
-      gsl_function F = { path_f, &pi };
-      double r = 0.0, err = 0.0;
-      m->status = CHAPLYGIN_SUCCESS;
-      m->stats->path_quadratures++;
-      int gs = gsl_integration_qag (&F, ta, tb, PATH_EPSABS * (b - a),
-                                    PATH_EPSREL, PATH_LIMIT,
-                                    GSL_INTEG_GAUSS21, ws, &r, &err);
-      if (m->status != CHAPLYGIN_SUCCESS)
-        {
-          fprintf (stderr, "chaplygin: %s: path at S = %.17g: %s\n", m->path,
-                   a, chaplygin_strerror (m->status));
-          return -1;
-        }
-      /* roundoff may stop the refinement short of the tolerance, only
-         where the estimate is already at the level of rounding */
-      if (gs != GSL_SUCCESS
-          && !(gs == GSL_EROUND && err <= 1e-10 * (b - a)))
-        {
-          fprintf (stderr, "chaplygin: %s: path quadrature on S in "
-                   "[%.17g, %.17g]: %s\n", m->path, a, b, gsl_strerror (gs));
-          return -1;
-        }
-      /* side -1 runs u against S: the integral over [u(b), u(a)] is the
-         one over [a, b] */
-      d[c] += r;
-    }
-  return 0;
-}
-
-/* C(b) - C(a), added to d[2]. */
-static int
-path_increment (smooth_motion *m, gsl_integration_workspace *ws, double a,
-                double b, double d[2])
-{
-  if (!m->singular)
-    return path_piece (m, ws, 0, a, b, d);
-  if (b <= m->S_sing)
-    return path_piece (m, ws, -1, a, b, d);
-  if (a >= m->S_sing)
-    return path_piece (m, ws, 1, a, b, d);
-  if (path_piece (m, ws, -1, a, m->S_sing, d) != 0)
-    return -1;
-  return path_piece (m, ws, 1, m->S_sing, b, d);
-}
-
 /* The smooth sleigh with L, from (V, Omega, theta) at S = 0, tau = 0, C at
-   the origin, for DURATION, at SAMPLES + 1 times equally spaced. */
+   the origin, for DURATION, at SAMPLES + 1 times equally spaced: the state
+   by chaplygin_smooth_at_time, C and G (only if requested) by
+   chaplygin_smooth_path_advance from the previous sample. */
 static int
 smooth_run (double L, double V, double Omega, double theta, double duration,
             long samples, unsigned outputs, const char *path,
             run_stats *stats, sink *s)
 {
-  smooth_motion m;
-  int status;
+  chaplygin_smooth_motion m;
+  const double q0[4] = { 0.0, V, theta, Omega };
   double E, H;
   const int need_path = (outputs & (SCENE_OUT_PATH | SCENE_OUT_G)) != 0;
 
-  memset (&m, 0, sizeof m);
-  m.L = L;
-  m.q0[CHAPLYGIN_S] = 0.0;
-  m.q0[CHAPLYGIN_V] = V;
-  m.q0[CHAPLYGIN_THETA] = theta;
-  m.q0[CHAPLYGIN_OMEGA] = Omega;
-  m.path = path;
-  m.stats = stats;
-
-  status = chaplygin_smooth_energy (L, V, Omega, &E);
+  int status = chaplygin_smooth_motion_init (L, q0, &m);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_smooth_energy (L, V, Omega, &E);
   if (status == CHAPLYGIN_SUCCESS)
     status = chaplygin_smooth_momentum (L, Omega, &H);
-  if (status == CHAPLYGIN_SUCCESS && !isfinite (sqrt (2.0 * E)))
-    status = CHAPLYGIN_ERANGE;
-  int reverses = 0;
-  double Sc = 0.0;
-  if (status == CHAPLYGIN_SUCCESS)
-    status = chaplygin_smooth_reversal (L, m.q0, &reverses, &Sc);
   if (status != CHAPLYGIN_SUCCESS)
     {
       fprintf (stderr, "chaplygin: %s: [initial] V = %.17g, Omega = %.17g "
@@ -1003,34 +740,8 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
                chaplygin_strerror (status));
       return RUN_REJECTED;
     }
-  if (reverses)
-    {
-      m.singular = 1;
-      m.S_sing = Sc;
-    }
-  else if (V == 0.0)
-    {
-      m.singular = 1;           /* starts at a turning point */
-      m.S_sing = 0.0;
-    }
-  /* at rest, or spinning in place: S never advances (V = 0 and
-     Omega = 0 or L = 0) */
-  const int in_place = V == 0.0 && (Omega == 0.0 || L == 0.0);
-  const double vmax = sqrt (2.0 * E);
   if (samples < 1)
     samples = 1;
-
-  gsl_integration_workspace *ws = NULL;
-  if (need_path && !in_place)
-    {
-      gsl_set_error_handler_off ();
-      ws = gsl_integration_workspace_alloc (PATH_LIMIT);
-      if (!ws)
-        {
-          fprintf (stderr, "chaplygin: %s: out of memory\n", path);
-          return RUN_FAILED;
-        }
-    }
 
   progress bar;
   progress_start (&bar, (double) samples > PROGRESS_SMOOTH, (double) samples);
@@ -1041,48 +752,28 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
   if (row_end (s) != 0)
     rc = RUN_FAILED;
 
-  double S_prev = 0.0, tau_prev = 0.0, q[4], C[2] = { 0.0, 0.0 };
-  memcpy (q, m.q0, sizeof q);
+  chaplygin_smooth_path walk;
+  (void) chaplygin_smooth_path_init (0.0, NULL, &walk);
   for (long i = 0; rc == RUN_OK && i <= samples; i++)
     {
       /* tau_i = duration i/samples, exactly duration at the end */
       double T = i == samples ? duration
         : duration * ((double) i / (double) samples);
-      double S = 0.0;
-      if (in_place)
-        {
-          q[CHAPLYGIN_S] = 0.0;
-          q[CHAPLYGIN_V] = 0.0;
-          q[CHAPLYGIN_OMEGA] = Omega;
-          q[CHAPLYGIN_THETA] = theta + Omega * T;
-        }
-      else if (i > 0)
-        {
-          status = smooth_find_S (&m, T, S_prev, tau_prev, q, vmax, &S, q);
-          if (status != CHAPLYGIN_SUCCESS)
-            {
-              sink_flush_quietly (s);
-              fprintf (stderr, "chaplygin: %s: tau = %.17g: %s\n", path, T,
-                       chaplygin_strerror (status));
-              rc = RUN_FAILED;
-              break;
-            }
-          if (need_path && path_increment (&m, ws, S_prev, S, C) != 0)
-            {
-              sink_flush_quietly (s);
-              rc = RUN_FAILED;
-              break;
-            }
-        }
+      double q[4];
       point p;
       memset (&p, 0, sizeof p);
-      p.tau = T;
-      p.theta = q[CHAPLYGIN_THETA];
-      p.V = q[CHAPLYGIN_V];
-      p.Omega = q[CHAPLYGIN_OMEGA];
-      status = chaplygin_smooth_energy (L, p.V, p.Omega, &p.E);
+      stats->closed_form_evals++;
+      status = chaplygin_smooth_at_time (&m, T, q);
       if (status == CHAPLYGIN_SUCCESS)
-        status = chaplygin_smooth_momentum (L, p.Omega, &p.H);
+        status = chaplygin_smooth_energy (L, q[CHAPLYGIN_V],
+                                          q[CHAPLYGIN_OMEGA], &p.E);
+      if (status == CHAPLYGIN_SUCCESS)
+        status = chaplygin_smooth_momentum (L, q[CHAPLYGIN_OMEGA], &p.H);
+      if (status == CHAPLYGIN_SUCCESS && need_path)
+        {
+          stats->path_quadratures++;
+          status = chaplygin_smooth_path_advance (&m, &walk, T, p.G);
+        }
       if (status != CHAPLYGIN_SUCCESS)
         {
           sink_flush_quietly (s);
@@ -1091,28 +782,22 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
           rc = RUN_FAILED;
           break;
         }
-      if (need_path)
-        {
-          double sn, cs;
-          sincos (p.theta, &sn, &cs);
-          p.path[0] = C[0];
-          p.path[1] = C[1];
-          p.G[0] = C[0] + L * cs;
-          p.G[1] = C[1] + L * sn;
-        }
+      p.tau = T;
+      p.theta = q[CHAPLYGIN_THETA];
+      p.V = q[CHAPLYGIN_V];
+      p.Omega = q[CHAPLYGIN_OMEGA];
+      p.path[0] = walk.C[0];
+      p.path[1] = walk.C[1];
       row_begin (s);
-      row_num (s, S);
+      row_num (s, q[CHAPLYGIN_S]);
       row_num (s, T);
       row_outputs (s, outputs & ~(unsigned) SCENE_OUT_PEG, 1, &p);
       if (row_end (s) != 0)
         rc = RUN_FAILED;
-      S_prev = S;
-      tau_prev = T;
       if (i % PROGRESS_EVERY == 0)
         progress_update (&bar, (double) i);
     }
   progress_finish (&bar);
-  gsl_integration_workspace_free (ws);
   if (rc != RUN_OK)
     return rc;
   return sink_finish (s);

@@ -13,8 +13,10 @@ typedef struct
   unsigned long steps;            /* return-map steps */
   unsigned long heading_evals;    /* heading/time evaluations (elliptic
                                      integrals, quadrature or ODE) */
-  unsigned long closed_form_evals; /* smooth closed-form evaluations */
-  unsigned long path_quadratures; /* quadratures of the smooth path */
+  unsigned long closed_form_evals; /* smooth states evaluated in closed
+                                     form (chaplygin_smooth_at_time) */
+  unsigned long path_quadratures; /* steps of the smooth path by quadrature
+                                     (chaplygin_smooth_path_advance) */
 } run_stats;
 
 /* Run SC (its companion smooth sleigh if compare != 0) and write CSV to

@@ -398,8 +398,12 @@ def _struct_class(ctype):
           % (ctype, ', '.join(name for name, _ in t.fields))}
     for name, field in t.fields:
         ns[name] = _struct_property(name, field.type)
+    # CTYPE_init constructs when the struct is its first parameter
+    # (chaplygin_discrete_init (sys, L0, Delta)); an init returning the
+    # struct last (chaplygin_smooth_motion_init) is an ordinary function
     init = ctype + '_init'
-    if hasattr(_lib, init):
+    if hasattr(_lib, init) and \
+            _ffi.typeof(getattr(_lib, init)).args[0] == _ffi.typeof(ctype + ' *'):
         ns['_init'] = staticmethod(getattr(_lib, init))
         ns['_init_name'] = init
     cls = type(_enum_class_name(ctype), (Struct,), ns)
