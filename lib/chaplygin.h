@@ -435,6 +435,19 @@ int chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
                                        const chaplygin_discrete_state *st,
                                        double q[4]);
 
+/* (B.1) and (B.2) along the segment that starts at the post-collision
+   state st (the discrete analogue of chaplygin_massless_flow): V, Omega and
+   the heading and time increments from the start at slot position D of
+   leg 0 (from the start towards the far end or the turning point) or leg 1
+   (of a reversing segment: from the turning point back to the start end).
+   Any output may be NULL (not computed).  opt may be NULL (default). */
+int chaplygin_discrete_segment_flow (const chaplygin_discrete *sys,
+                                     const chaplygin_discrete_state *st,
+                                     double D, int leg,
+                                     const chaplygin_options *opt, double *V,
+                                     double *Omega, double *dtheta,
+                                     double *dtau);
+
 /* ------------------------------------------------------------------ */
 /* Sections 3.1.1, 3.1.2, 4.1 and (B.14): fixed points and stability   */
 /* ------------------------------------------------------------------ */

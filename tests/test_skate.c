@@ -3,7 +3,9 @@
 
    Route: binary128 (libquadmath): H/(1 + l^2) with l = L0 + D formed
    exactly, and P + D e, P + (L0 + D) e with the exact cosine and sine of
-   theta (cosq, sinq). */
+   theta (cosq, sinq); the samples of a segment (both legs) against
+   40-digit quadrature in D (tests/ref/make_refs.py, ref_segment.h) and
+   the step's own values at the ends of the legs. */
 #include <config.h>
 
 #include <quadmath.h>
@@ -11,6 +13,7 @@
 #include <stdlib.h>
 
 #include "internal.h"
+#include "ref_segment.h"
 #include "testutil.h"
 
 typedef __float128 q128;
@@ -118,11 +121,191 @@ START_TEST (test_positions)
 }
 END_TEST
 
+
+/* The condition number of g(l) = l^2 + 1 - h^2 (so of V^2 and the
+   integrals) over the sample's path: at the start, at D and, for leg 1,
+   at the turning point the whole segment passes (segment_kappa of
+   test_map). */
+static double
+sample_kappa (int i)
+{
+  const double E = ref_segment[i].E, H = ref_segment[i].H;
+  const double om = 1 - H * H / (2 * E), L0 = ref_segment[i].L0;
+  const double ends[3] = { ref_segment[i].dir > 0 ? 0.0 : ref_segment[i].Delta,
+                           ref_segment[i].D,
+                           ref_segment[i].dir > 0 ? ref_segment[i].Delta : 0.0 };
+  double k = 0;
+  for (int e = 0; e < (ref_segment[i].leg ? 3 : 2); e++)
+    {
+      const double l = L0 + ends[e];
+      k = fmax (k, (l * l + fabs (om)) / fabs (l * l + om));
+    }
+  return k;
+}
+
+/* Tolerances, closed form: V 2 eps (g(l) from E, H by error-free
+   arithmetic to ~2 ulps, halved by the square root); Omega 1.5 ulps
+   (chaplygin_discrete_omega); heading and time 8 eps: leg 0 is the map's
+   leg with g at both ends error-free (no condition number: the inputs E,
+   H are exact), leg 1 the segment's less leg 0's (measured: V 0.93, Omega
+   1.0, heading 2.9, time 3.7 eps over the 84 samples).  Quadrature and
+   ODE: the tolerances of test_flow.  The time-scaled route (E below
+   2^-800: (B.2) from the phase state) by the exact scaling V, Omega -> s V,
+   s Omega (E, H -> s^2 E, s H, heading the same, time over s), held to
+   16 eps (1 + kappa) as (B.2) (test_flow). */
+START_TEST (test_segment_flow_reference)
+{
+  const int i = _i;
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, ref_segment[i].L0, ref_segment[i].Delta));
+  const chaplygin_discrete_state st = { ref_segment[i].dir, ref_segment[i].E,
+                                        ref_segment[i].H, 0.0, 0.0, { 0.0, 0.0 } };
+  const double kappa = sample_kappa (i);
+  double V, Om, th, ta;
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ref_segment[i].D,
+                                                 ref_segment[i].leg, NULL, &V, &Om,
+                                                 &th, &ta));
+  ck_assert_rel (V, ref_segment[i].V, 2 * DBL_EPSILON);
+  ck_assert_rel (Om, ref_segment[i].Omega, 1.5 * DBL_EPSILON);
+  ck_assert_rel (th, ref_segment[i].dtheta, 8 * DBL_EPSILON);
+  ck_assert_rel (ta, ref_segment[i].dtau, 8 * DBL_EPSILON);
+  /* slow by 2^-500 */
+  const double s = 0x1p-500;
+  const chaplygin_discrete_state slow = { st.dir, st.E * s * s, st.H * s, 0.0, 0.0,
+                                          { 0.0, 0.0 } };
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &slow, ref_segment[i].D,
+                                                 ref_segment[i].leg, NULL, &V, &Om,
+                                                 &th, &ta));
+  ck_assert_rel (V / s, ref_segment[i].V, 2 * DBL_EPSILON);
+  ck_assert_rel (Om / s, ref_segment[i].Omega, 1.5 * DBL_EPSILON);
+  ck_assert_rel (th, ref_segment[i].dtheta, 16 * DBL_EPSILON * (1 + kappa));
+  ck_assert_rel (ta * s, ref_segment[i].dtau, 16 * DBL_EPSILON * (1 + kappa));
+  /* other methods: the tolerances of test_flow */
+  const chaplygin_options quad = { CHAPLYGIN_QUADRATURE, 1e-14, CHAPLYGIN_PREC_DOUBLE };
+  const chaplygin_options ode = { CHAPLYGIN_ODE, 1e-13, CHAPLYGIN_PREC_DOUBLE };
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ref_segment[i].D,
+                                                 ref_segment[i].leg, &quad, NULL,
+                                                 NULL, &th, &ta));
+  ck_assert_rel (th, ref_segment[i].dtheta, 1e-13 * (1 + kappa));
+  ck_assert_rel (ta, ref_segment[i].dtau, 1e-13 * (1 + kappa));
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ref_segment[i].D,
+                                                 ref_segment[i].leg, &ode, NULL,
+                                                 NULL, &th, &ta));
+  ck_assert_rel (th, ref_segment[i].dtheta, 1e-10 * (1 + kappa));
+  ck_assert_rel (ta, ref_segment[i].dtau, 1e-10 * (1 + kappa));
+}
+END_TEST
+
+/* At the ends of the legs the values are the step's, bit for bit: the
+   far end (no reversal), the turning point (half the segment's heading
+   and time: the motion is symmetric about it) and back at the start;
+   the start itself is the phase state. */
+START_TEST (test_segment_flow_ends)
+{
+  const int i = _i;
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, ref_segment[i].L0, ref_segment[i].Delta));
+  const chaplygin_discrete_state st = { ref_segment[i].dir, ref_segment[i].E,
+                                        ref_segment[i].H, 0.0, 0.0, { 0.0, 0.0 } };
+  chaplygin_discrete_state next;
+  chaplygin_discrete_event ev;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_ALL, NULL, &next, &ev));
+  double q0[4], V, Om, th, ta, Omc;
+  ck_assert_ok (chaplygin_discrete_state_to_phase (&sys, &st, q0));
+  const double D0 = q0[CHAPLYGIN_D];
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, D0, 0, NULL, &V, &Om, &th, &ta));
+  ck_assert (V == q0[CHAPLYGIN_V] && Om == q0[CHAPLYGIN_OMEGA] && th == 0 && ta == 0);
+  if (!ev.reversal)
+    {
+      ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ev.Dminus, 0, NULL, &V,
+                                                     &Om, &th, &ta));
+      ck_assert (V == ev.Vminus && th == ev.dtheta && ta == ev.dtau);
+      ck_assert_ok (chaplygin_discrete_omega (sys.L0, ev.Dminus, st.H, &Omc));
+      ck_assert (Om == Omc);
+      ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, ev.Dminus, 1, NULL,
+                                                         &V, &Om, &th, &ta),
+                        CHAPLYGIN_ESTATE);
+      return;
+    }
+  ck_assert_ok (chaplygin_discrete_omega (sys.L0, ev.Dc, st.H, &Omc));
+  for (int leg = 0; leg < 2; leg++)
+    {
+      ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ev.Dc, leg, NULL, &V, &Om,
+                                                     &th, &ta));
+      ck_assert (V == 0 && Om == Omc && th == 0.5 * ev.dtheta && ta == 0.5 * ev.dtau);
+    }
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, D0, 1, NULL, &V, &Om, &th, &ta));
+  ck_assert (V == ev.Vminus && th == ev.dtheta && ta == ev.dtau);
+  /* within 8 ulps of |L0| + |L0 + D_c| of D_c: D_c itself; beyond: not on
+     the leg */
+  const double tol = 8 * DBL_EPSILON * (fabs (sys.L0) + fabs (sys.L0 + ev.Dc));
+  const double dir = st.dir;
+  ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ev.Dc + 0.5 * dir * tol, 0,
+                                                 NULL, &V, NULL, NULL, NULL));
+  ck_assert (V == 0);
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, ev.Dc + 4 * dir * tol, 0,
+                                                     NULL, &V, NULL, NULL, NULL),
+                    CHAPLYGIN_ESTATE);
+}
+END_TEST
+
+/* Errors: nothing written. */
+START_TEST (test_segment_flow_errors)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, 0.0, 1.0));
+  const chaplygin_discrete_state st = { -1, 1.005, 2.0, 0.0, 0.0, { 0.0, 0.0 } };
+  double V = 7, Om = 7, th = 7, ta = 7;
+  ck_assert_status (chaplygin_discrete_segment_flow (NULL, &st, 0.999, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, NULL, 0.999, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, 0.999, 2, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, NAN, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_EDOM);
+  /* past the turning point (~0.995), behind the start, outside the slot */
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, 0.99, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, 0.99, 1, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, 1.5, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_ESTATE);
+  /* an invalid state (V^2 < 0 at the start), bad options */
+  const chaplygin_discrete_state bad = { -1, 0.5, 2.0, 0.0, 0.0, { 0.0, 0.0 } };
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &bad, 0.999, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_ESTATE);
+  const chaplygin_options o = { CHAPLYGIN_QUADRATURE, -1.0, CHAPLYGIN_PREC_DOUBLE };
+  ck_assert_status (chaplygin_discrete_segment_flow (&sys, &st, 1.0, 0, &o, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_EINVAL);
+  ck_assert (V == 7 && Om == 7 && th == 7 && ta == 7);
+  /* a motion that ends spinning (2E = H^2, reaching l = 0 at D = 0.5):
+     leg 0 short of it, nothing at or beyond it, no leg 1 */
+  chaplygin_discrete spin;
+  ck_assert_ok (chaplygin_discrete_init (&spin, -0.5, 1.0));
+  const chaplygin_discrete_state sp = { 1, 0.5, 1.0, 0.0, 0.0,
+                                        { 0.0, 0.0 } };
+  ck_assert_ok (chaplygin_discrete_segment_flow (&spin, &sp, 0.25, 0, NULL, &V, &Om,
+                                                 &th, &ta));
+  ck_assert (V > 0 && th != 0 && ta > 0);
+  ck_assert_status (chaplygin_discrete_segment_flow (&spin, &sp, 0.75, 0, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_segment_flow (&spin, &sp, 0.25, 1, NULL, &V, &Om,
+                                                     &th, &ta), CHAPLYGIN_ESTATE);
+}
+END_TEST
+
 int
 main (void)
 {
   Suite *s = suite_create ("skate");
   tu_add (s, "discrete_omega", test_omega);
   tu_add (s, "discrete_positions", test_positions);
+  TCase *tc = tcase_create ("discrete_segment_flow");
+  const int n = (int) (sizeof ref_segment / sizeof ref_segment[0]);
+  tcase_add_loop_test (tc, test_segment_flow_reference, 0, n);
+  tcase_add_loop_test (tc, test_segment_flow_ends, 0, n);
+  tcase_add_test (tc, test_segment_flow_errors);
+  suite_add_tcase (s, tc);
   return tu_run (s);
 }

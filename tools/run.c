@@ -461,31 +461,22 @@ skate_run_collisions (const skate *k, const scene *sc, segment_start *cur,
 /* V, Omega and the heading and time increments from the start of the
    segment from START at D on leg LEG (0: the outgoing leg, from the start
    to the far end or the turning point; 1: the return leg of a reversing
-   segment, massless only).  WANT_THETA: compute *dtheta (else left 0).
-   Discrete: (B.1) chaplygin_discrete_flow and (B.2)
-   chaplygin_discrete_heading; massless: chaplygin_massless_flow. */
+   segment).  WANT_THETA: compute *dtheta (else left 0).  The library's
+   chaplygin_discrete_segment_flow or chaplygin_massless_flow: at the ends
+   of the legs the step's own values. */
 static int
 leg_sample (const skate *k, const segment_start *start, int leg, double D,
             int want_theta, double *V, double *Omega, double *dtheta,
             double *dtau)
 {
-  const double D0 = start->D0, V0 = start->V0, Om0 = start->Omega0;
   *dtheta = 0.0;
   k->stats->heading_evals++;
+  double *pth = want_theta ? dtheta : NULL;
   if (k->massless)
-    return chaplygin_massless_flow (k->L0, &start->st, D, leg, V, Omega,
-                                    want_theta ? dtheta : NULL, dtau);
-  double V2, Om;
-  int status = chaplygin_discrete_flow (k->L0, D0, V0, Om0, D, &V2, &Om);
-  if (status != CHAPLYGIN_SUCCESS)
-    return status;
-  status = chaplygin_discrete_heading (k->L0, D0, V0, Om0, D, &k->opt,
-                                       want_theta ? dtheta : NULL, dtau);
-  if (status != CHAPLYGIN_SUCCESS)
-    return status;
-  *V = copysign (sqrt (V2), V0);
-  *Omega = Om;
-  return CHAPLYGIN_SUCCESS;
+    return chaplygin_massless_flow (k->L0, &start->st, D, leg, V, Omega, pth,
+                                    dtau);
+  return chaplygin_discrete_segment_flow (&k->sys, &start->st, D, leg,
+                                          &k->opt, V, Omega, pth, dtau);
 }
 
 /* One dense row: segment N, sample KI, at D with (V, Omega, theta, tau). */
@@ -522,10 +513,8 @@ dense_row (const skate *k, sink *s, const segment_start *start, long n,
 /* Per-sample rows of every segment: for segment n (from just after
    collision n-1 to just before collision n), k = 0 its start, N samples
    equally spaced in D (a reversing segment: floor(N/2) on each leg,
-   mirrored, and the turning point), and its end.  Heading and time along
-   the outgoing leg from the segment start by (B.2); along the return leg
-   by time reversal about the turning point, whose heading and time from
-   the start are half the step's (theta(D) = theta0 + dtheta - out(D)). */
+   mirrored, and the turning point), and its end; each from the library
+   (leg_sample), heading and time from the segment's start. */
 static int
 skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
                  sink *s)
@@ -536,13 +525,6 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
   const long m = N / 2;                 /* per leg of a reversing segment */
   const int want_theta = (k->outputs & SCENE_OUT_THETA) || k->need_positions;
   int status;
-  /* the outgoing leg of a reversing segment, kept for the return leg */
-  double *buf = malloc ((size_t) (m > 0 ? m : 1) * 5 * sizeof (double));
-  if (!buf)
-    {
-      fprintf (stderr, "chaplygin: %s: out of memory\n", k->path);
-      return RUN_FAILED;
-    }
   k->request |= CHAPLYGIN_WANT_TAU;
   if (want_theta)
     k->request |= CHAPLYGIN_WANT_THETA;
@@ -562,10 +544,8 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
     {
       const chaplygin_discrete_state *st = &cur->st;
       const double D0 = cur->D0, theta0 = st->theta, tau0 = st->tau;
-      const int dir = st->dir;
       chaplygin_discrete_state next;
       chaplygin_discrete_event ev;
-      double V, Om, dth, dta;
       long ki = 0;
 
       status = skate_step (k, st, k->request, &next, &ev);
@@ -581,93 +561,28 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
           rc = RUN_FAILED;
           break;
         }
-      if (!ev.reversal)
+      /* the samples: (leg, D) in order along the motion; without reversal
+         N samples and the far end, with one m out, the turning point, m
+         back and the start end */
+      const long count = ev.reversal ? 2 * m + 2 : N + 1;
+      const double Dend = ev.reversal ? ev.Dc : ev.Dminus;
+      for (long j = 1; j <= count && rc == RUN_OK; j++)
         {
-          /* N samples and the far end, from the start by (B.2) */
-          for (long j = 1; j <= N + 1; j++)
-            {
-              double D = k->Delta * (double) (dir > 0 ? j : N + 1 - j)
-                / (double) (N + 1);
-              status = leg_sample (k, cur, 0, D, want_theta, &V, &Om, &dth,
-                                   &dta);
-              if (status != CHAPLYGIN_SUCCESS && j == N + 1)
-                {
-                  /* the far end within rounding of a turning point: the
-                     step's values */
-                  V = ev.Vminus;
-                  status = skate_omega (k, st->H, D, &Om);
-                  dth = ev.dtheta;
-                  dta = ev.dtau;
-                }
-              if (status != CHAPLYGIN_SUCCESS)
-                break;
-              if (dense_row (k, s, cur, n, ki++, 0, D, V, Om, theta0 + dth,
-                             tau0 + dta) != 0)
-                {
-                  rc = RUN_FAILED;
-                  break;
-                }
-            }
-        }
-      else
-        {
-          /* out to the turning point Dc and back: the massless skate's
-             return leg from the library, the discrete skate's mirrored */
-          const double Dc = ev.Dc;
-          for (long j = 1; j <= m && rc == RUN_OK; j++)
-            {
-              double D = D0 + (Dc - D0) * (double) j / (double) (m + 1);
-              double *b = buf + 5 * (j - 1);
-              status = leg_sample (k, cur, 0, D, want_theta, &V, &Om, &dth,
-                                   &dta);
-              if (status != CHAPLYGIN_SUCCESS)
-                break;
-              b[0] = D, b[1] = V, b[2] = Om, b[3] = dth, b[4] = dta;
-              if (dense_row (k, s, cur, n, ki++, 1, D, V, Om, theta0 + dth,
-                             tau0 + dta) != 0)
-                rc = RUN_FAILED;
-            }
-          if (status == CHAPLYGIN_SUCCESS && rc == RUN_OK)
-            {
-              if (k->massless)
-                status = leg_sample (k, cur, 0, Dc, want_theta, &V, &Om,
-                                     &dth, &dta);
-              else
-                {
-                  V = 0.0;
-                  status = skate_omega (k, st->H, Dc, &Om);
-                  dth = 0.5 * ev.dtheta;
-                  dta = 0.5 * ev.dtau;
-                }
-              if (status == CHAPLYGIN_SUCCESS
-                  && dense_row (k, s, cur, n, ki++, 1, Dc, V, Om,
-                                theta0 + dth, tau0 + dta) != 0)
-                rc = RUN_FAILED;
-              for (long j = m; j >= 1 && rc == RUN_OK
-                   && status == CHAPLYGIN_SUCCESS; j--)
-                {
-                  const double *b = buf + 5 * (j - 1);
-                  if (k->massless)
-                    status = leg_sample (k, cur, 1, b[0], want_theta, &V,
-                                         &Om, &dth, &dta);
-                  else
-                    {
-                      V = -b[1];
-                      Om = b[2];
-                      dth = ev.dtheta - b[3];
-                      dta = ev.dtau - b[4];
-                    }
-                  if (status == CHAPLYGIN_SUCCESS
-                      && dense_row (k, s, cur, n, ki++, 1, b[0], V, Om,
-                                    theta0 + dth, tau0 + dta) != 0)
-                    rc = RUN_FAILED;
-                }
-              if (rc == RUN_OK && status == CHAPLYGIN_SUCCESS
-                  && dense_row (k, s, cur, n, ki++, 1, D0, -cur->V0,
-                                cur->Omega0, theta0 + ev.dtheta,
-                                tau0 + ev.dtau) != 0)
-                rc = RUN_FAILED;
-            }
+          const long span = ev.reversal ? m + 1 : N + 1;
+          const int leg = j > span;
+          const long jj = leg ? count - j : j;  /* back along leg 0's D */
+          const double D = jj == span ? Dend : jj == 0 ? D0
+            : ev.reversal ? D0 + (Dend - D0) * (double) jj / (double) span
+            : k->Delta * (double) (st->dir > 0 ? jj : span - jj)
+              / (double) span;
+          double V, Om, dth, dta;
+          status = leg_sample (k, cur, leg, D, want_theta, &V, &Om, &dth,
+                               &dta);
+          if (status != CHAPLYGIN_SUCCESS)
+            break;
+          if (dense_row (k, s, cur, n, ki++, ev.reversal, D, V, Om,
+                         theta0 + dth, tau0 + dta) != 0)
+            rc = RUN_FAILED;
         }
       if (rc != RUN_OK)
         break;
@@ -690,7 +605,6 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
         progress_update (&bar, (double) n);
     }
   progress_finish (&bar);
-  free (buf);
   if (rc != RUN_OK)
     return rc;
   return sink_finish (s);

@@ -4,7 +4,7 @@
 Run from the top of the tree:  python3 tests/ref/make_refs.py
 Needs mpmath (Debian: python3-mpmath).  Writes tests/ref_ellint.h,
 tests/ref_flow.h, tests/ref_map.h, tests/ref_poincare.h, tests/ref_smooth.h,
-tests/ref_stability.h.
+tests/ref_stability.h, tests/ref_segment.h.
 
 Every input is a double, converted to mpmath exactly; every reference is
 computed at 40 significant digits (30 for the smooth sleigh, whose route is
@@ -464,10 +464,81 @@ def stability_cases():
         mp.dps = 40
 
 
+# ------------------------------------------------- segment flow (B.1, B.2)
+def segment_flow_cases():
+    """Samples on both legs of segments: V, Omega from the conservation of
+    E and H, the heading and time from the segment's start by quadrature in
+    D (leg 0: leg_ref's integrands; leg 1: the whole segment by segment_ref
+    less leg 0 to D)."""
+    rnd = random.Random(20261125)
+    segs = [
+        # L0, Delta, dir, V, Omega at the start end
+        (0.0, 1.0, -1, 0.1, 1.0),               # turns at D_c ~ 0.995
+        (1.0, 1.0 / 3, -1, 1.0, 0.5),           # Figure 6 backwards
+        (-1.0, 1.0 / 3, 1, 1.0, 0.5),           # Figure 5, no reversal
+        (-0.5, 1.0, 1, 0.3, 0.8),               # Figure 3 set-up
+        (-0.3, 0.5, 1, 0.05, 2.0),
+        (0.25, 2.0, -1, 0.2, 1.5),
+        (-0.4, 2.0, 1, 1.1, 0.25),              # crosses l = 0
+    ]
+    while len(segs) < 14:
+        segs.append((rnd.uniform(-3, 3), rnd.uniform(0.05, 4),
+                     rnd.choice([1, -1]), rnd.uniform(0.05, 2),
+                     rnd.uniform(-2, 2)))
+    out = []
+    for (L0, Dl, d, V, Om) in segs:
+        L0f, Dlf = float(L0), float(Dl)
+        Dp = 0.0 if d > 0 else Dlf
+        l0 = mpf(L0f) + mpf(Dp)
+        n0 = 1 + l0 ** 2
+        E = float((mpf(V) ** 2 + n0 * mpf(Om) ** 2) / 2)
+        H = float(n0 * mpf(Om))
+        rev, nd, E1, H1, th, ta, root = segment_ref(L0f, Dlf, d, E, H)
+        Em, Hm, L0m = mpf(E), mpf(H), mpf(L0f)
+        V0 = sqrt(2 * Em - Hm ** 2 / n0)
+
+        def leg0(D):
+            """heading and time from Dp to D: leg_ref's integrands with the
+            exact start (V0, Omega0) of (E, H)."""
+            x0, x = mpf(Dp), mpf(D)
+            V2 = lambda y: 2 * Em - Hm ** 2 / (1 + (L0m + y) ** 2)
+            pts = [min(x0, x), max(x0, x)]
+            if pts[0] < -L0m < pts[1]:
+                pts = [pts[0], -L0m, pts[1]]
+            t = quad(lambda y: abs(Hm) / ((1 + (L0m + y) ** 2) * sqrt(V2(y))), pts)
+            u = quad(lambda y: 1 / sqrt(V2(y)), pts)
+            return sign(Hm) * t, u
+
+        Dend = float(root) if rev else Dlf - Dp
+        for frac in (0.1, 0.5, 0.9, 0.999):
+            D = float(Dp + (Dend - Dp) * frac)
+            lD = L0m + mpf(D)
+            V2 = 2 * Em - Hm ** 2 / (1 + lD ** 2)
+            Omg = Hm / (1 + lD ** 2)
+            t0, u0 = leg0(D)
+            out.append((L0f, Dlf, d, E, H, 0, D, d * sqrt(V2), Omg, t0, u0))
+            if rev:
+                out.append((L0f, Dlf, d, E, H, 1, D, -d * sqrt(V2), Omg,
+                            th - t0, ta - u0))
+    with open(OUT + "ref_segment.h", "w") as f:
+        header(f, "ref_segment.h", "samples on both legs of a segment: V, Omega "
+               "from the conservation of E and H, the heading and time by "
+               "tanh-sinh quadrature in D (mpmath, 40 digits) from the start "
+               "(leg 0), or the whole segment (as ref_map.h: turning point by "
+               "root-finding) less that (leg 1)")
+        f.write("static const struct { double L0, Delta; int dir; double E, H; "
+                "int leg; double D, V, Omega, dtheta, dtau; } ref_segment[] = {\n")
+        for r in out:
+            f.write("  { %s, %s, %d, %s, %s, %d, %s, %s, %s, %s, %s },\n" % (
+                c(r[0]), c(r[1]), r[2], c(r[3]), c(r[4]), r[5], c(r[6]),
+                c(r[7]), c(r[8]), c(r[9]), c(r[10])))
+        f.write("};\n")
+
+
 if __name__ == "__main__":
     import sys
     which = sys.argv[1:] or ["ellint", "flow", "map", "poincare", "smooth",
-                             "stability"]
+                             "stability", "segment"]
     mp.dps = 40
     if "ellint" in which:
         ellint_cases()
@@ -481,3 +552,5 @@ if __name__ == "__main__":
         smooth_cases()
     if "stability" in which:
         stability_cases()
+    if "segment" in which:
+        segment_flow_cases()
