@@ -377,6 +377,13 @@ typedef struct
   double theta;   /* heading: the slot axis points along (cos, sin)(theta) */
   double tau;     /* time */
   double peg[2];  /* position of the current peg in the plane */
+  double V;       /* V+ just after the collision if known, else 0: E and
+                     H alone hold V+ only to ~eps sqrt(2E), which a slow
+                     start (V+^2 << (1 + l^2) Omega+^2) needs beside them.
+                     Set by chaplygin_discrete_state_from_phase and by
+                     every step that computes more than E and H; of the
+                     sign of dir and consistent with E and H to their
+                     rounding (else CHAPLYGIN_ESTATE). */
 } chaplygin_discrete_state;
 
 /* What chaplygin_discrete_step computes beyond E, H, dir (always done). */

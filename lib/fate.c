@@ -320,6 +320,7 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
       if (!chp_finite2 (init->E, init->H) || init->E < 0.0)
         return CHAPLYGIN_EDOM;
       CHP_TRY (chp_far_state (&f, init->E, init->H, 0, &si.E, &si.H));
+      si.V = 0.0;                 /* far: E, H scaled alone */
       CHP_TRY (chaplygin_discrete_fate (&f.sys, &si, max_collisions,
                                         reversal_at, reversal_cap, &r));
       r.E_final = chp_far_out (&f, CHP_Q_ENERGY, r.E_final);

@@ -144,9 +144,11 @@ check_state (const chaplygin_discrete *sys, const chaplygin_discrete_state *s)
     return CHAPLYGIN_EINVAL;
   const double zf = ((s->E - s->E) + (s->H - s->H))
     + ((s->theta - s->theta) + (s->tau - s->tau))
-    + ((s->peg[0] - s->peg[0]) + (s->peg[1] - s->peg[1]));
+    + ((s->peg[0] - s->peg[0]) + (s->peg[1] - s->peg[1])) + (s->V - s->V);
   if (!(zf == 0.0))
     return CHAPLYGIN_EDOM;
+  if (s->dir * s->V < 0.0)
+    return CHAPLYGIN_ESTATE;            /* V+ against the direction */
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -318,6 +320,7 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   CHP_TRY (chp_far_state (&f, in->E, in->H, 1, &si.E, &si.H));
   si.tau = 0.0;
   si.theta = 0.0;
+  si.V = 0.0;                   /* far: from the scaled E, H alone */
   unsigned req = request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
   if (request & CHAPLYGIN_WANT_PEG)
     req |= CHAPLYGIN_WANT_THETA;
@@ -340,6 +343,7 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
     move_peg (in->peg, Dminus != 0.0 ? sys->Delta : -sys->Delta, theta1,
               r.peg);
   const double Vminus = chp_far_out (&f, CHP_Q_SPEED, se.Vminus);
+  r.V = so.V != 0.0 ? Vminus : 0.0;
   const double Dc = se.reversal ? chp_far_out (&f, CHP_Q_LENGTH, se.Dc) : 0.0;
   if (!chp_finite4 (r.E, r.H, r.theta, r.tau)
       || !chp_finite4 (r.peg[0], r.peg[1], dtau, Dc))
@@ -369,8 +373,16 @@ typedef struct
   chp_segment seg;
   chp_motion m;
   double g0, g1;        /* g = (1 + l^2) V^2/(2E) at the two ends */
-  const double *g0_phase;       /* g0 from V+ itself (poincare), or NULL */
-  int have_g1;                  /* g1 formed (step_g1: only where needed) */
+  int g0_phase;         /* g0 from V+ itself (poincare), not from E, H */
+  int have_g1;          /* g1 formed (step_g1: only where needed) */
+  /* The motion's own g at the ends, for the integrals and V-: g0 and g1,
+     or from the state's V+ where it is known (v_known: in->V != 0), which
+     keeps the digits E and H lose in a slow start.  The (E, H) update and
+     the classification use g0, g1 alone: E and H never depend on whether
+     V+ is known. */
+  int v_known;          /* also for poincare: its g0 is from V+ */
+  double gv0, gv1;
+  int have_gv1;
   int fast;             /* E1, H1 (and reversal) from eh_fast */
   int reversal;
   int iminus;           /* the end the peg leaves: 0 front, 1 rear */
@@ -397,8 +409,25 @@ step_begin (step_work *w, const chaplygin_discrete *sys,
     : request;
   w->fast = 0;
   w->have_g1 = 0;
+  w->have_gv1 = 0;
+  w->v_known = 0;
   w->E1 = w->H1 = w->Vminus = w->dtheta = w->dtau = 0.0;
   return CHAPLYGIN_SUCCESS;
+}
+
+/* g at the far end from g at the start of a phase state: g0 + (l1 -
+   l0)(l1 + l0), l1 - l0 = dir Delta exactly, unless that cancels worse
+   than E and H (rounded from the phase state) are conditioned there; then
+   from E and H by error-free arithmetic. */
+static double
+g_far_from_start (const step_work *w, double g0)
+{
+  const chaplygin_discrete *sys = w->sys;
+  const chp_segment *seg = &w->seg;
+  const double delta = w->in->dir * sys->Delta * (2.0 * sys->L0 + sys->Delta);
+  return g0 + fabs (delta)
+    <= chp_one_plus_sq (seg->l1) + fabs (1.0 - w->m.one_minus_h2)
+    ? g0 + delta : chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
 }
 
 /* g at the far end, formed once when first needed: from (E, H) by
@@ -411,17 +440,52 @@ step_g1 (step_work *w)
 {
   if (!w->have_g1)
     {
-      const chaplygin_discrete *sys = w->sys;
       const chp_segment *seg = &w->seg;
-      const double delta = w->in->dir * sys->Delta
-        * (2.0 * sys->L0 + sys->Delta);
-      w->g1 = (w->g0_phase && w->g0 + fabs (delta)
-               <= chp_one_plus_sq (seg->l1) + fabs (1.0 - w->m.one_minus_h2))
-        ? w->g0 + delta
+      w->g1 = w->g0_phase ? g_far_from_start (w, w->g0)
         : chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
       w->have_g1 = 1;
     }
   return &w->g1;
+}
+
+/* The motion's g at the far end (see step_work), formed once. */
+static const double *
+step_gv1 (step_work *w)
+{
+  if (!w->v_known)
+    return step_g1 (w);
+  if (!w->have_gv1)
+    {
+      w->gv1 = g_far_from_start (w, w->gv0);
+      w->have_gv1 = 1;
+    }
+  return &w->gv1;
+}
+
+/* The scale of the terms of g(l) = l^2 + 1 - h^2 from E and H: the
+   rounding of E and H moves g by a few ulps of it. */
+static double
+g_scale (const step_work *w, double l)
+{
+  return chp_one_plus_sq (l) + fabs (1.0 - w->m.one_minus_h2);
+}
+
+/* g at the start from the state's V+: (1 + l0^2) V+^2/(2E), with V+'s
+   own digits.  CHAPLYGIN_ESTATE where it is not this state's V+: it
+   differs from g from E and H by more than 2^-20 of g_scale (E, H and V+
+   carried along a run agree to a few ulps a collision, so far below that
+   after any run; a V+ left from another state does not).  It may
+   underflow to 0 (V+ below ~1e-154 sqrt(2E)): a start at rest along the
+   slot to within 2^-1000. */
+static int
+step_g0_from_V (const step_work *w, double *gv0)
+{
+  const double V = w->in->V, l0 = w->seg.l0, n0 = chp_one_plus_sq (l0);
+  const double gv = n0 * (V * (V / (2.0 * w->in->E)));
+  if (!(fabs (gv - w->g0) <= 0x1p-20 * g_scale (w, l0)))
+    return CHAPLYGIN_ESTATE;
+  *gv0 = gv;
+  return CHAPLYGIN_SUCCESS;
 }
 
 /* Phase 3: the motion and its exact classification.  g0_phase, if not
@@ -441,9 +505,15 @@ step_classify (step_work *w, const double *g0_phase)
      them even when V+ is small beside Omega+, or as given from V+ */
   w->g0 = g0_phase ? *g0_phase
     : chp_motion_g_exact (&w->m, seg->l0, seg->l0_err);
-  if (!(w->g0 > 0.0))
+  w->g0_phase = g0_phase != NULL;
+  w->gv0 = w->g0;
+  w->v_known = g0_phase != NULL || w->in->V != 0.0;
+  if (!g0_phase && w->in->V != 0.0)
+    CHP_TRY (step_g0_from_V (w, &w->gv0));
+  /* a motion: V+^2 > 0 (E and H may hold a slow V+ as 0 or below: a
+     known V+ decides, and may underflow g) */
+  if (!(w->gv0 > 0.0) && !(w->v_known && w->gv0 == 0.0))
     return CHAPLYGIN_ESTATE;
-  w->g0_phase = g0_phase;
   /* g at the far end matters to the classification only for a motion
      towards l = 0 with turning points that does not cross it */
   const double *g_far = NULL;
@@ -457,17 +527,33 @@ step_classify (step_work *w, const double *g0_phase)
   return CHAPLYGIN_SUCCESS;
 }
 
+/* A reversal within a hair of the start (the known V+ so slow that g0 <=
+   2^-100 l0^2, down to V+ = DBL_MIN where g0 underflows): the motion to
+   the turning point is uniformly decelerated to relative O(g0/l0^2),
+   below 2^-100: with V^2 = (2E/n0)(g0 - 2 |l0| s) to that order, s =
+   |l0| - |l| (n0 = 1 + l0^2), the time out and back is
+   2 sqrt(n0/(2E)) sqrt(g0)/|l0| = n0 |V+|/(E |l0|) and the heading
+   Omega+ times it, Omega+ = H/n0. */
+static int
+step_turn_at_start (step_work *w)
+{
+  const double l0 = fabs (w->seg.l0), E = w->in->E;
+  const double n0 = chp_one_plus_sq (l0), V = fabs (w->in->V);
+  w->dtau = n0 * (V / (E * l0));
+  w->dtheta = w->in->H * (V / (E * l0));
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* Phase 4, closed form and quadrature: the (E, H) update of (3.7) (unless
    eh_fast made it), V- for the event, and the heading and time of the
    legs by chp_leg. */
 static int
-step_by_integrals (step_work *w, int want_event)
+step_by_integrals (step_work *w)
 {
   const chaplygin_discrete *sys = w->sys;
   const chaplygin_discrete_state *in = w->in;
   const chp_segment *seg = &w->seg;
-  const double gm = w->reversal ? w->g0
-    : (!w->fast || want_event) ? *step_g1 (w) : 0.0;
+  const double gm = w->reversal ? w->g0 : *step_g1 (w);
   const double lm = w->reversal ? seg->l0 : seg->l1;
   if (!w->fast)
     {
@@ -484,11 +570,16 @@ step_by_integrals (step_work *w, int want_event)
       if (gm <= 0x1p-40 * chp_one_plus_sq (lm))
         w->E1 = valid_energy (sys, 1 - w->iminus, w->E1, w->H1);
     }
-  /* V- = +-sqrt(2E g/(1 + l^2)), with the sign of the new direction (only
-     the event reports it) */
-  if (want_event)
-    w->Vminus = (w->reversal ? -in->dir : in->dir)
-      * sqrt (2.0 * in->E * (gm / chp_one_plus_sq (lm)));
+  /* V- = +-sqrt(2E g/(1 + l^2)) from the motion's g, with the sign of the
+     new direction; a reversal returns with -V+ exactly where V+ is known */
+  if (w->reversal && w->v_known)
+    w->Vminus = -in->V;
+  else
+    {
+      const double gvm = w->reversal ? w->gv0 : *step_gv1 (w);
+      w->Vminus = (w->reversal ? -in->dir : in->dir)
+        * sqrt (2.0 * in->E * (gvm / chp_one_plus_sq (lm)));
+    }
   const int want_theta = (w->request & CHAPLYGIN_WANT_THETA) != 0;
   const int want_tau = (w->request & CHAPLYGIN_WANT_TAU) != 0;
   if (!want_theta && !want_tau)
@@ -498,15 +589,17 @@ step_by_integrals (step_work *w, int want_event)
   if (!w->reversal)
     {
       /* g at the ends matters to the legs only with turning points */
-      const double g1 = w->m.one_minus_h2 < 0.0 ? *step_g1 (w) : 0.0;
-      return chp_leg (&w->m, seg->l0, w->g0, seg->l1, g1, sys->Delta, &w->o,
+      const double g1 = w->m.one_minus_h2 < 0.0 ? *step_gv1 (w) : 0.0;
+      return chp_leg (&w->m, seg->l0, w->gv0, seg->l1, g1, sys->Delta, &w->o,
                       pth, pta);
     }
+  if (w->v_known && w->gv0 <= 0x1p-100 * seg->l0 * seg->l0)
+    return step_turn_at_start (w);
   /* Out to the turning point and back: twice one leg.  |l0| - c =
      g0/(|l0| + c) without cancellation. */
   const double c = w->m.sqrt_q, lc = copysign (c, seg->l0);
-  const double dl = w->g0 / (fabs (seg->l0) + c);
-  CHP_TRY (chp_leg (&w->m, seg->l0, w->g0, lc, 0.0, dl, &w->o, pth, pta));
+  const double dl = w->gv0 / (fabs (seg->l0) + c);
+  CHP_TRY (chp_leg (&w->m, seg->l0, w->gv0, lc, 0.0, dl, &w->o, pth, pta));
   w->dtheta *= 2.0;
   w->dtau *= 2.0;
   return CHAPLYGIN_SUCCESS;
@@ -520,7 +613,7 @@ static int
 step_by_ode (step_work *w)
 {
   int iminus;
-  CHP_TRY (step_ode (w->sys, w->in, &w->m, w->seg.l0, w->g0, w->o.tol,
+  CHP_TRY (step_ode (w->sys, w->in, &w->m, w->seg.l0, w->gv0, w->o.tol,
                      &iminus, &w->Vminus, &w->E1, &w->H1, &w->dtheta,
                      &w->dtau));
   if ((iminus == w->seg.start) != w->reversal)
@@ -534,7 +627,7 @@ step_by_ode (step_work *w)
    reversal, the opposite with one (by the classification, not by the sign
    of a computed V-, which may be 0). */
 static int
-step_finish (const step_work *w, chaplygin_discrete_state *out,
+step_finish (step_work *w, chaplygin_discrete_state *out,
              chaplygin_discrete_event *ev)
 {
   const chaplygin_discrete_state *in = w->in;
@@ -547,6 +640,14 @@ step_finish (const step_work *w, chaplygin_discrete_state *out,
   r.dir = w->reversal ? -in->dir : in->dir;
   r.E = w->E1;
   r.H = w->H1;
+  /* V+' = V- ((3.6) keeps V), carried while E' and H' would not hold it:
+     g at the collision from E and H below a quarter of its scale (then
+     their roundings cost V-^2 more than 4 ulps); dropped otherwise, so
+     that carried and (E, H) values cannot drift apart over a run, and the
+     next step may take the (E, H) fast path */
+  const double lm = w->reversal ? w->seg.l0 : w->seg.l1;
+  const double gm = w->reversal ? w->g0 : *step_g1 (w);
+  r.V = w->v_known && gm < 0.25 * g_scale (w, lm) ? w->Vminus : 0.0;
   if (w->request & CHAPLYGIN_WANT_THETA)
     r.theta = theta1;
   if (w->request & CHAPLYGIN_WANT_TAU)
@@ -591,12 +692,13 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   int fast_reversal = 0;
   w.fast = w.o.method != CHAPLYGIN_ODE
     && eh_fast (sys, in, in->dir > 0 ? 0 : 1, &w.E1, &w.H1, &fast_reversal);
-  if (w.fast && w.request == 0 && !ev)
+  if (w.fast && w.request == 0 && !ev && in->V == 0.0)
     {
       *out = *in;
       out->dir = fast_reversal ? -in->dir : in->dir;
       out->E = w.E1;
       out->H = w.H1;
+      out->V = 0.0;             /* not formed: E and H alone */
       return CHAPLYGIN_SUCCESS;
     }
   chp_segment_init (sys, in->dir, &w.seg);
@@ -604,7 +706,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (w.o.method == CHAPLYGIN_ODE)
     CHP_TRY (step_by_ode (&w));
   else
-    CHP_TRY (step_by_integrals (&w, ev != NULL));
+    CHP_TRY (step_by_integrals (&w));
   return step_finish (&w, out, ev);
 }
 
@@ -658,7 +760,7 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
   /* E and H only, default options, the common case: the same validation
      and eh_fast as step_core, without its frame (a third of the cost of
      such a step); anything else goes through step_core */
-  if (request == 0 && !ev && !opt && sys && in && out
+  if (request == 0 && !ev && !opt && sys && in && out && in->V == 0.0
       && check_state (sys, in) == CHAPLYGIN_SUCCESS)
     {
       const int start = in->dir > 0 ? 0 : 1;
@@ -672,6 +774,7 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
           r.dir = rev ? -in->dir : in->dir;
           r.E = E1;
           r.H = H1;
+          r.V = 0.0;
           *out = r;
           return CHAPLYGIN_SUCCESS;
         }
@@ -705,11 +808,13 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
       double E1, H1;
       int rev;
       /* eh_fast's outputs are finite: the state stays valid for it */
-      if (in_cap && eh_fast (sys, &s, s.dir > 0 ? 0 : 1, &E1, &H1, &rev))
+      if (in_cap && s.V == 0.0
+          && eh_fast (sys, &s, s.dir > 0 ? 0 : 1, &E1, &H1, &rev))
         {
           s.dir = rev ? -s.dir : s.dir;
           s.E = E1;
           s.H = H1;
+          s.V = 0.0;
         }
       else
         status = step_core (sys, &s, NULL, 0, NULL, &s, NULL);
@@ -722,7 +827,7 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
 }
 
 /* chaplygin_discrete_state_from_phase: {D+, V+, theta+, Omega+} -> map
-   state: dir = sgn V+, E by (3.3), H by (3.4).  D+ must be 0 for V+ > 0
+   state: dir = sgn V+, E by (3.3), H by (3.4), and V+ itself.  D+ must be 0 for V+ > 0
    and Delta for V+ < 0 exactly.  Errors: CHAPLYGIN_EINVAL (NULL),
    CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (V+ = 0 or D+ not the matching end). */
 int
@@ -749,12 +854,14 @@ chaplygin_discrete_state_from_phase (const chaplygin_discrete *sys,
   s.tau = tau;
   s.peg[0] = peg ? peg[0] : 0.0;
   s.peg[1] = peg ? peg[1] : 0.0;
+  s.V = V;
   *st = s;
   return CHAPLYGIN_SUCCESS;
 }
 
 /* chaplygin_discrete_state_to_phase: the inverse: D+ from dir,
-   Omega = H/(1 + l^2), V = dir sqrt(2E - H Omega).  Errors: as
+   Omega = H/(1 + l^2), V = dir sqrt(2E - H Omega), or the state's own V+
+   where it is known.  Errors: as
    chaplygin_discrete_step's validation; CHAPLYGIN_ESTATE if V^2 <= 0. */
 int
 chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
@@ -774,21 +881,79 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
       double qs[4];
       CHP_TRY (chp_far_open_sys (sys, &f));
       CHP_TRY (chp_far_state (&f, st->E, st->H, 1, &si.E, &si.H));
+      si.V = 0.0;
       CHP_TRY (chaplygin_discrete_state_to_phase (&f.sys, &si, qs));
       q[CHAPLYGIN_D] = D;
-      q[CHAPLYGIN_V] = chp_far_out (&f, CHP_Q_SPEED, qs[CHAPLYGIN_V]);
+      q[CHAPLYGIN_V] = st->V != 0.0 ? st->V
+        : chp_far_out (&f, CHP_Q_SPEED, qs[CHAPLYGIN_V]);
       q[CHAPLYGIN_THETA] = st->theta;
       q[CHAPLYGIN_OMEGA] = chp_far_out (&f, CHP_Q_RATE, qs[CHAPLYGIN_OMEGA]);
       return CHAPLYGIN_SUCCESS;
     }
   double Om = st->H / chp_one_plus_sq (l);
   double v2 = 2.0 * st->E - st->H * Om;
-  if (!(v2 > 0.0))
+  if (!(v2 > 0.0) && st->V == 0.0)
     return CHAPLYGIN_ESTATE;
   q[CHAPLYGIN_D] = D;
-  q[CHAPLYGIN_V] = st->dir * sqrt (v2);
+  q[CHAPLYGIN_V] = st->V != 0.0 ? st->V : st->dir * sqrt (v2);
   q[CHAPLYGIN_THETA] = st->theta;
   q[CHAPLYGIN_OMEGA] = Om;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* Whether the speed of a phase state at l0, sp = max(|V|, sqrt(1 + l0^2)
+   |Omega|), is so large or small that E or H would overflow or underflow
+   (sp max(1, |l0|) > 2^450 or sp < 2^-400; the bounds of
+   chaplygin_discrete_heading's time-scaling). */
+static int
+speed_needs_scaling (double l0, double V, double Omega)
+{
+  const double sp = fmax (fabs (V), hypot (1.0, l0) * fabs (Omega));
+  /* once scaled, sp is in [1, 2): never a second time */
+  return sp > 0.0 && isfinite (sp) && ilogb (sp) != 0
+    && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400);
+}
+
+/* chaplygin_discrete_poincare of an exactly scaled problem (lib/far.c):
+   a far slot (FAR: D times 2^-k, V times 2^m, Omega times 2^(k+m)) or,
+   within the cap, the time-scaling alone (V, Omega times 2^m, chp_far_speed:
+   the motion is homogeneous in velocity); theta unchanged, the time times
+   2^-(k+m).  CHAPLYGIN_ERANGE where the scaled time is not a normal double
+   or a result leaves the doubles. */
+static int
+poincare_scaled (const chaplygin_discrete *sys, int far, const double qplus[4],
+                 const chaplygin_options *opt, double qnext[4], double *dtau)
+{
+  const double V = qplus[CHAPLYGIN_V], D = qplus[CHAPLYGIN_D];
+  if (V == 0.0 || (V > 0.0 && D != 0.0) || (V < 0.0 && D != sys->Delta))
+    return CHAPLYGIN_ESTATE;            /* as state_from_phase */
+  chp_far f;
+  double qs[4], qn[4], dts = 0.0, dt = 0.0;
+  CHP_TRY (chp_far_open_sys (sys, &f));
+  const double l0 = sys->L0 + D;
+  if (far)
+    CHP_TRY (chp_far_phase (&f, l0, qplus[CHAPLYGIN_V], qplus[CHAPLYGIN_OMEGA],
+                            &qs[CHAPLYGIN_V], &qs[CHAPLYGIN_OMEGA]));
+  else
+    CHP_TRY (chp_far_speed (&f, l0, qplus[CHAPLYGIN_V], qplus[CHAPLYGIN_OMEGA],
+                            &qs[CHAPLYGIN_V], &qs[CHAPLYGIN_OMEGA]));
+  const chaplygin_discrete *ss = far ? &f.sys : sys;
+  qs[CHAPLYGIN_D] = qplus[CHAPLYGIN_D] == 0.0 ? 0.0 : ss->Delta;
+  qs[CHAPLYGIN_THETA] = qplus[CHAPLYGIN_THETA];
+  CHP_TRY (chaplygin_discrete_poincare (ss, qs, opt, qn, dtau ? &dts : NULL));
+  if (dtau && !(dts >= DBL_MIN))
+    return CHAPLYGIN_ERANGE;
+  const double om = chp_far_out (&f, CHP_Q_RATE, qn[CHAPLYGIN_OMEGA]);
+  const double v = chp_far_out (&f, CHP_Q_SPEED, qn[CHAPLYGIN_V]);
+  if (!chp_far_out_exact (&f, CHP_Q_TIME, dts, &dt) || !isfinite (om)
+      || !isfinite (v) || (v == 0.0) != (qn[CHAPLYGIN_V] == 0.0))
+    return CHAPLYGIN_ERANGE;
+  qnext[CHAPLYGIN_D] = qn[CHAPLYGIN_D] == 0.0 ? 0.0 : sys->Delta;
+  qnext[CHAPLYGIN_V] = v;
+  qnext[CHAPLYGIN_THETA] = qn[CHAPLYGIN_THETA];
+  qnext[CHAPLYGIN_OMEGA] = om;
+  if (dtau)
+    *dtau = dt;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -809,40 +974,16 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
 {
   if (!sys || !qplus || !qnext)
     return CHAPLYGIN_EINVAL;
+  if (!chp_finite4 (qplus[0], qplus[1], qplus[2], qplus[3]))
+    return CHAPLYGIN_EDOM;
+  const int far = fabs (sys->l_end[0]) > CHP_L_MAX
+    || fabs (sys->l_end[1]) > CHP_L_MAX;
+  if (far || speed_needs_scaling (sys->L0 + qplus[CHAPLYGIN_D],
+                                  qplus[CHAPLYGIN_V], qplus[CHAPLYGIN_OMEGA]))
+    return poincare_scaled (sys, far, qplus, opt, qnext, dtau);
   chaplygin_discrete_state st;
   chaplygin_discrete_event ev;
   CHP_TRY (chaplygin_discrete_state_from_phase (sys, qplus, 0.0, NULL, &st));
-  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
-    {
-      /* far (lib/far.c): the map of the exactly scaled system, D times
-         2^-k, V times 2^m, Omega times 2^(k+m), theta unchanged, the
-         time times 2^-(k+m); CHAPLYGIN_ERANGE where the scaled time is
-         not a normal double */
-      chp_far f;
-      double qs[4], qn[4], dts = 0.0, dt = 0.0;
-      CHP_TRY (chp_far_open_sys (sys, &f));
-      const double l0 = sys->L0 + qplus[CHAPLYGIN_D];
-      CHP_TRY (chp_far_phase (&f, l0, qplus[CHAPLYGIN_V],
-                              qplus[CHAPLYGIN_OMEGA], &qs[CHAPLYGIN_V],
-                              &qs[CHAPLYGIN_OMEGA]));
-      qs[CHAPLYGIN_D] = qplus[CHAPLYGIN_D] == 0.0 ? 0.0 : f.sys.Delta;
-      qs[CHAPLYGIN_THETA] = qplus[CHAPLYGIN_THETA];
-      CHP_TRY (chaplygin_discrete_poincare (&f.sys, qs, opt, qn,
-                                            dtau ? &dts : NULL));
-      if (dtau && !(dts >= DBL_MIN))
-        return CHAPLYGIN_ERANGE;
-      double om = chp_far_out (&f, CHP_Q_RATE, qn[CHAPLYGIN_OMEGA]);
-      double v = chp_far_out (&f, CHP_Q_SPEED, qn[CHAPLYGIN_V]);
-      if (!chp_far_out_exact (&f, CHP_Q_TIME, dts, &dt))
-        return CHAPLYGIN_ERANGE;
-      qnext[CHAPLYGIN_D] = qn[CHAPLYGIN_D] == 0.0 ? 0.0 : sys->Delta;
-      qnext[CHAPLYGIN_V] = v;
-      qnext[CHAPLYGIN_THETA] = qn[CHAPLYGIN_THETA];
-      qnext[CHAPLYGIN_OMEGA] = om;
-      if (dtau)
-        *dtau = dt;
-      return CHAPLYGIN_SUCCESS;
-    }
   unsigned req = CHAPLYGIN_WANT_THETA | (dtau ? CHAPLYGIN_WANT_TAU : 0u);
   /* g(l0) from V+ itself: (1 + l0^2) V+^2/(2E) */
   double l0 = sys->L0 + qplus[CHAPLYGIN_D], V = qplus[CHAPLYGIN_V];
@@ -858,9 +999,12 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
                           qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2, &Om));
   if (V2 < 0.0)
     V2 = 0.0;
+  /* a reversal returns with -V+ exactly (the motion is symmetric about
+     the turning point; (B.1) would underflow V+^2 for |V+| < 1e-154) */
   double qminus[4]
       = { ev.Dminus,
-          (ev.reversal ? -1 : 1) * copysign (sqrt (V2), qplus[CHAPLYGIN_V]),
+          ev.reversal ? -qplus[CHAPLYGIN_V]
+                      : copysign (sqrt (V2), qplus[CHAPLYGIN_V]),
           qplus[CHAPLYGIN_THETA] + ev.dtheta, Om };
   /* h: (3.6). */
   double q[4];

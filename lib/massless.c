@@ -187,10 +187,28 @@ struct segment
   double w0, w1;        /* w at the start and the far end (w1 = 0 when
                            the far end is beyond a turning point) */
   double g0, g1;        /* w0^2, w1^2 (g1 < 0 beyond a turning point) */
+  int v_known;          /* w0 from the state's V+ (known_w0) */
   double Phi;           /* |dtheta| */
   double dPhi;          /* dPhi/dp */
   double dist;          /* the distance G travels */
 };
+
+/* w0 from the state's known V+ (V+ = dir s w0/|l0|): w0 = |l0| |V+|/s
+   with V+'s own digits, where w0^2 = l0^2 - p^2 from E and H cancels in
+   a slow start.  CHAPLYGIN_ESTATE where it is not this state's V+: (V+/s)^2
+   + (p/l0)^2 differs from 1 by more than 2^-20 (a V+ carried along a run
+   agrees to a few ulps a collision).  w0^2 may underflow to 0. */
+static int
+known_w0 (double V, struct segment *sg)
+{
+  const double a = fabs (V) / sg->s, b = sg->p / fabs (sg->l0);
+  if (!(fabs (fma (a, a, b * b) - 1.0) <= 0x1p-20))
+    return CHAPLYGIN_ESTATE;
+  sg->w0 = fabs (sg->l0) * a;
+  sg->g0 = sg->w0 * sg->w0;
+  sg->v_known = 1;
+  return CHAPLYGIN_SUCCESS;
+}
 
 /* Validate L0 and a state and classify its segment (E, H only: the
    heading and time need massless_geometry).
@@ -212,8 +230,11 @@ massless_segment (double L0, const chaplygin_discrete_state *in,
   if (in->dir != 1 && in->dir != -1)
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (in->E, in->H, in->theta, in->tau)
-      || !chp_finite2 (in->peg[0], in->peg[1]) || in->E < 0.0)
+      || !chp_finite2 (in->peg[0], in->peg[1]) || !isfinite (in->V)
+      || in->E < 0.0)
     return CHAPLYGIN_EDOM;
+  if (in->dir * in->V < 0.0)
+    return CHAPLYGIN_ESTATE;            /* V+ against the direction */
   /* rho = 0 has no 1 + l^2: the geometry below neither overflows nor
      underflows prematurely for any |L0| with 2 L0 + 1 finite */
   if (fabs (L0) > CHP_MASSLESS_L_MAX)
@@ -226,6 +247,7 @@ massless_segment (double L0, const chaplygin_discrete_state *in,
   l_err[0] = 0.0;
   chp_two_sum (L0, 1.0, &l_end[1], &l_err[1]);
   sg->start = in->dir > 0 ? 0 : 1;
+  sg->v_known = 0;
   const int far = 1 - sg->start;
   sg->l0 = l_end[sg->start];
   sg->l1 = l_end[far];
@@ -233,7 +255,9 @@ massless_segment (double L0, const chaplygin_discrete_state *in,
   sg->p = fabs (H) / sg->s;
   int sign0 = w_of_l (E, H, sg->l0, l_err[sg->start], &sg->g0, &sg->w0);
   int sign1 = w_of_l (E, H, sg->l1, l_err[far], &sg->g1, &sg->w1);
-  if (H != 0.0 && sign0 <= 0)
+  if (in->V != 0.0 && H != 0.0)
+    CHP_TRY (known_w0 (in->V, sg));
+  else if (H != 0.0 && sign0 <= 0)
     return CHAPLYGIN_ESTATE;            /* V+ = 0, or |l0| < p */
   const int approaching = in->dir * sg->l0 < 0.0;
   sg->straight = H == 0.0;
@@ -400,11 +424,15 @@ chaplygin_massless_step (double L0, const chaplygin_discrete_state *in,
   /* H = 0 needs no ratio (and has none when l- = 0: G at the end left) */
   const double H1 = in->H == 0.0 ? 0.0 : in->H * (sg.lp / sg.lm);
   const double wm = sg.reversal ? sg.w0 : sg.w1;
-  const double Vminus = sg.dir1 * (in->H == 0.0 ? sg.s
-                                   : sg.s * (wm / fabs (sg.lm)));
+  const double Vminus = sg.reversal && sg.v_known ? -in->V
+    : sg.dir1 * (in->H == 0.0 ? sg.s : sg.s * (wm / fabs (sg.lm)));
   chaplygin_discrete_state r = *in;
   r.dir = sg.dir1;
   r.H = H1;
+  /* V+' = V-, carried while E and H' would not hold it (w- below half
+     |l-|: their roundings cost V-^2 more than 4 ulps), as
+     chaplygin_discrete_step does */
+  r.V = sg.v_known && in->H != 0.0 && wm < 0.5 * fabs (sg.lm) ? Vminus : 0.0;
   if (request & CHAPLYGIN_WANT_THETA)
     r.theta = in->theta + dtheta;
   if (request & CHAPLYGIN_WANT_TAU)
@@ -468,6 +496,7 @@ chaplygin_massless_state_from_phase (double L0, const double q[4],
   s.tau = tau;
   s.peg[0] = peg ? peg[0] : 0.0;
   s.peg[1] = peg ? peg[1] : 0.0;
+  s.V = V;
   *st = s;
   return CHAPLYGIN_SUCCESS;
 }
@@ -492,7 +521,8 @@ chaplygin_massless_state_to_phase (double L0,
   CHP_TRY (status);
   double l0 = sg.l0;
   double Om = st->H == 0.0 ? 0.0 : (st->H / l0) / l0;
-  double V = st->dir * (st->H == 0.0 ? sg.s : sg.s * (sg.w0 / fabs (l0)));
+  double V = st->V != 0.0 ? st->V
+    : st->dir * (st->H == 0.0 ? sg.s : sg.s * (sg.w0 / fabs (l0)));
   if (!isfinite (Om) || !isfinite (V))
     return CHAPLYGIN_ERANGE;
   q[CHAPLYGIN_D] = sg.start ? 1.0 : 0.0;
@@ -767,6 +797,9 @@ chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
       const double w0 = sg.w0, p = sg.p;
       /* V = 0 (not -0) at the turning point */
       v = w == 0.0 ? 0.0 : (leg ? -st->dir : st->dir) * (s * (w / fabs (lh)));
+      if (sg.v_known && D == D0)
+        v = leg ? -st->V : st->V;       /* the state's own V+ (and -V+:
+                                           the step's V- of a reversal) */
       if (w == 0.0)
         {
           dth = atan2 (w0, p);

@@ -230,6 +230,7 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
       if (!chp_finite2 (st->E, st->H) || st->E < 0.0)
         return CHAPLYGIN_EDOM;
       CHP_TRY (chp_far_state (&f, st->E, st->H, 1, &si.E, &si.H));
+      si.V = 0.0;                 /* far: E, H scaled alone */
       CHP_TRY (chaplygin_discrete_jacobian (&f.sys, &si, Js));
       Js[7] = chp_far_out (&f, CHP_Q_DENERGY_DMOMENTUM, Js[7]);
       Js[9] = chp_far_out (&f, CHP_Q_DHEADING_DENERGY, Js[9]);
@@ -333,6 +334,7 @@ chaplygin_discrete_fixed_point (const chaplygin_discrete *sys, double Vstar,
   s.tau = tau;
   s.peg[0] = peg ? peg[0] : 0.0;
   s.peg[1] = peg ? peg[1] : 0.0;
+  s.V = Vstar;
   *st = s;
   if (tau_star)
     *tau_star = ts;

@@ -226,6 +226,7 @@ make_state (int dir, double E, double H, double theta, double tau, double p0, do
   s.tau = tau;
   s.peg[0] = p0;
   s.peg[1] = p1;
+  s.V = 0.0;
   return s;
 }
 
@@ -699,17 +700,26 @@ START_TEST (test_invariants)
       ck_assert_rel (q2[1], q[1], 4 * DBL_EPSILON * kV);
       ck_assert_rel (q2[3], q[3], 4 * DBL_EPSILON);
     }
-  /* V+ small beside l Omega: (E, H) hold V+ only to absolute precision
-     ~eps sqrt(2E) (relative condition 1 + 2 (l Omega/V)^2 = 1.2e12 for
-     V = 1e-6); the conversion back adds nothing to that.  V = 1e-9 is
-     lost in the rounding of E altogether: the state has V+ = 0. */
+  /* V+ small beside l Omega: the state keeps V+ itself, and the
+     conversion back gives it exactly.  E and H alone (V = 0) hold V+ only
+     to absolute precision ~eps sqrt(2E) (relative condition
+     1 + 2 (l Omega/V)^2 = 1.2e12 for V = 1e-6); the conversion back adds
+     nothing to that.  V = 1e-9 is lost in the rounding of E altogether:
+     E and H alone have V+ = 0. */
   double q[4] = { 1.0, -1e-6, 0.2, 1.25 }, q2[4];
   chaplygin_discrete_state st;
   ck_assert_ok (chaplygin_massless_state_from_phase (-0.375, q, 0, NULL, &st));
+  ck_assert (st.V == -1e-6);
+  ck_assert_ok (chaplygin_massless_state_to_phase (-0.375, &st, q2));
+  ck_assert (q2[1] == -1e-6);
+  st.V = 0.0;
   ck_assert_ok (chaplygin_massless_state_to_phase (-0.375, &st, q2));
   ck_assert_rel (q2[1], -1e-6, 4 * DBL_EPSILON * (1 + 2 * 0.78125 * 0.78125 / 1e-12));
   q[1] = -1e-9;
   ck_assert_ok (chaplygin_massless_state_from_phase (-0.375, q, 0, NULL, &st));
+  ck_assert_ok (chaplygin_massless_state_to_phase (-0.375, &st, q2));
+  ck_assert (q2[1] == -1e-9);
+  st.V = 0.0;
   ck_assert_status (chaplygin_massless_state_to_phase (-0.375, &st, q2), CHAPLYGIN_ESTATE);
   /* errors */
   double E;
@@ -1460,13 +1470,15 @@ cartesian_flow (double L0, const chaplygin_discrete_state *st, double D,
 }
 
 /* A post-collision state from a phase state, via the library's (B.17)
-   conventions (D+ = 0 for V+ > 0, 1 for V+ < 0). */
+   conventions (D+ = 0 for V+ > 0, 1 for V+ < 0), as E and H alone (V =
+   0): the references below are computed from E and H. */
 static chaplygin_discrete_state
 phase_state (double L0, double V, double Omega)
 {
   chaplygin_discrete_state st;
   const double q[4] = { V > 0 ? 0.0 : 1.0, V, 0.25, Omega };
   ck_assert_ok (chaplygin_massless_state_from_phase (L0, q, 0.0, NULL, &st));
+  st.V = 0.0;
   return st;
 }
 

@@ -542,6 +542,7 @@ to_map_state (double L0, const pstate *s)
   m.tau = s->tau;
   m.peg[0] = s->peg[0];
   m.peg[1] = s->peg[1];
+  m.V = 0.0;
   return m;
 }
 

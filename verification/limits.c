@@ -692,6 +692,7 @@ part_a3 (int level, unsigned long long *seed)
           s.tau = 0.0;
           s.peg[0] = peg[0];
           s.peg[1] = peg[1];
+          s.V = 0.0;
           if (chaplygin_discrete_init (&sys, L0, Delta))
             bad = __LINE__;
           double y[5] = { V0, th0, Om0, 0.0, 0.0 }, t = 0.0;
@@ -807,6 +808,7 @@ part_a4 (int level, unsigned long long *seed)
           s.theta = th0;
           s.tau = 0.0;
           s.peg[0] = s.peg[1] = 0.0;
+          s.V = 0.0;
           double E0 = s.E, H0 = fabs (s.H);
           while (s.tau < 6.0)
             {

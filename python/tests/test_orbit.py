@@ -65,7 +65,8 @@ def test_orbit_shapes_and_scalar():
     st = d.state_from_phase(sys_, [0, 1, 0, 0.5])
     o = d.orbit(sys_, st, 5)
     assert o.shape == (6,)
-    o2 = d.orbit(sys_, {'dir': 1, 'E': np.full((2, 3), st.E), 'H': st.H}, 5)
+    o2 = d.orbit(sys_, {'dir': 1, 'E': np.full((2, 3), st.E), 'H': st.H,
+                        'V': st.V}, 5)
     assert o2.shape == (2, 3, 6)
     assert same_struct(o2[1, 2], o)
     assert d.orbit(sys_, st, 0).shape == (1,)

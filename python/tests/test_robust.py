@@ -104,8 +104,10 @@ def test_noncontiguous_structs():
         assert a[f].tobytes() == b[f].tobytes()
     sys_arr = d.init(np.array([1.0, 2.0, 3.0, 4.0])[::2], 1 / 3)
     assert sys_arr.shape == (2,)
-    out, _ = d.step(sys_arr, STATE)
-    one, _ = d.step(d.init(3.0, 1 / 3), STATE)
+    eh = STATE.copy()
+    eh.V = 0.0          # E and H alone: STATE's own V+ is L0 = 1's
+    out, _ = d.step(sys_arr, eh)
+    one, _ = d.step(d.init(3.0, 1 / 3), eh)
     assert out['E'][1] == one.E
 
 
@@ -188,7 +190,7 @@ def test_struct_objects():
     with pytest.raises(OverflowError):
         st.dir = 2 ** 40
     with pytest.raises(TypeError):
-        c.DiscreteState(1, 2, 3, 4, 5, (0, 0), 7)
+        c.DiscreteState(1, 2, 3, 4, 5, (0, 0), 7, 8)
     with pytest.raises(TypeError):
         c.DiscreteState(1, dir=1)
     o = c.Options(method='quadrature', tol=1e-12)

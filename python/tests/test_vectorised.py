@@ -263,7 +263,7 @@ def test_structured_inputs_and_columns():
         assert same(out[i], o) and same(ev[i], e)
     cols = c.as_columns(out)
     assert list(cols) == ['dir', 'E', 'H', 'theta', 'tau', 'peg_x',
-                          'peg_y']
+                          'peg_y', 'V']
     # a dict of fields, broadcast
     out2, _ = d.step(sys_, {'dir': 1, 'E': st['E'], 'H': st['H']})
     assert np.array_equal(out2['E'], out['E'])
