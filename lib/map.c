@@ -850,6 +850,11 @@ chaplygin_discrete_state_from_phase (const chaplygin_discrete *sys,
                                       &s.E));
   CHP_TRY (chaplygin_discrete_momentum (sys->L0, D, q[CHAPLYGIN_OMEGA],
                                         &s.H));
+  if (!(s.E >= DBL_MIN))
+    return CHAPLYGIN_ERANGE;    /* E below the normal doubles: the state
+                                   cannot hold this motion (its phase
+                                   state can: chaplygin_discrete_poincare
+                                   scales the speed) */
   s.theta = q[CHAPLYGIN_THETA];
   s.tau = tau;
   s.peg[0] = peg ? peg[0] : 0.0;

@@ -492,6 +492,11 @@ chaplygin_massless_state_from_phase (double L0, const double q[4],
   s.dir = V > 0.0 ? 1 : -1;
   CHP_TRY (chaplygin_massless_energy (L0, D, V, q[CHAPLYGIN_OMEGA], &s.E));
   CHP_TRY (chaplygin_massless_momentum (L0, D, q[CHAPLYGIN_OMEGA], &s.H));
+  if (!(s.E >= DBL_MIN))
+    return CHAPLYGIN_ERANGE;    /* E below the normal doubles: the state
+                                   cannot hold this motion (its phase
+                                   state can: chaplygin_discrete_poincare
+                                   scales the speed) */
   s.theta = q[CHAPLYGIN_THETA];
   s.tau = tau;
   s.peg[0] = peg ? peg[0] : 0.0;

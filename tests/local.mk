@@ -53,7 +53,8 @@ tests_test_discrete_LDADD = $(TEST_LDADD)
 tests_test_flow_SOURCES = tests/test_flow.c tests/ref_flow.h
 tests_test_flow_CFLAGS = $(TEST_CFLAGS)
 tests_test_flow_LDADD = $(TEST_LDADD)
-tests_test_map_SOURCES = tests/test_map.c tests/ref_map.h tests/ref_poincare.h
+tests_test_map_SOURCES = tests/test_map.c tests/ref_map.h tests/ref_poincare.h \
+	tests/ref_slow.h
 tests_test_map_CFLAGS = $(TEST_CFLAGS)
 tests_test_map_LDADD = $(TEST_LDADD)
 tests_test_ellint_SOURCES = tests/test_ellint.c tests/ref_ellint.h

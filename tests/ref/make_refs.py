@@ -4,7 +4,7 @@
 Run from the top of the tree:  python3 tests/ref/make_refs.py
 Needs mpmath (Debian: python3-mpmath).  Writes tests/ref_ellint.h,
 tests/ref_flow.h, tests/ref_map.h, tests/ref_poincare.h, tests/ref_smooth.h,
-tests/ref_stability.h, tests/ref_segment.h.
+tests/ref_stability.h, tests/ref_segment.h, tests/ref_slow.h.
 
 Every input is a double, converted to mpmath exactly; every reference is
 computed at 40 significant digits (30 for the smooth sleigh, whose route is
@@ -535,10 +535,85 @@ def segment_flow_cases():
         f.write("};\n")
 
 
+# ------------------------------------------------------------ slow starts
+def slow_ref(L0, Delta, d, V0, Om0):
+    """The first segment from the phase state (V0, Om0) at the start end,
+    with V0 tiny beside l0 Omega0: heading and time by quadrature in
+    u = D - D0 (mpf keeps V0^2 ~ 1e-616 beside O(1) terms); a reversal
+    (toward l = 0) through the root u_c of V^2(u) found in u and the
+    substitution u = u_c (1 - w^2), which removes the 1/sqrt singularity;
+    otherwise straight to the far end (the singularity at a start at rest
+    is integrable: tanh-sinh)."""
+    L0, Delta, V0, Om0 = map(mpf, (L0, Delta, V0, Om0))
+    D0 = mpf(0) if d > 0 else Delta
+    l0 = L0 + D0
+    n0 = 1 + l0 ** 2
+    H = n0 * Om0
+
+    def V2(u):
+        return V0 ** 2 + u * (2 * l0 + u) * n0 * Om0 ** 2 / (1 + (l0 + u) ** 2)
+
+    def om(u):
+        return H / (1 + (l0 + u) ** 2)
+
+    toward = d * l0 < 0
+    if toward:
+        # (1 + (l0 + u)^2) V^2 = 2E (u - uc)(u - u2), the quadratic's roots
+        # uc (near 0) = -l0 + sgn(l0) sqrt(l0^2 - b) = -b/(l0 + sgn(l0)
+        # sqrt(l0^2 - b)), b = V0^2 n0/(2E), and u2 = -2 l0 - uc; with
+        # u = uc (1 - w^2) the factor |w| cancels analytically.
+        E2 = V0 ** 2 + n0 * Om0 ** 2
+        b = V0 ** 2 * n0 / E2
+        uc = -b / (l0 + sign(l0) * sqrt(l0 ** 2 - b))
+        u2 = -2 * l0 - uc
+        assert uc * d > 0 and abs(uc) < Delta
+
+        def rootless(w):
+            u = uc * (1 - w * w)
+            return sqrt(E2 * abs(u - u2) / (1 + (l0 + u) ** 2))
+
+        # the constant 4 sqrt|uc| outside: mpmath's quad stops on an
+        # absolute error estimate, which integrands of size 1e-308 meet
+        # at once (3.7e-14 off for V0 = DBL_MIN with it inside)
+        k = 4 * sqrt(abs(uc))
+        th = k * quad(lambda w: abs(om(uc * (1 - w * w))) / rootless(w), [0, 1])
+        ta = k * quad(lambda w: 1 / rootless(w), [0, 1])
+        return 1, sign(H) * th, ta
+    U = d * Delta
+    pts = [0, U * mpf(10) ** -30, U * mpf(10) ** -10, U]
+    th = quad(lambda u: abs(om(u)) / sqrt(V2(u)), pts)
+    ta = quad(lambda u: 1 / sqrt(V2(u)), pts)
+    return 0, sign(H) * abs(th), abs(ta)
+
+
+def slow_cases():
+    geoms = [(-0.5, 1.0, 1.0), (1.0, 1.0 / 3, 0.5), (-2.0, 0.7, -0.8)]
+    out = []
+    for (L0, Dl, Om) in geoms:
+        for d in (1, -1):
+            l0 = L0 + (0.0 if d > 0 else Dl)
+            for r in (1e-3, 1e-6, 1e-9, 1e-12, None):
+                V = 2.2250738585072014e-308 if r is None else r * abs(l0 * Om)
+                V = d * V
+                rev, th, ta = slow_ref(L0, Dl, d, V, Om)
+                out.append((L0, Dl, d, V, Om, rev, th, ta))
+    with open(OUT + "ref_slow.h", "w") as f:
+        header(f, "ref_slow.h", "the first segment of a slow start: quadrature in "
+               "u = D - D0 (mpmath, 40 digits, V0^2 kept beside O(1) terms), a "
+               "reversal through the root of V^2(u) found in u and the "
+               "substitution u = u_c (1 - w^2)")
+        f.write("static const struct { double L0, Delta; int dir; double V, Omega; "
+                "int reversal; double dtheta, dtau; } ref_slow[] = {\n")
+        for r in out:
+            f.write("  { %s, %s, %d, %s, %s, %d, %s, %s },\n" % (
+                c(r[0]), c(r[1]), r[2], c(r[3]), c(r[4]), r[5], c(r[6]), c(r[7])))
+        f.write("};\n")
+
+
 if __name__ == "__main__":
     import sys
     which = sys.argv[1:] or ["ellint", "flow", "map", "poincare", "smooth",
-                             "stability", "segment"]
+                             "stability", "segment", "slow"]
     mp.dps = 40
     if "ellint" in which:
         ellint_cases()
@@ -554,3 +629,5 @@ if __name__ == "__main__":
         stability_cases()
     if "segment" in which:
         segment_flow_cases()
+    if "slow" in which:
+        slow_cases()
