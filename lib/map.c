@@ -739,12 +739,15 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    the other end than the exact classification says is reported as
    CHAPLYGIN_ENOCONV).  Only what REQUEST asks for is
    computed (E, H, dir always).
-   Representation: a state (E, H) holds V+ only to absolute precision
-   ~eps sqrt(2E): when V+^2 << (1 + l0^2) Omega+^2 the map from (E, H) is
-   ill-conditioned in V+; chaplygin_discrete_poincare, which starts from
-   V+ itself, does not have that limitation.
+   Representation: E and H hold V+ only to absolute precision
+   ~eps sqrt(2E): when V+^2 << (1 + l0^2) Omega+^2 the map from (E, H)
+   alone is ill-conditioned in V+.  The state's V (V+ where known) removes
+   that: the heading, time and V- from it (step_g0_from_V), E' and H'
+   from E and H as ever; V+' passed on while E' and H' would not hold it
+   (step_finish).
    Domain: a valid system; in->dir = +-1; finite fields; E > 0 and
-   V+^2 = 2E - H^2/(1 + l0^2) > 0; |L0|, |L0 + Delta| <= 2^500.
+   V+^2 = 2E - H^2/(1 + l0^2) > 0 (or V+ known); |L0|, |L0 + Delta| <=
+   2^500.
    Errors: CHAPLYGIN_EINVAL (NULL, dir, request bits, options),
    CHAPLYGIN_EDOM (non-finite, E < 0), CHAPLYGIN_ESTATE (E = 0, V+^2 <= 0),
    CHAPLYGIN_ESPIN (2E = H^2 and the path reaches l = 0: no next
