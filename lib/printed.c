@@ -438,7 +438,7 @@ chaplygin_printed_discrete_f3 (const chaplygin_discrete *sys, int dir,
 {
   if (!sys || !f3)
     return CHAPLYGIN_EINVAL;
-  const chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  const chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_state out;
   chaplygin_discrete_event ev;
   CHP_TRY (chaplygin_discrete_step (sys, &in, CHAPLYGIN_WANT_THETA, opt, &out,

@@ -138,16 +138,40 @@ segment_totals (const chaplygin_discrete *sys,
   return chaplygin_discrete_step (sys, st, want, opt, &next, &sp->ev);
 }
 
-/* V^2 at l = L0 + D from E and H: 2E g(l)/(1 + l^2), g(l) = l^2 + 1 - h^2
-   by error-free arithmetic (chp_motion_g_exact: no cancellation near a
-   turning point, where (B.1) from V0 cancels); beyond the cap, (B.1) of
-   the scaled problem (chaplygin_discrete_flow). */
-static int
-segment_speed2 (double L0, const chaplygin_discrete_state *st,
-                const segment_place *sp, double D, double *V2)
+/* g(l) = (1 + l^2) V^2/(2E) at the start (*g0) and at D (*gl), within
+   the cap: from E and H by error-free arithmetic (no cancellation near a
+   turning point, where (B.1) from V0 cancels), or, where the state
+   knows V+ (a slow start: E and H lose it), g0 from V+ itself and
+   gl = g0 + (D - D0)(2 L0 + D + D0) unless that cancels worse than E and
+   H are conditioned at l (as the step: lib/map.c). */
+static void
+segment_g (const chaplygin_discrete *sys, const chaplygin_discrete_state *st,
+           const chp_motion *m, double D, double *g0, double *gl)
 {
+  chp_segment seg;
+  chp_segment_init (sys, st->dir, &seg);
   double l, le;
-  chp_two_sum (L0, D, &l, &le);
+  chp_two_sum (sys->L0, D, &l, &le);
+  *g0 = chp_motion_g_exact (m, seg.l0, seg.l0_err);
+  *gl = chp_motion_g_exact (m, l, le);
+  if (st->V == 0.0)
+    return;
+  const double V = st->V, D0 = st->dir > 0 ? 0.0 : sys->Delta;
+  const double delta = (D - D0) * (2.0 * sys->L0 + D + D0);
+  *g0 = chp_one_plus_sq (seg.l0) * (V * (V / (2.0 * st->E)));
+  if (fabs (*g0) + fabs (delta)
+      <= chp_one_plus_sq (l) + fabs (1.0 - m->one_minus_h2))
+    *gl = *g0 + delta;
+}
+
+/* V^2 at l = L0 + D: 2E g(l)/(1 + l^2) (segment_g); beyond the cap, (B.1)
+   of the scaled problem (chaplygin_discrete_flow). */
+static int
+segment_speed2 (const chaplygin_discrete *sys,
+                const chaplygin_discrete_state *st, const segment_place *sp,
+                double D, double *V2)
+{
+  const double L0 = sys->L0, l = L0 + D;
   if (fabs (l) > CHP_L_MAX || fabs (L0 + sp->D0) > CHP_L_MAX)
     {
       double om;
@@ -158,9 +182,10 @@ segment_speed2 (double L0, const chaplygin_discrete_state *st,
       return status == CHAPLYGIN_ESTATE ? CHAPLYGIN_SUCCESS : status;
     }
   chp_motion m;
+  double g0, gl;
   CHP_TRY (chp_motion_init_eh (st->E, st->H, &m));
-  const double g = chp_motion_g_exact (&m, l, le);
-  *V2 = 2.0 * (st->E * (g / chp_one_plus_sq (l)));
+  segment_g (sys, st, &m, D, &g0, &gl);
+  *V2 = 2.0 * (st->E * (gl / chp_one_plus_sq (l)));
   return isfinite (*V2) ? CHAPLYGIN_SUCCESS : CHAPLYGIN_ERANGE;
 }
 
@@ -179,19 +204,18 @@ segment_leg (const chaplygin_discrete *sys, const chaplygin_discrete_state *st,
 {
   chp_segment seg;
   chp_segment_init (sys, st->dir, &seg);
-  double l, le;
-  chp_two_sum (sys->L0, D, &l, &le);
-  const double E = st->E, H = st->H;
+  const double l = sys->L0 + D, E = st->E, H = st->H;
   if (o->method == CHAPLYGIN_ODE || fabs (seg.l0) > CHP_L_MAX
       || fabs (l) > CHP_L_MAX || !(E >= 0x1p-800 && E <= 0x1p800)
       || !(fabs (H) <= 0x1p450))
     return chaplygin_discrete_heading (sys->L0, sp->D0, sp->V0, sp->Omega0, D,
                                        o, dtheta, dtau);
   chp_motion m;
+  double g0, gl;
   CHP_TRY (chp_motion_init (E, H, &m));
-  const double g0 = chp_motion_g_exact (&m, seg.l0, seg.l0_err);
-  const double gl = fmax (chp_motion_g_exact (&m, l, le), 0.0);
-  return chp_leg (&m, seg.l0, g0, l, gl, fabs (D - sp->D0), o, dtheta, dtau);
+  segment_g (sys, st, &m, D, &g0, &gl);
+  return chp_leg (&m, seg.l0, g0, l, fmax (gl, 0.0), fabs (D - sp->D0), o,
+                  dtheta, dtau);
 }
 
 /* Phase 2: the sample at D on LEG of the located segment SP. */
@@ -238,7 +262,7 @@ segment_sample (const chaplygin_discrete *sys,
   else
     {
       double v2;
-      CHP_TRY (segment_speed2 (L0, st, sp, D, &v2));
+      CHP_TRY (segment_speed2 (sys, st, sp, D, &v2));
       if (!(v2 >= 0.0))
         return CHAPLYGIN_ESTATE;        /* beyond a turning point */
       v = (leg ? -dir : dir) * sqrt (v2);

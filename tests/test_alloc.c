@@ -188,7 +188,7 @@ START_TEST (hot_path_no_allocation)
                                                 &fate);
   status[ns++] = chaplygin_sweep_sigma4 (1, 2.0, 64, x, s4, NULL);
   status[ns++] = chaplygin_sweep_stability (64, x, 4, y, region);
-  chaplygin_discrete_state ms = { 1, 0.6, 0.2, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state ms = { 1, 0.6, 0.2, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   status[ns] = 0;
   for (int k = 0; k < NSTEP && !status[ns]; k++)
     status[ns] = chaplygin_massless_step (-0.4, &ms, CHAPLYGIN_WANT_ALL, &ms,
@@ -198,7 +198,7 @@ START_TEST (hot_path_no_allocation)
      smooth sleigh (a reversing motion: all three regimes, the path by
      quadrature) */
   double sV, sOm, sdth, sdta, sq[4], sG[2], sF[2];
-  chaplygin_discrete_state mt = { 1, 0.6, 0.2, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state mt = { 1, 0.6, 0.2, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   status[ns++] = chaplygin_massless_flow (-0.4, &mt, 0.1, 0, &sV, &sOm, &sdth,
                                           &sdta);
   status[ns++] = chaplygin_massless_omega (-0.4, 0.1, 0.2, &sOm);

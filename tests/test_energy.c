@@ -68,7 +68,7 @@ static void
 iterate (const chaplygin_discrete *sys, int dir, double E, double H,
          unsigned long n, double *En, double *Hn)
 {
-  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_event ev;
   for (unsigned long k = 0; k < n; k++)
     if (chaplygin_discrete_step (sys, &s, 0, NULL, &s, &ev) || ev.reversal)
@@ -83,7 +83,7 @@ iterate (const chaplygin_discrete *sys, int dir, double E, double H,
 static unsigned long
 settle (const chaplygin_discrete *sys, int dir, double *E, double *H)
 {
-  chaplygin_discrete_state s = { dir, *E, *H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, *E, *H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_event ev;
   unsigned long k = 0;
   for (; s.H * s.H >= 1e-40 * s.E; k++)
@@ -712,7 +712,7 @@ END_TEST
 static int
 symmetric_fate (const chaplygin_discrete *sys, int dir, double E, double H)
 {
-  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_event ev;
   for (int k = 0; k < 100000 && !(2 * s.E > s.H * s.H); k++)
     if (chaplygin_discrete_step (sys, &s, 0, NULL, &s, &ev))

@@ -562,7 +562,7 @@ START_TEST (extremes_tiny_H)
             const double L0 = L0s[a], Delta = 1.5, E = 0.625, H = Hs[b];
             chaplygin_discrete sys;
             ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
-            chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0, 0 } , 0.0};
+            chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0, 0 }, 0.0 };
             chaplygin_discrete_state out;
             chaplygin_discrete_event ev;
             ck_assert_ok (chaplygin_discrete_step (&sys, &in,
@@ -636,7 +636,7 @@ START_TEST (extremes_spinning)
   for (int dir = -1; dir <= 1; dir += 2)
     for (int k = 0; k < 4; k++)
       {
-        chaplygin_discrete_state in = { dir, 0.5 * H * H, H, 0, 0, { 0, 0 } , 0.0};
+        chaplygin_discrete_state in = { dir, 0.5 * H * H, H, 0, 0, { 0, 0 }, 0.0 };
         chaplygin_discrete_state out;
         fill_state (&out);
         double v[12];
@@ -713,7 +713,7 @@ START_TEST (extremes_turning_point_at_end)
               for (int u = 0; u < abs (ulp); u++)
                 H = nextafter (H, ulp > 0 ? HUGE_VAL : 0.0);
               chaplygin_discrete_state in = { dir, 0.5 * s * s, H, 0, 0,
-                { 0, 0 } , 0.0};
+                { 0, 0 }, 0.0 };
               chaplygin_discrete_state out, next;
               chaplygin_discrete_event ev;
               int st = chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_ALL,
@@ -828,7 +828,7 @@ START_TEST (extremes_cap)
         chaplygin_discrete sys;
         ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
         ck_assert (!supported (L0, Delta));
-        chaplygin_discrete_state in = { dir, 0.5, 1.0, 0, 0, { 0, 0 } , 0.0}, out;
+        chaplygin_discrete_state in = { dir, 0.5, 1.0, 0, 0, { 0, 0 }, 0.0 }, out;
         chaplygin_discrete_event ev;
         double v[12];
         char what[120];
@@ -867,7 +867,7 @@ long_run (double L0, double Delta, int dir, double E, double H,
   const q128 C2 = (1 + (q128) L0 * ((q128) L0 + Delta)) / (1 + lf * lf);
   const q128 C1 = -(q128) Delta * Delta
     / (2 * (1 + lf * lf) * (1 + lf * lf) * (1 + ls * ls));
-  chaplygin_discrete_state s = { dir, E, H, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state s = { dir, E, H, 0, 0, { 0, 0 }, 0.0 };
   q128 Eq = E, Hq = H;
   unsigned long moved = 0, first_zero = 0;
   for (unsigned long i = 1; i <= n; i++)

@@ -551,7 +551,7 @@ check_step (double L0, double Delta, int dir, double E, double H,
             theta, tau);
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
-  chaplygin_discrete_state in = { dir, E, H, theta, tau, { peg[0], peg[1] } , 0.0};
+  chaplygin_discrete_state in = { dir, E, H, theta, tau, { peg[0], peg[1] }, 0.0 };
   chaplygin_discrete_state out;
   chaplygin_discrete_event ev;
   fill_state (&out);
@@ -1045,7 +1045,7 @@ START_TEST (far_phase)
               ref_eval (ref_to_phase_x, x, 4, dir, &r);
               ck_assert (r.ok == 1);
               /* to phase: V = dir s P/|l|, Omega = H/l^2 */
-              chaplygin_discrete_state st = { dir, E, H, 0.25, 1.5, { 2, 3 } , 0.0};
+              chaplygin_discrete_state st = { dir, E, H, 0.25, 1.5, { 2, 3 }, 0.0 };
               double q[4] = { SENT, SENT, SENT, SENT };
               int stt = chaplygin_discrete_state_to_phase (&sys, &st, q);
               if (fabsq (r.out[O_OMEGA]) < (q128) DBL_MIN
@@ -1110,7 +1110,7 @@ check_refusal (double L0, double Delta, int dir, double E, double H)
   double V = dir * sqrt (E), Om = 1e-300;       /* a valid phase state */
   for (int M = 0; M < NMETH; M++)
     {
-      chaplygin_discrete_state in = { dir, E, H, 0, 0, { 0, 0 } , 0.0}, out;
+      chaplygin_discrete_state in = { dir, E, H, 0, 0, { 0, 0 }, 0.0 }, out;
       chaplygin_discrete_event ev;
       fill_state (&out);
       fill_event (&ev);
@@ -1130,7 +1130,7 @@ check_refusal (double L0, double Delta, int dir, double E, double H)
       expect (untouched4 (qn) && ta == SENT, "[%s]: poincare wrote", ctx);
     }
   /* E and H only, default options (the library's fast path) */
-  chaplygin_discrete_state in = { dir, E, H, 0, 0, { 0, 0 } , 0.0}, out;
+  chaplygin_discrete_state in = { dir, E, H, 0, 0, { 0, 0 }, 0.0 }, out;
   fill_state (&out);
   expect_status (chaplygin_discrete_step (&sys, &in, 0, NULL, &out, NULL),
                  CHAPLYGIN_ERANGE, "step (E, H only)");
@@ -1304,7 +1304,7 @@ START_TEST (far_statuses)
 {
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, 1e200, 1.0));
-  chaplygin_discrete_state s = { 1, 0.0, 0.0, 0, 0, { 0, 0 } , 0.0}, o;
+  chaplygin_discrete_state s = { 1, 0.0, 0.0, 0, 0, { 0, 0 }, 0.0 }, o;
   /* E = 0: at rest, CHAPLYGIN_ESTATE (as inside the cap) */
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL),
                     CHAPLYGIN_ESTATE);

@@ -132,7 +132,7 @@ random_state (tu_rng *r, const chaplygin_discrete *sys, int dir, double xlo,
   double l0 = dir > 0 ? sys->L0 : sys->L0 + sys->Delta;
   double H = rand_sign (r) * tu_uniform (r, 0.2, 2.0);
   double ratio = 1 / (1 + l0 * l0) + exp (tu_uniform (r, log (xlo), log (xhi)));
-  chaplygin_discrete_state s = { dir, 0.5 * ratio * H * H, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, 0.5 * ratio * H * H, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   return s;
 }
 
@@ -514,7 +514,7 @@ START_TEST (fate_rest_boundary)
   const double rs[] = { 1.0001, 1.5, 2.0, 3.0, 5.0, 5.377 };
   for (size_t j = 0; j < sizeof rs / sizeof rs[0]; j++)
     {
-      chaplygin_discrete_state s = { 1, 0.5 * rs[j] * 1.7 * 1.7, 1.7, 0, 0, { 0, 0 } , 0.0};
+      chaplygin_discrete_state s = { 1, 0.5 * rs[j] * 1.7 * 1.7, 1.7, 0, 0, { 0, 0 }, 0.0 };
       chaplygin_fate f;
       ck_assert_ok (chaplygin_discrete_fate (&sys, &s, 1000000, NULL, 0, &f));
       ck_assert_int_eq (f.kind, BWD);
@@ -570,7 +570,7 @@ START_TEST (fate_spin)
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
   for (int dir = -1; dir <= 1; dir += 2)
     {
-      chaplygin_discrete_state s = { dir, 0.5 * 1.25 * 1.25, 1.25, 0, 0, { 0, 0 } , 0.0}, o;
+      chaplygin_discrete_state s = { dir, 0.5 * 1.25 * 1.25, 1.25, 0, 0, { 0, 0 }, 0.0 }, o;
       ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESPIN);
       ck_assert_ok (chaplygin_discrete_fate (&sys, &s, 100, NULL, 0, &f));
       ck_assert_int_eq (f.kind, SPIN);
@@ -584,21 +584,21 @@ START_TEST (fate_spin)
     for (int dir = -1; dir <= 1; dir += 2)
       {
         double H = j / 64.0;
-        chaplygin_discrete_state s = { dir, 0.5 * H * H, H, 0, 0, { 0, 0 } , 0.0}, o;
+        chaplygin_discrete_state s = { dir, 0.5 * H * H, H, 0, 0, { 0, 0 }, 0.0 }, o;
         ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESPIN);
         ck_assert_ok (chaplygin_discrete_fate (&sys, &s, 100, NULL, 0, &f));
         ck_assert_int_eq (f.kind, SPIN);
       }
   ck_assert_ok (chaplygin_discrete_init (&sys, -1.0, 1.0));
   {
-    chaplygin_discrete_state s = { 1, 2.0, 2.0, 0, 0, { 0, 0 } , 0.0}, o;
+    chaplygin_discrete_state s = { 1, 2.0, 2.0, 0, 0, { 0, 0 }, 0.0 }, o;
     ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESPIN);
     ck_assert_ok (chaplygin_discrete_fate (&sys, &s, 100, NULL, 0, &f));
     ck_assert_int_eq (f.kind, SPIN);
   }
   /* the mass centre outside the slot: 2E = H^2 does not spin */
   ck_assert_ok (chaplygin_discrete_init (&sys, 0.3, 1.0));
-  chaplygin_discrete_state s = { 1, 0.5 * 1.25 * 1.25, 1.25, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state s = { 1, 0.5 * 1.25 * 1.25, 1.25, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_fate (&sys, &s, 100, NULL, 0, &f));
   ck_assert_int_eq (f.kind, FWD);
 
@@ -648,7 +648,7 @@ START_TEST (fate_special)
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.3, 0.5));
   for (int dir = -1; dir <= 1; dir += 2)
     {
-      chaplygin_discrete_state s = { dir, 0.7, 0.0, 0, 0, { 0, 0 } , 0.0};
+      chaplygin_discrete_state s = { dir, 0.7, 0.0, 0, 0, { 0, 0 }, 0.0 };
       ck_assert_ok (chaplygin_discrete_fate (&sys, &s, 0, NULL, 0, &f));
       ck_assert_int_eq (f.kind, dir);
       ck_assert (f.collisions == 0 && f.reversals == 0 && f.last_reversal == 0);
@@ -668,7 +668,7 @@ START_TEST (fate_special)
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 2.5));
   ck_assert (sys.C2[0] == 0.0 && sys.C2[1] == 0.0);
   /* 2E/H^2 = 0.9 < 1: a reversal, then H = 0 */
-  chaplygin_discrete_state s = { 1, 0.5 * 0.9 * 1.3 * 1.3, 1.3, 0, 0, { 0, 0 } , 0.0}, o;
+  chaplygin_discrete_state s = { 1, 0.5 * 0.9 * 1.3 * 1.3, 1.3, 0, 0, { 0, 0 }, 0.0 }, o;
   chaplygin_discrete_event ev;
   ck_assert_ok (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, &ev));
   ck_assert (o.H == 0.0);
@@ -682,7 +682,7 @@ START_TEST (fate_special)
 
   /* undecided: the symmetric system, a motion with many reversals */
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
-  chaplygin_discrete_state u = { 1, 0.5 * (0.8 + 1e-6), 1.0, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state u = { 1, 0.5 * (0.8 + 1e-6), 1.0, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_fate (&sys, &u, 1000, NULL, 0, &f));
   ck_assert_int_eq (f.kind, f.reversals % 2 ? BWD : FWD);
   /* V+ = 1e-3 lies between b_12 and b_11 of Figure 3: 12 reversals */
@@ -715,7 +715,7 @@ START_TEST (fate_special)
      2E/H^2 = 1/(1 + 1^2)): a reversal, as chaplygin_discrete_step counts
      it (route: its event flag) */
   ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 1.0));
-  chaplygin_discrete_state tp = { -1, 1.0, 2.0, 0, 0, { 0, 0 } , 0.0}, tpo;
+  chaplygin_discrete_state tp = { -1, 1.0, 2.0, 0, 0, { 0, 0 }, 0.0 }, tpo;
   ck_assert_ok (chaplygin_discrete_step (&sys, &tp, 0, NULL, &tpo, &ev));
   ck_assert (ev.reversal && ev.Dc == 0.0);
   ck_assert_ok (chaplygin_discrete_fate (&sys, &tp, 10, NULL, 0, &f));
@@ -723,14 +723,14 @@ START_TEST (fate_special)
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
 
   /* max = 0 on a certain state */
-  chaplygin_discrete_state c = { 1, 0.7, 1.0, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state c = { 1, 0.7, 1.0, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_fate (&sys, &c, 0, NULL, 0, &f));
   ck_assert_int_eq (f.kind, FWD);
 
   /* |L0| >> 1 */
   ck_assert_ok (chaplygin_discrete_init (&sys, 1e20, 1.0));
   ck_assert (sys.C2[1] == 1.0);
-  chaplygin_discrete_state g = { 1, 1.0, 1e20, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state g = { 1, 1.0, 1e20, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_fate (&sys, &g, 0, NULL, 0, &f));
   ck_assert_int_eq (f.kind, FWD);
   ck_assert_rel (f.E_final, 1.0, 4 * DBL_EPSILON);
@@ -797,13 +797,13 @@ START_TEST (fate_errors)
   chaplygin_discrete sys, bad;
   chaplygin_fate f, keep = { 7, 7, 7, 7, 7.0, 7.0 };
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.3, 0.5));
-  chaplygin_discrete_state s = { 1, 1.0, 0.5, 0, 0, { 0, 0 } , 0.0}, t;
+  chaplygin_discrete_state s = { 1, 1.0, 0.5, 0, 0, { 0, 0 }, 0.0 }, t;
   double q[4] = { 0, 0.5, 0, 0.7 }, p[4];
   unsigned long at[2] = { 9, 9 };
   /* energies at the top of the double range (found in review): H = 0 and
      E = 1e308 is representable, V* = sqrt(2E) = 1.4e154; a phase state
      with V+ = 1e200 has E beyond it: ERANGE, nothing written */
-  chaplygin_discrete_state big = { -1, 1e308, 0.0, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state big = { -1, 1e308, 0.0, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_fate (&sys, &big, 10, NULL, 0, &f));
   ck_assert_int_eq (f.kind, CHAPLYGIN_FATE_BACKWARD);
   ck_assert_eps (f.V_final, -sqrt (2.0) * 1e154, 2);

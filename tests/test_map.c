@@ -102,7 +102,7 @@ check_segment (int i, const chaplygin_options *o, double tol_angle)
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, ref_map[i].L0, ref_map[i].Delta));
   chaplygin_discrete_state in = { ref_map[i].dir, ref_map[i].E, ref_map[i].H, 0.125, 2.0,
-                                  { 0.0, 0.0 } , 0.0}, out;
+                                  { 0.0, 0.0 }, 0.0 }, out;
   chaplygin_discrete_event ev;
   ck_assert_ok (chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_ALL, o, &out, &ev));
   double kappa = segment_kappa (i);
@@ -248,7 +248,7 @@ START_TEST (test_output_valid_near_turning)
                                          0x1.c7851e17c4c97p-4));
   const chaplygin_discrete_state st = { -1, 0x1.f722ce252ce98p-4,
                                         0x1.fb8efa71bceb8p-2, 0.0, 0.0,
-                                        { 0.0, 0.0 } , 0.0};
+                                        { 0.0, 0.0 }, 0.0 };
   const unsigned req[2] = { 0, CHAPLYGIN_WANT_ALL };
   for (int k = 0; k < 2; k++)
     {
@@ -533,7 +533,7 @@ START_TEST (test_step_closed_vs_quadrature)
       chaplygin_discrete sys;
       ck_assert_ok (chaplygin_discrete_init (&sys, tu_uniform (&r, -3, 2), tu_uniform (&r, 0.02, 4)));
       chaplygin_discrete_state s = { tu_uniform (&r, 0, 1) < 0.5 ? 1 : -1,
-                                     tu_uniform (&r, 0.05, 2), tu_uniform (&r, -3, 3), 0, 0, { 0, 0 } , 0.0};
+                                     tu_uniform (&r, 0.05, 2), tu_uniform (&r, -3, 3), 0, 0, { 0, 0 }, 0.0 };
       chaplygin_discrete_state a, b;
       chaplygin_discrete_event ea, eb;
       int st = chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, &CLOSED, &a, &ea);
@@ -559,7 +559,7 @@ START_TEST (test_requests_and_conventions)
 {
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 0.5));
-  chaplygin_discrete_state s = { 1, 0.75, 1.0, 0.3, 4.0, { 1.0, -2.0 } , 0.0}, a, b;
+  chaplygin_discrete_state s = { 1, 0.75, 1.0, 0.3, 4.0, { 1.0, -2.0 }, 0.0 }, a, b;
   chaplygin_discrete_event ea, eb;
   /* Nothing requested beyond E, H: theta, tau, peg are copied unchanged;
      E, H are bit-identical to the full request. */
@@ -582,7 +582,7 @@ START_TEST (test_requests_and_conventions)
   /* Conventions (manual): with H = 0 the skate moves straight; forward
      (dir = +1) the new peg is Delta ahead along (cos, sin)(theta),
      backward Delta behind; theta is unchanged. */
-  chaplygin_discrete_state f = { 1, 0.5, 0.0, 0.6, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state f = { 1, 0.5, 0.0, 0.6, 0.0, { 0.0, 0.0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_step (&sys, &f, CHAPLYGIN_WANT_ALL, NULL, &a, &ea));
   ck_assert_rel (a.peg[0], 0.5 * cos (0.6), DBL_EPSILON);
   ck_assert_rel (a.peg[1], 0.5 * sin (0.6), DBL_EPSILON);
@@ -594,7 +594,7 @@ START_TEST (test_requests_and_conventions)
   ck_assert_rel (a.peg[1], -0.5 * sin (0.6), DBL_EPSILON);
   ck_assert (ea.Dminus == 0.0 && ea.Dplus == 0.5 && a.dir == -1);
   /* theta advances with the sign of H, forward or backward */
-  chaplygin_discrete_state g = { -1, 0.8, 0.7, 0.0, 0.0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state g = { -1, 0.8, 0.7, 0.0, 0.0, { 0, 0 }, 0.0 };
   ck_assert_ok (chaplygin_discrete_step (&sys, &g, CHAPLYGIN_WANT_THETA, NULL, &a, NULL));
   ck_assert (a.theta > 0);
   g.H = -0.7;
@@ -627,7 +627,7 @@ START_TEST (test_extremes_found_in_review)
      O(l^2) = 1e-400, so dtheta = Delta/sqrt(3) (the old tan(mu) formula
      underflowed to 0). */
   ck_assert_ok (chaplygin_discrete_init (&sys, 1e-200, 1e-200));
-  chaplygin_discrete_state s = { 1, 0.5, 0.5, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state s = { 1, 0.5, 0.5, 0, 0, { 0, 0 }, 0.0 };
   for (int j = 0; j < 3; j++)
     {
       ck_assert_ok (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, meth[j], &o, NULL));
@@ -657,7 +657,7 @@ START_TEST (test_extremes_found_in_review)
      sqrt(2E - H^2) = 1.49e-8 exactly by (B.1).  The integration cannot
      resolve it and says so; the closed form does. */
   ck_assert_ok (chaplygin_discrete_init (&sys, -1.0, 1.0));
-  chaplygin_discrete_state ns = { 1, nextafter (0.5, 1.0), 1.0, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state ns = { 1, nextafter (0.5, 1.0), 1.0, 0, 0, { 0, 0 }, 0.0 };
   chaplygin_discrete_event ev;
   ck_assert_ok (chaplygin_discrete_step (&sys, &ns, CHAPLYGIN_WANT_ALL, &CLOSED, &o, &ev));
   ck_assert (!ev.reversal && o.dir == 1);
@@ -670,7 +670,7 @@ START_TEST (test_extremes_found_in_review)
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
   ck_assert_ok (chaplygin_discrete_spins (-0.5, 1.0, 1, 0x1p1019, 0x1p510, &spins));
   ck_assert_int_eq (spins, 1);
-  chaplygin_discrete_state bs = { 1, 0x1p1019, 0x1p510, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state bs = { 1, 0x1p1019, 0x1p510, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_status (chaplygin_discrete_step (&sys, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ESPIN);
   bs.E = nextafter (0x1p1019, 0.0);
   ck_assert_ok (chaplygin_discrete_spins (-0.5, 1.0, 1, bs.E, 0x1p510, &spins));
@@ -697,7 +697,7 @@ START_TEST (test_step_errors)
 {
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
-  chaplygin_discrete_state s = { 1, 0.78125, 1.25, 0, 0, { 0, 0 } , 0.0}, o;
+  chaplygin_discrete_state s = { 1, 0.78125, 1.25, 0, 0, { 0, 0 }, 0.0 }, o;
   o.E = 9;
   /* 2E = H^2 exactly, mass centre in the slot: the spinning state */
   ck_assert_status (chaplygin_discrete_step (&sys, &s, CHAPLYGIN_WANT_ALL, NULL, &o, NULL),
@@ -733,7 +733,7 @@ START_TEST (test_step_errors)
      ends 1 and 1e300, ends of opposite sign. */
   chaplygin_discrete big;
   ck_assert_ok (chaplygin_discrete_init (&big, 1.0, 1e300));
-  chaplygin_discrete_state bs = { -1, 1e20, 1.0, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state bs = { -1, 1e20, 1.0, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_status (chaplygin_discrete_step (&big, &bs, 0, NULL, &o, NULL), CHAPLYGIN_ERANGE);
   ck_assert_ok (chaplygin_discrete_init (&big, -1e155, 2e155));
   bs.dir = 1, bs.E = 0.5, bs.H = 0.5;
@@ -757,7 +757,7 @@ START_TEST (test_step_errors)
   /* every field of the state is validated */
   for (int f = 0; f < 6; f++)
     {
-      chaplygin_discrete_state v = { 1, 1.0, 0.5, 0.1, 0.2, { 0.3, 0.4 } , 0.0};
+      chaplygin_discrete_state v = { 1, 1.0, 0.5, 0.1, 0.2, { 0.3, 0.4 }, 0.0 };
       double *field[6] = { &v.E, &v.H, &v.theta, &v.tau, &v.peg[0], &v.peg[1] };
       *field[f] = NAN;
       ck_assert_status (chaplygin_discrete_step (&sys, &v, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
@@ -775,7 +775,7 @@ START_TEST (test_step_errors)
   ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, 0, peg, &s), CHAPLYGIN_EDOM);
   q[0] = 1.0;
   ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, 0, NULL, &s), CHAPLYGIN_ESTATE);
-  chaplygin_discrete_state t = { 1, 0.1, 5.0, 0, 0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state t = { 1, 0.1, 5.0, 0, 0, { 0, 0 }, 0.0 };
   ck_assert_status (chaplygin_discrete_state_to_phase (&sys, &t, q), CHAPLYGIN_ESTATE);
   ck_assert_status (chaplygin_discrete_state_to_phase (&sys, &t, NULL), CHAPLYGIN_EINVAL);
   t.dir = 2;
@@ -819,7 +819,7 @@ START_TEST (test_step_eh_n)
       const double E = tu_uniform (&rng, 0.1, 10.0);
       const double u = tu_uniform (&rng, -0.999, 0.999);
       chaplygin_discrete_state st = { dir, E, u * sqrt (2 * E) * hypot (1.0, ls),
-                                      0.25, 1.5, { -1.0, 2.0 } , 0.0};
+                                      0.25, 1.5, { -1.0, 2.0 }, 0.0 };
       const unsigned long n = 1 + (unsigned long) tu_uniform (&rng, 0, 60);
       chaplygin_discrete_state ref = st, got = st;
       unsigned long done = 99, k = 0;
@@ -843,7 +843,7 @@ START_TEST (test_step_eh_n)
   /* statuses: nothing done, the state untouched */
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
-  chaplygin_discrete_state st = { 1, 0.5, 1.0, 0, 0, { 0, 0 } , 0.0}, keep;
+  chaplygin_discrete_state st = { 1, 0.5, 1.0, 0, 0, { 0, 0 }, 0.0 }, keep;
   unsigned long done = 99;
   ck_assert_status (chaplygin_discrete_step_eh_n (NULL, &st, 1, &done),
                     CHAPLYGIN_EINVAL);

@@ -935,7 +935,7 @@ START_TEST (printed_B_3)
       struct b3_par b = { c[i].L0, c[i].E, c[i].H };
       double I = c[i].dir * integrate (b3_integrand, &b, 0, c[i].Delta);
       ck_assert_rel (f3, I, 32 * DBL_EPSILON);
-      chaplygin_discrete_state in = { c[i].dir, c[i].E, c[i].H, 0, 0, { 0, 0 } , 0.0}, out;
+      chaplygin_discrete_state in = { c[i].dir, c[i].E, c[i].H, 0, 0, { 0, 0 }, 0.0 }, out;
       chaplygin_discrete_event ev;
       ck_assert_ok (chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_THETA, NULL, &out,
                                              &ev));

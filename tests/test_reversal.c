@@ -120,7 +120,7 @@ static unsigned long
 obs_count (const chaplygin_discrete *sys, int dir, double E, double H,
            unsigned long maxn, enum fate *kind)
 {
-  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_event ev;
   for (unsigned long k = 0;; k++)
     {
@@ -150,7 +150,7 @@ static int
 lib_step (const chaplygin_discrete *sys, int dir, double E, double H,
           int *rev)
 {
-  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_event ev;
   int st = chaplygin_discrete_step (sys, &s, 0, NULL, &s, &ev);
   *rev = st == CHAPLYGIN_SUCCESS ? ev.reversal : -1;
@@ -307,7 +307,7 @@ check_single_reversal (double L0, double Delta, int dir, double r, double H)
 {
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
-  chaplygin_discrete_state s = { dir, r * H * H / 2, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s = { dir, r * H * H / 2, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
   chaplygin_discrete_event ev;
   int reversals = 0;
   for (int k = 0; k < 4000 && fabs (s.H) > 1e-30 * fabs (H); k++)
@@ -432,7 +432,7 @@ START_TEST (eq_B_7)
       ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
       double H = tu_uniform (&g, 0.5, 2), r = tu_uniform (&g, 1.01, 20);
       double E = r * H * H / 2;
-      chaplygin_discrete_state s = { dir, E, H, 0, 0, { 0, 0 } , 0.0};
+      chaplygin_discrete_state s = { dir, E, H, 0, 0, { 0, 0 }, 0.0 };
       chaplygin_discrete_event ev;
       ck_assert_ok (chaplygin_discrete_step (&sys, &s, 0, NULL, &s, &ev));
       ck_assert_int_eq (ev.reversal, 0);

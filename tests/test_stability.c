@@ -30,7 +30,7 @@ static double
 map_component (const chaplygin_discrete *sys, int dir, double E, double H,
                int out)
 {
-  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0}, t;
+  chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 }, t;
   ck_assert_ok (chaplygin_discrete_step (sys, &s, CHAPLYGIN_WANT_THETA, NULL,
                                          &t, NULL));
   return out == 1 ? t.E : out == 2 ? t.theta : t.H;
@@ -99,7 +99,7 @@ START_TEST (eq_3_9_reference)
       ck_assert_ok (chaplygin_discrete_init (&sys, ref_jacobian[i].L0,
                                              ref_jacobian[i].Delta));
       chaplygin_discrete_state s = { ref_jacobian[i].dir, ref_jacobian[i].E,
-                                     ref_jacobian[i].H, 0.3, 0.0, { 0, 0 } , 0.0};
+                                     ref_jacobian[i].H, 0.3, 0.0, { 0, 0 }, 0.0 };
       double J[16];
       ck_assert_ok (chaplygin_discrete_jacobian (&sys, &s, J));
       ck_assert_eps (J[9], ref_jacobian[i].df3dE, 16);
@@ -135,7 +135,7 @@ START_TEST (eq_3_9_richardson)
       double H = tu_uniform (&r, -2.0, 2.0);
       chaplygin_discrete sys;
       ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
-      chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0, 0 } , 0.0}, t;
+      chaplygin_discrete_state s = { dir, E, H, 0.0, 0.0, { 0, 0 }, 0.0 }, t;
       chaplygin_discrete_event ev;
       if (chaplygin_discrete_step (&sys, &s, 0, NULL, &t, &ev))
         continue;               /* invalid state (V+^2 <= 0) */
@@ -209,7 +209,7 @@ START_TEST (eq_3_9_errors)
 {
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, 1.0, 1.0 / 3));
-  chaplygin_discrete_state s = { 1, 0.5, 0.0, 0.0, 0.0, { 0, 0 } , 0.0};
+  chaplygin_discrete_state s = { 1, 0.5, 0.0, 0.0, 0.0, { 0, 0 }, 0.0 };
   double J[16];
   /* subnormal H (found in review): df3/dH is its H = 0 value to O(h^2) */
   {
@@ -218,7 +218,7 @@ START_TEST (eq_3_9_errors)
     __float128 a = atanq ((__float128) 1.3) - atanq ((__float128) 0.3);
     for (double Hs = 1e-322; Hs < 1e-150; Hs *= 1e17)
       {
-        chaplygin_discrete_state ts = { 1, 0.5, Hs, 0, 0, { 0, 0 } , 0.0};
+        chaplygin_discrete_state ts = { 1, 0.5, Hs, 0, 0, { 0, 0 }, 0.0 };
         ck_assert_ok (chaplygin_discrete_jacobian (&sy, &ts, J));
         ck_assert_eps (J[11], (double) a, 4);
       }
@@ -753,7 +753,7 @@ START_TEST (eq_B_14)
                                              tu_uniform (&r, 0.1, 3)));
       chaplygin_discrete_state s = { tu_uniform (&r, 0, 1) < 0.5 ? 1 : -1,
                                      tu_uniform (&r, 0.5, 2),
-                                     tu_uniform (&r, -1, 1), 0, 0, { 0, 0 } , 0.0}, t;
+                                     tu_uniform (&r, -1, 1), 0, 0, { 0, 0 }, 0.0 }, t;
       chaplygin_discrete_event ev;
       if (chaplygin_discrete_step (&sys, &s, 0, NULL, &t, &ev))
         continue;

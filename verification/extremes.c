@@ -349,7 +349,7 @@ long_run (const skate *sk, unsigned long N)
   model_init (&m, sk->L0, sk->Delta);
 
   /* the start: from a phase state by the library's conversion, or (E, H) */
-  chaplygin_discrete_state s0 = { sk->dir, sk->E, sk->H, 0.3, 0.0, { 0.0, 0.0 } , 0.0};
+  chaplygin_discrete_state s0 = { sk->dir, sk->E, sk->H, 0.3, 0.0, { 0.0, 0.0 }, 0.0 };
   if (sk->E == 0.0)
     {
       double q[4] = { sk->dir > 0 ? 0.0 : sk->Delta, sk->V, 0.3, sk->Omega };
@@ -891,7 +891,7 @@ massless_limit (int level)
                  far slot, the documented refusal */
               chaplygin_discrete sys;
               chaplygin_discrete_state in = { 1, 1.0, 0.5 * Delta, 0.0, 0.0,
-                                              { 0.0, 0.0 } , 0.0}, out;
+                                              { 0.0, 0.0 }, 0.0 }, out;
               if (chaplygin_discrete_init (&sys, L0, Delta)
                   || chaplygin_discrete_step (&sys, &in, 0, NULL, &out, NULL)
                   != CHAPLYGIN_ERANGE)
@@ -928,7 +928,7 @@ massless_limit (int level)
 
           /* the sleigh at rho/delta = 1/Delta */
           chaplygin_discrete sys;
-          chaplygin_discrete_state in = { dir, E, Hs, 0.0, 0.0, { 0.0, 0.0 } , 0.0}, out;
+          chaplygin_discrete_state in = { dir, E, Hs, 0.0, 0.0, { 0.0, 0.0 }, 0.0 }, out;
           chaplygin_discrete_event ev;
           if (chaplygin_discrete_init (&sys, L0, Delta)
               || chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_ALL, NULL,
@@ -969,7 +969,7 @@ massless_limit (int level)
           /* the library's massless route where x is a double */
           if (!pow2)
             continue;
-          chaplygin_discrete_state mi = { dir, E, Hm, 0.0, 0.0, { 0.0, 0.0 } , 0.0}, mo;
+          chaplygin_discrete_state mi = { dir, E, Hm, 0.0, 0.0, { 0.0, 0.0 }, 0.0 }, mo;
           chaplygin_discrete_event me;
           if (chaplygin_massless_step ((double) x, &mi, CHAPLYGIN_WANT_ALL,
                                        &mo, &me))
@@ -1128,7 +1128,7 @@ spinning (int level)
         for (int j = k; j != 0; j += j > 0 ? -1 : 1)
           E = nextafter (E, j > 0 ? HUGE_VAL : 0.0);
       chaplygin_discrete sys;
-      chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0}, out;
+      chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 }, out;
       chaplygin_discrete_event ev;
       char at[240];
       snprintf (at, sizeof at, "L0=%a Delta=%a dir=%d E=%a H=%a", L0, Delta,
@@ -1290,7 +1290,7 @@ delta_extremes (int level)
           if (!series_ok (&m, j, E, H))
             continue;
           chaplygin_discrete sys;
-          chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0}, out;
+          chaplygin_discrete_state in = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 }, out;
           chaplygin_discrete_event ev;
           char at[240];
           snprintf (at, sizeof at, "L0=%a Delta=%a dir=%d E=%a H=%a", L0,

@@ -1748,7 +1748,7 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
           for (int me = 0; me < NM; me++)
             if (use_method[me])
               {
-                chaplygin_discrete_state s0 = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 } , 0.0};
+                chaplygin_discrete_state s0 = { dir, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
                 chaplygin_discrete_state out = s0;
                 out.E = SENTINEL;
                 int rs = chaplygin_discrete_step (&sys, &s0, CHAPLYGIN_WANT_ALL,

@@ -122,7 +122,7 @@ main (void)
       int dir = tap_uniform (&seed, 0, 1) < 0.5 ? 1 : -1;
       double E = tap_uniform (&seed, 0.5, 2), H = k % 2 ? 0.0 : 0.05 * E;
       chaplygin_discrete sys;
-      chaplygin_discrete_state st = { dir, E, H, 0, 0, { 0, 0 } , 0.0};
+      chaplygin_discrete_state st = { dir, E, H, 0, 0, { 0, 0 }, 0.0 };
       double J[16];
       if (chaplygin_discrete_init (&sys, s.L0, s.Delta)
           || chaplygin_discrete_jacobian (&sys, &st, J))

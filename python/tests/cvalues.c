@@ -47,7 +47,7 @@ main (void)
       int st = chaplygin_discrete_init (&sys, ref_map[k].L0, ref_map[k].Delta);
       chaplygin_discrete_state in = { ref_map[k].dir, ref_map[k].E,
                                       ref_map[k].H, 0.125, 2.0,
-                                      { 0.5, -0.25 } , 0.0};
+                                      { 0.5, -0.25 }, 0.0 };
       printf ("map");
       d ("L0", ref_map[k].L0);
       d ("Delta", ref_map[k].Delta);
@@ -197,7 +197,7 @@ main (void)
       chaplygin_discrete_init (&sys, ref_jacobian[k].L0, ref_jacobian[k].Delta);
       chaplygin_discrete_state s = { ref_jacobian[k].dir, ref_jacobian[k].E,
                                      ref_jacobian[k].H, 0.0, 0.0,
-                                     { 0.0, 0.0 } , 0.0};
+                                     { 0.0, 0.0 }, 0.0 };
       double J[16] = { 0 };
       int st = chaplygin_discrete_jacobian (&sys, &s, J);
       printf ("jacobian");
