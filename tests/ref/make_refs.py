@@ -233,6 +233,15 @@ def segment_ref(L0, Delta, d, E, H):
     return rev, newdir, E1, H1, sign(H) * th, ta, (root if rev else mpf(0))
 
 
+def eh_of_phase(L0, Delta, d, V, Om):
+    """E, H as the doubles a test passes: from the phase state (V, Om) at
+    the start end of direction d, correctly rounded."""
+    l0 = mpf(L0) + (mpf(0) if d > 0 else mpf(Delta))
+    n0 = 1 + l0 ** 2
+    return (float((mpf(V) ** 2 + n0 * mpf(Om) ** 2) / 2),
+            float(n0 * mpf(Om)))
+
+
 def map_cases():
     rows = []
     rnd = random.Random(20261121)
@@ -260,12 +269,7 @@ def map_cases():
     out = []
     for (L0, Dl, d, V, Om) in rows:
         L0f, Dlf = float(L0), float(Dl)
-        Dp = 0.0 if d > 0 else Dlf
-        l0 = mpf(L0f) + mpf(Dp)
-        n0 = 1 + l0 ** 2
-        # E, H as the doubles the test will pass (from the phase state).
-        E = float((mpf(V) ** 2 + n0 * mpf(Om) ** 2) / 2)
-        H = float(n0 * mpf(Om))
+        E, H = eh_of_phase(L0f, Dlf, d, V, Om)
         rev, nd, E1, H1, th, ta, root = segment_ref(L0f, Dlf, d, E, H)
         out.append((L0f, Dlf, d, E, H, rev, nd, E1, H1, th, ta, root))
     with open(OUT + "ref_map.h", "w") as f:
@@ -491,8 +495,7 @@ def segment_flow_cases():
         Dp = 0.0 if d > 0 else Dlf
         l0 = mpf(L0f) + mpf(Dp)
         n0 = 1 + l0 ** 2
-        E = float((mpf(V) ** 2 + n0 * mpf(Om) ** 2) / 2)
-        H = float(n0 * mpf(Om))
+        E, H = eh_of_phase(L0f, Dlf, d, V, Om)
         rev, nd, E1, H1, th, ta, root = segment_ref(L0f, Dlf, d, E, H)
         Em, Hm, L0m = mpf(E), mpf(H), mpf(L0f)
         V0 = sqrt(2 * Em - Hm ** 2 / n0)
