@@ -883,6 +883,7 @@ m_lib_state (double L0, int dir, double V, double Om, double theta,
   s->tau = 0.0;
   s->peg[0] = peg[0];
   s->peg[1] = peg[1];
+  s->V = 0.0;                   /* E and H alone */
 }
 
 /* (b1) one step of chaplygin_massless_step against (M), from states given
