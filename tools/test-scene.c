@@ -125,7 +125,7 @@ START_TEST (discrete_defaults)
   ck_assert (sc.theta == 0);
   ck_assert_int_eq (sc.collisions, 20);
   ck_assert (isnan (sc.duration));
-  ck_assert_int_eq (sc.samples, -1);
+  ck_assert_int_eq (sc.samples, 0);
   ck_assert_uint_eq (sc.outputs, SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA
                      | SCENE_OUT_TAU | SCENE_OUT_PEG);
   ck_assert_int_eq (sc.method, CHAPLYGIN_CLOSED_FORM);
@@ -231,7 +231,7 @@ START_TEST (massless)
   ck_assert (sc.L0 == -0.25 && sc.V == -1 && sc.Omega == 0.5);
   ck_assert (isnan (sc.Delta));
   ck_assert_int_eq (sc.collisions, 7);
-  ck_assert_int_eq (sc.samples, -1);
+  ck_assert_int_eq (sc.samples, 0);
   ck_assert_uint_eq (sc.outputs, SCENE_OUT_PEG);
 }
 END_TEST
