@@ -54,9 +54,11 @@ tools_fuzz_scene_LDADD = lib/libchaplygin-core.la $(INIH_LIBS) \
 
 CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
 	tools/test-scene tools/test-number tools/fuzz-replay.sh \
-	tools/test-scenes.sh tools/test-eq.sh tools/test-manpage.sh
+	tools/test-scenes.sh tools/test-eq.sh tools/test-manpage.sh \
+	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh
 TESTS += $(CLI_TESTS)
 EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
+	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
 	tools/fuzz-replay.sh tools/test-scenes.sh tools/test-eq.sh \
 	tools/test-manpage.sh tools/installcheck-examples.sh tools/fuzz-corpus tools/fuzz-scene.dict \
 	doc/figures/style.gp tests/ref/eq.tsv tests/ref/make_eq_refs.py

@@ -149,7 +149,7 @@ panels_script (FILE *gp, const scene *sc, const char *path, int have_skate,
                int have_smooth)
 {
   const int massless = sc->model == SCENE_MASSLESS;
-  const char *len = massless ? " (slot lengths)" : "/{/Symbol r}";
+  const char *len = massless ? " (slot lengths)" : "/ρ";
   const char *both = have_skate ? "$d" : "$s";
 
   fputs ("set multiplot layout 2,3 title ", gp);
@@ -174,12 +174,12 @@ panels_script (FILE *gp, const scene *sc, const char *path, int have_skate,
     fprintf (gp, "$s using 'x':'y' with lines %s title '%s'",
              have_skate ? "@smooth" : "@discrete",
              have_skate ? "smooth skate: C" : "contact point C");
-  fputs ("\nunset key; set size noratio; set xlabel '{/Symbol t}'\n", gp);
+  fputs ("\nunset key; set size noratio; set xlabel 'τ'\n", gp);
 
   static const char *const quantity[5][3] = {
     { "V", "V", "V" },
-    { "Omega", "{/Symbol W}", "{/Symbol W}" },
-    { "theta", "{/Symbol q}", "{/Symbol q} (rad)" },
+    { "Omega", "Ω", "Ω" },
+    { "theta", "θ", "θ (rad)" },
     { "E", "E", "E" },
     { "H", "H", "H" }
   };
@@ -242,18 +242,18 @@ sweep_script (FILE *gp, const scene *sc, const char *path,
       fprintf (gp, "array Y[%zu]\n", sc->n_y);
       for (size_t i = 0; i < sc->n_y; i++)
         fprintf (gp, "Y[%zu] = %.17g\n", i + 1, sc->y[i]);
-      fputs ("set xlabel 'L_0/{/Symbol D}'; set ylabel '{/Symbol s}_4'\n"
+      fputs ("set xlabel 'L_0/Δ'; set ylabel 'σ_4'\n"
              "set yrange [-3:3]; set key top left\n"
              "plot for [i = 1:|Y|] $d using 'x':(column('y') == Y[i] ? "
              "column('sigma4') : NaN) with lines lw 1.5 title "
-             "sprintf('(1/{/Symbol D})^2 = %g', Y[i]), "
+             "sprintf('(1/Δ)^2 = %g', Y[i]), "
              "1 with lines dt 3 lc rgb 'black' notitle, "
              "-1 with lines dt 3 lc rgb 'black' notitle\n", gp);
       break;
     case SWEEP_STABILITY:
       fprintf (gp, "set xrange [%.17g:%.17g]; set yrange [%.17g:%.17g]\n",
                sc->x_min, sc->x_max, sc->y_min, sc->y_max);
-      fputs ("set xlabel 'L_0/{/Symbol D}'; set ylabel '(1/{/Symbol D})^2'\n"
+      fputs ("set xlabel 'L_0/Δ'; set ylabel '(1/Δ)^2'\n"
              "set palette defined (0 'white', 1 '#b0b0b0', 2 '#7fa7d9', "
              "3 '#2c4f7c')\n"
              "set cbrange [-0.5:3.5]; set palette maxcolors 4\n"
@@ -437,6 +437,7 @@ write_script (FILE *gp, const figure_runs *f, const scene *sc,
               const char *path, image_format format)
 {
   fputs (plot_style, gp);
+  fputs ("set encoding utf8\n", gp);
   if (format == FORMAT_SVG)
     fputs ("set terminal svg size 1200,760 font 'DejaVu Sans,10' "
            "linewidth 1.3 background rgb 'white'\n", gp);

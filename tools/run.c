@@ -567,6 +567,8 @@ skate_run_collisions (const skate *k, segment_start *cur, sink *s,
               && collision_row (s, outputs, n, next.dir > 0 ? 0.0 : k->Delta,
                                 ev.reversal, &p) != 0)
             {
+              if (s->full)
+                *end_n = n - 1;         /* the last row written */
               progress_finish (&bar);
               return RUN_FAILED;
             }
@@ -857,11 +859,14 @@ skate_run (const scene *sc, const char *path, run_stats *stats, sink *s)
   if (rc == RUN_FAILED && s->full && !s->failed)
     {
       snprintf (why, sizeof why, "max_rows: the limit of %ld rows is "
-                "reached", s->max_rows);
+                "reached%s", s->max_rows, sc->samples > 0
+                ? " (in the segment ending at this collision)" : "");
       rc = RUN_OK;
     }
   if (rc != RUN_OK)
     return rc;
+  /* end_n: the collision of the last row (per collision) or segment
+     (dense) written */
   if (why[0])
     fprintf (stderr, "chaplygin: %s: stopped at collision %ld of %ld: %s\n",
              path, end_n, sc->collisions, why);
