@@ -1,12 +1,12 @@
-/* sweep.c -- "chaplygin sweep SCENE.ini": the parameter sweeps of the
-   paper's Figures 2(a), 2(b) and 3 as CSV, computed in parallel with
-   OpenMP and split across processes or machines with --shard i/N.
+/* sweep.c -- the parameter sweeps of the paper's Figures 2(a), 2(b) and
+   3 as CSV, computed in parallel with OpenMP and split across processes
+   or machines with --shard i/N (the command line: sweep-main.c).
 
    Every point of a sweep has a global index k, and its row depends on k
    alone, so the output is the same for any number of threads, and the
    shards' outputs concatenated in shard order (each begins with the
-   header line) are the unsharded output once the repeated header lines
-   are dropped.  Shard s of N holds the k in
+   header line, then its provenance lines) are the unsharded output once
+   the repeated header lines and the '#' lines are dropped.  Shard s of N holds the k in
    [floor(s T/N), floor((s+1) T/N)), T the number of points.
 
    Grid values: v_j = lo + (hi - lo) (j/(n - 1)), j = 0 .. n-1, with
@@ -19,10 +19,11 @@
    sigma4 (Fig. 2(a)), k = i nx + j for y = the i-th value of the [sweep]
    y list and x = x_j (x = L0/Delta, y = (1/Delta)^2):
      k,y,x,sigma4,status
-       sigma4  (3.10) for the direction [sweep] dir; empty if status != 0
-       status  0, or the library's status at this point (5,
-               CHAPLYGIN_ERANGE: sigma4 is infinite, at y = 0 with x = -1
-               for dir +1 or x = 0 for dir -1)
+       sigma4  (3.10) for the direction [sweep] dir; empty unless
+               status is SUCCESS
+       status  SUCCESS, or the name of the library's status at this point
+               (status_name: ERANGE where sigma4 is infinite, at y = 0
+               with x = -1 for dir +1 or x = 0 for dir -1)
 
    stability (Fig. 2(b)), k = i nx + j for y = y_i, x = x_j:
      k,x,y,region,forward,backward
@@ -43,14 +44,13 @@
        reversals   velocity reversals on the way
        E_final     final energy (B.10) (undecided: E after the collisions)
        V_final     final velocity (spin: 0; undecided: V+ after them)
-       status      0, or the library's status at this point (then the
-                   fate fields are empty).  A grid point V+ = 0 (not a
-                   state just after a collision) is not passed to the
-                   library: its row has status 3 (CHAPLYGIN_ESTATE).
+       status      SUCCESS, or the name of the library's status at this
+                   point (then the fate fields are empty).  A grid point
+                   V+ = 0 (not a state just after a collision) is not
+                   passed to the library: its row has status ESTATE.
 
-   Exit status: 0 success (points where the library failed are rows with a
-   status); 1 output error (also: -o FILE cannot be opened); 2 usage error or a scene the sweep cannot use
-   (no [sweep] section, a skate chaplygin_discrete_init rejects, ...).  */
+   A shard with more points than [run] max_rows is refused before anything
+   is written (bounds.h). */
 #include <config.h>
 
 #include <errno.h>
