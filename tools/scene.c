@@ -722,7 +722,7 @@ fail_unknown (parse_ctx *c, const char *section, int sec, const char *name)
             return;
           }
       fail (c, c->lineno, section, name, "unknown section (sections: "
-            "scene, parameters, initial, run, sweep)");
+            "scene, parameters, initial, run, sweep, plot)");
       return;
     }
   for (i = 0; i < K_COUNT; i++)
