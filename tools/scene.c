@@ -1471,9 +1471,12 @@ scene_write (const scene *sc, FILE *out, const char *prefix)
           if (!header)
             fprintf (out, "%s[%s]\n", prefix, section_names[sec]);
           header = 1;
-          /* a line of INI_MAX_LINE - 2 bytes at most, as read */
+          /* A line of INI_MAX_LINE - 2 bytes at most, as read; no space
+             before a value that begins with ';' (inih would take " ;"
+             for the start of a comment). */
           if (strlen (keys[k].name) + strlen (v) + 3 <= INI_MAX_LINE - 2)
-            fprintf (out, "%s%s = %s\n", prefix, keys[k].name, v);
+            fprintf (out, "%s%s =%s%s\n", prefix, keys[k].name,
+                     v[0] == ';' ? "" : " ", v);
           else
             fprintf (out, "%s%s=%s\n", prefix, keys[k].name, v);
         }

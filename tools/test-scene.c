@@ -807,6 +807,9 @@ START_TEST (writing)
               "[run]\ncollisions = 1e3\noutputs = G,E\nmethod = ode\n"
               "stop_H = 1/7\n", "L0 = -1/3\nDelta = 0x1p-3\n");
   write_back (SMOOTH, "samples = 200\noutputs = E,H,theta,tau,V,Omega\n");
+  /* a value that begins with ';' (found by the fuzzer): no space before
+     it, which inih would take for the start of a comment */
+  write_back (DISCRETE "[scene]\ntitle =; a = b ; c\n", "title =; a = b\n");
   write_back (MASSLESS "method = closed-form\n", "model = massless");
   write_back (SIGMA4, "[run]\nmax_rows = 10000000\n[sweep]\nkind = sigma4\n");
   write_back (BASINS, "[run]\ncollisions = 1000\nmax_rows = 10000000\n"

@@ -96,8 +96,10 @@ def _columns(text):
         fields = [r[j] if j < len(r) else '' for r in rows]
         missing = [f == '' for f in fields]
         if name == 'status':
-            vals = np.array([Status[f] if f else 0 for f in fields],
-                            dtype=np.int64)
+            # a name (SUCCESS, ERANGE, ...), or a number the program has no
+            # name for
+            vals = np.array([0 if not f else int(f) if f.lstrip('-').isdigit()
+                             else Status[f] for f in fields], dtype=np.int64)
         elif name in INTEGER_COLUMNS:
             vals = np.array([int(f) if f else 0 for f in fields],
                             dtype=np.int64)

@@ -163,3 +163,22 @@ def test_to_ini_and_values():
     base['parameters']['Delta'] = 1 / 3
     r2 = c.run_scene(base)
     assert all(np.array_equal(r1[k], r2[k]) for k in r1)
+
+
+def test_bounds():
+    """A scene's bounds hold in run_scene as in the program: a stop
+    condition ends a run of 1e9 collisions at once, a run beyond max_rows
+    is refused."""
+    sc = {'scene': {'model': 'discrete'},
+          'parameters': {'L0': 1, 'Delta': '1/3'},
+          'initial': {'V': 1, 'Omega': 0.5},
+          'run': {'collisions': '1e9', 'stop_H': '1e-9', 'every': 10,
+                  'outputs': ['E', 'H']}}
+    cols = c.run_scene(sc)
+    n, E, H = cols['n'], cols['E'], cols['H']
+    assert n[0] == 0 and all(n[1:-1] % 10 == 0)
+    assert abs(H[-1]) < 1e-9 * np.sqrt(2 * E[-1])
+    assert abs(H[-2]) >= 1e-9 * np.sqrt(2 * E[-2])
+    del sc['run']['stop_H']
+    with pytest.raises(c.SceneError, match='max_rows'):
+        c.run_scene(sc)
