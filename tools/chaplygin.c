@@ -638,22 +638,10 @@ parse_run (int argc, char **argv, run_args *args)
             }
           continue;
         }
-      if (args->scene_path)
-        {
-          fprintf (stderr, "chaplygin: run: unexpected argument '%s' (one "
-                   "scene file only)\n", arg);
-          usage_hint ();
-          return EXIT_USAGE;
-        }
-      args->scene_path = arg;
+      if (cli_scene_operand ("run", arg, &args->scene_path) != 0)
+        return EXIT_USAGE;
     }
-  if (!args->scene_path)
-    {
-      fputs ("chaplygin: run: missing scene file\n", stderr);
-      usage_hint ();
-      return EXIT_USAGE;
-    }
-  return -1;
+  return cli_scene_given ("run", args->scene_path) != 0 ? EXIT_USAGE : -1;
 }
 
 /* "chaplygin run": load the scene, check it, open the output, run. */

@@ -13,6 +13,14 @@
 
 static char command_line[COMMAND_MAX];
 
+/* "Try 'chaplygin CMD --help' ...". */
+static void
+usage_hint (const char *cmd)
+{
+  fprintf (stderr, "Try 'chaplygin %s --help' for more information.\n",
+           cmd);
+}
+
 void
 cli_set_command (int argc, char **argv)
 {
@@ -52,8 +60,7 @@ cli_option (const char *cmd, const char *name, const char *short_name,
         {
           fprintf (stderr, "chaplygin: %s: option '%s' requires a value\n",
                    cmd, arg);
-          fprintf (stderr, "Try 'chaplygin %s --help' for more "
-                   "information.\n", cmd);
+          usage_hint (cmd);
           return -1;
         }
       v = argv[(*i)++];
@@ -68,6 +75,30 @@ cli_option (const char *cmd, const char *name, const char *short_name,
     }
   *value = v;
   return 1;
+}
+
+int
+cli_scene_operand (const char *cmd, const char *arg, const char **path)
+{
+  if (*path)
+    {
+      fprintf (stderr, "chaplygin: %s: unexpected argument '%s' (one scene "
+               "file only)\n", cmd, arg);
+      usage_hint (cmd);
+      return 2;
+    }
+  *path = arg;
+  return 0;
+}
+
+int
+cli_scene_given (const char *cmd, const char *path)
+{
+  if (path)
+    return 0;
+  fprintf (stderr, "chaplygin: %s: missing scene file\n", cmd);
+  usage_hint (cmd);
+  return 2;
 }
 
 int

@@ -20,6 +20,14 @@ const char *cli_command (void);
 int cli_option (const char *cmd, const char *name, const char *short_name,
                 int argc, char **argv, int *i, const char **value);
 
+/* ARG, an operand of the command CMD, is its scene file: *PATH, which
+   must not be set yet.  Returns 0, or 2 after a message. */
+int cli_scene_operand (const char *cmd, const char *arg, const char **path);
+
+/* After the arguments of CMD: 0 if the scene file PATH was given, else 2
+   after a message. */
+int cli_scene_given (const char *cmd, const char *path);
+
 /* Read the scene PATH ("-": standard input) into *SC.  Returns 0, or 2
    after a message.  *NAME (may be NULL) receives the name for messages. */
 int cli_load_scene (const char *path, scene *sc, const char **name);

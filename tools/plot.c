@@ -527,18 +527,15 @@ plot_main (int argc, char **argv)
             }
           continue;
         }
-      if (scene_path)
-        {
-          fprintf (stderr, "chaplygin: plot: unexpected argument '%s' (one "
-                   "scene file only)\n", arg);
-          return EXIT_USAGE;
-        }
-      scene_path = arg;
+      if (cli_scene_operand ("plot", arg, &scene_path) != 0)
+        return EXIT_USAGE;
     }
-  if (!scene_path || !output_name)
+  if (cli_scene_given ("plot", scene_path) != 0)
+    return EXIT_USAGE;
+  if (!output_name)
     {
-      fprintf (stderr, "chaplygin: plot: missing %s\n", !scene_path
-               ? "scene file" : "output file (-o FILE.png, -o FILE.svg)");
+      fputs ("chaplygin: plot: missing output file (-o FILE.png, -o "
+             "FILE.svg)\n", stderr);
       fputs ("Try 'chaplygin plot --help' for more information.\n", stderr);
       return EXIT_USAGE;
     }

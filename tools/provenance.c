@@ -6,28 +6,6 @@
 
 #include "provenance.h"
 
-const char *
-provenance_quote (const char *text, char *buf, size_t len)
-{
-  static const char hex[] = "0123456789abcdef";
-  size_t n = 0;
-  for (; *text && n + 5 < len; text++)
-    {
-      unsigned char ch = (unsigned char) *text;
-      if (ch < 0x20 || ch == 0x7f)
-        {
-          buf[n++] = '\\';
-          buf[n++] = 'x';
-          buf[n++] = hex[ch >> 4];
-          buf[n++] = hex[ch & 15];
-        }
-      else
-        buf[n++] = (char) ch;
-    }
-  buf[n] = '\0';
-  return buf;
-}
-
 /* The method line of SC (COMPARE: its companion). */
 static void
 method_line (FILE *out, const scene *sc, int compare)
@@ -53,9 +31,9 @@ provenance_header (FILE *out, const char *command, const char *path,
 {
   char buf[1024];
   fprintf (out, "# chaplygin %s: %s\n", PACKAGE_VERSION,
-           provenance_quote (command, buf, sizeof buf));
+           scene_shown (buf, sizeof buf, command, sizeof buf));
   fprintf (out, "# scene file: %s%s\n",
-           provenance_quote (path, buf, sizeof buf),
+           scene_shown (buf, sizeof buf, path, sizeof buf),
            compare ? " (its smooth companion)" : "");
   method_line (out, sc, compare);
   fputs ("# numbers: %.17g, read back exactly; lines from '#' on are "

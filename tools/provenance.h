@@ -20,8 +20,4 @@ void provenance_header (FILE *out, const char *command, const char *path,
 void provenance_end (FILE *out, const char *fmt, ...)
   __attribute__ ((format (printf, 2, 3)));
 
-/* TEXT into BUF (LEN bytes) with control bytes as \xHH, for a comment or
-   a message on one line; returns BUF. */
-const char *provenance_quote (const char *text, char *buf, size_t len);
-
 #endif

@@ -62,6 +62,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -192,16 +193,13 @@ typedef struct
   size_t errlen;
 } parse_ctx;
 
-/* Copies at most SCENE_SHOWN bytes of S to BUF (SIZE >= 4 SCENE_SHOWN + 4
-   bytes) with control bytes as \xHH and "..." where it is cut; returns
-   BUF. */
-static const char *
-shown (char *buf, size_t size, const char *s)
+const char *
+scene_shown (char *buf, size_t size, const char *s, size_t max)
 {
   static const char hex[] = "0123456789abcdef";
   size_t i, n = 0;
 
-  for (i = 0; s[i] && i < SCENE_SHOWN && n + 8 < size; i++)
+  for (i = 0; s[i] && i < max && n + 8 < size; i++)
     {
       unsigned char ch = (unsigned char) s[i];
       if (ch < 0x20 || ch == 0x7f)
@@ -221,6 +219,13 @@ shown (char *buf, size_t size, const char *s)
     }
   buf[n] = '\0';
   return buf;
+}
+
+/* S as messages show it: at most SCENE_SHOWN bytes (BUF of SHOWN_SIZE). */
+static const char *
+shown (char *buf, size_t size, const char *s)
+{
+  return scene_shown (buf, size, s, SCENE_SHOWN);
 }
 
 #define SHOWN_SIZE (4 * SCENE_SHOWN + 12)
@@ -1336,24 +1341,53 @@ format_real (double x, char *buf, size_t size)
   return buf;
 }
 
-/* The real of key K: as the file gave it, else FIELD (NULL if NaN: not
-   set). */
-static const char *
-real_text (const scene *sc, int k, double field, char *buf, size_t size)
-{
-  if (sc->text[k][0])
-    return sc->text[k];
-  return isnan (field) ? NULL : format_real (field, buf, size);
-}
+/* The field of each real and integer key (offset into a scene), 0 for the
+   others (no field is at offset 0: title comes first). */
+static const size_t real_field[K_COUNT] = {
+  [K_L0] = offsetof (scene, L0), [K_DELTA] = offsetof (scene, Delta),
+  [K_L] = offsetof (scene, L), [K_V] = offsetof (scene, V),
+  [K_OMEGA] = offsetof (scene, Omega), [K_THETA] = offsetof (scene, theta),
+  [K_DURATION] = offsetof (scene, duration),
+  [K_TOLERANCE] = offsetof (scene, tolerance),
+  [K_STOP_H] = offsetof (scene, stop_H),
+  [K_STOP_TAU] = offsetof (scene, stop_tau),
+  [K_X_MIN] = offsetof (scene, x_min), [K_X_MAX] = offsetof (scene, x_max),
+  [K_Y_MIN] = offsetof (scene, y_min), [K_Y_MAX] = offsetof (scene, y_max)
+};
+static const size_t long_field[K_COUNT] = {
+  [K_COLLISIONS] = offsetof (scene, collisions),
+  [K_SAMPLES] = offsetof (scene, samples), [K_EVERY] = offsetof (scene, every),
+  [K_MAX_ROWS] = offsetof (scene, max_rows), [K_NX] = offsetof (scene, nx),
+  [K_NY] = offsetof (scene, ny)
+};
 
 /* The value scene_write writes for key K of SC into BUF (SIZE bytes), or
-   NULL for a key without a value. */
+   NULL for a key without a value: a real as the file gave it, else the
+   field (NULL if NaN: not set); an integer as the field (NULL if negative:
+   not set); words and lists from their fields. */
 static const char *
 value_text (const scene *sc, int k, char *buf, size_t size)
 {
   size_t n = 0;
 
-  switch ((enum scene_key) k)
+  if (real_field[k])
+    {
+      double x;
+      memcpy (&x, (const char *) sc + real_field[k], sizeof x);
+      if (sc->text[k][0])
+        return sc->text[k];
+      return isnan (x) ? NULL : format_real (x, buf, size);
+    }
+  if (long_field[k])
+    {
+      long x;
+      memcpy (&x, (const char *) sc + long_field[k], sizeof x);
+      if (x < 0)
+        return NULL;
+      snprintf (buf, size, "%ld", x);
+      return buf;
+    }
+  switch (k)                    /* the words and lists */
     {
     case K_MODEL:
       return model_names[sc->model];
@@ -1361,28 +1395,6 @@ value_text (const scene *sc, int k, char *buf, size_t size)
       return sc->compare ? "smooth" : NULL;
     case K_TITLE:
       return sc->title[0] ? sc->title : NULL;
-    case K_L0:
-      return real_text (sc, k, sc->L0, buf, size);
-    case K_DELTA:
-      return real_text (sc, k, sc->Delta, buf, size);
-    case K_L:
-      return real_text (sc, k, sc->L, buf, size);
-    case K_V:
-      return real_text (sc, k, sc->V, buf, size);
-    case K_OMEGA:
-      return real_text (sc, k, sc->Omega, buf, size);
-    case K_THETA:
-      return real_text (sc, k, sc->theta, buf, size);
-    case K_COLLISIONS:
-      if (sc->collisions < 0)
-        return NULL;
-      snprintf (buf, size, "%ld", sc->collisions);
-      return buf;
-    case K_DURATION:
-      return real_text (sc, k, sc->duration, buf, size);
-    case K_SAMPLES:
-      snprintf (buf, size, "%ld", sc->samples);
-      return buf;
     case K_OUTPUTS:
       buf[0] = '\0';
       for (int i = 0; i < SCENE_N_OUTPUTS; i++)
@@ -1396,36 +1408,10 @@ value_text (const scene *sc, int k, char *buf, size_t size)
       return buf;
     case K_METHOD:
       return method_names[sc->method];
-    case K_TOLERANCE:
-      return real_text (sc, k, sc->tolerance, buf, size);
-    case K_EVERY:
-      snprintf (buf, size, "%ld", sc->every);
-      return buf;
     case K_STOP_FATE:
       return yes_no[sc->stop_fate != 0];
-    case K_STOP_H:
-      return real_text (sc, k, sc->stop_H, buf, size);
-    case K_STOP_TAU:
-      return real_text (sc, k, sc->stop_tau, buf, size);
-    case K_MAX_ROWS:
-      snprintf (buf, size, "%ld", sc->max_rows);
-      return buf;
     case K_KIND:
       return kind_names[sc->sweep];
-    case K_X_MIN:
-      return real_text (sc, k, sc->x_min, buf, size);
-    case K_X_MAX:
-      return real_text (sc, k, sc->x_max, buf, size);
-    case K_NX:
-      snprintf (buf, size, "%ld", sc->nx);
-      return buf;
-    case K_Y_MIN:
-      return real_text (sc, k, sc->y_min, buf, size);
-    case K_Y_MAX:
-      return real_text (sc, k, sc->y_max, buf, size);
-    case K_NY:
-      snprintf (buf, size, "%ld", sc->ny);
-      return buf;
     case K_Y:
       if (sc->text[k][0])
         return sc->text[k];
@@ -1444,7 +1430,6 @@ value_text (const scene *sc, int k, char *buf, size_t size)
       return buf;
     case K_VIEW:
       return view_names[sc->view];
-    case K_COUNT:
     default:
       break;
     }

@@ -192,6 +192,11 @@ int scene_parse (const char *text, size_t len, const char *name, scene *sc,
    writing failed. */
 int scene_write (const scene *sc, FILE *out, const char *prefix);
 
+/* At most MAX bytes of the text S into BUF (SIZE >= 12 bytes), to be shown
+   on one line: control bytes as \xHH, "..." where it is cut (by MAX or by
+   SIZE); returns BUF. */
+const char *scene_shown (char *buf, size_t size, const char *s, size_t max);
+
 /* Whether SC has a stop condition (stop_fate, stop_H or stop_tau). */
 int scene_has_stop (const scene *sc);
 

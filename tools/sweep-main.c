@@ -208,22 +208,10 @@ parse_sweep_args (int argc, char **argv, sweep_args *args)
             }
           continue;
         }
-      if (args->scene_path)
-        {
-          fprintf (stderr, "chaplygin: sweep: unexpected argument '%s'\n",
-                   arg);
-          usage_hint ();
-          return EXIT_USAGE;
-        }
-      args->scene_path = arg;
+      if (cli_scene_operand ("sweep", arg, &args->scene_path) != 0)
+        return EXIT_USAGE;
     }
-  if (!args->scene_path)
-    {
-      fputs ("chaplygin: sweep: missing scene file\n", stderr);
-      usage_hint ();
-      return EXIT_USAGE;
-    }
-  return -1;
+  return cli_scene_given ("sweep", args->scene_path) != 0 ? EXIT_USAGE : -1;
 }
 
 int
