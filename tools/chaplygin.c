@@ -655,9 +655,7 @@ run_scene (int argc, char **argv)
 
   static scene sc;              /* large: keep it off the stack */
   const char *name;
-  rc = cli_load_scene (args.scene_path, &sc, &name);
-  if (rc == EXIT_OK && args.max_rows)
-    rc = cli_max_rows (args.max_rows, &sc.max_rows);
+  rc = cli_load_scene (args.scene_path, args.max_rows, &sc, &name);
   if (rc != EXIT_OK)
     return rc;
   if (args.print_scene)

@@ -102,7 +102,8 @@ cli_scene_given (const char *cmd, const char *path)
 }
 
 int
-cli_load_scene (const char *path, scene *sc, const char **name)
+cli_load_scene (const char *path, const char *max_rows, scene *sc,
+                const char **name)
 {
   char err[SCENE_ERRLEN];
   const char *shown = strcmp (path, "-") == 0 ? "(standard input)" : path;
@@ -116,7 +117,7 @@ cli_load_scene (const char *path, scene *sc, const char **name)
       fprintf (stderr, "chaplygin: %s\n", err);
       return 2;
     }
-  return 0;
+  return max_rows ? cli_max_rows (max_rows, &sc->max_rows) : 0;
 }
 
 int

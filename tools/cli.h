@@ -28,9 +28,12 @@ int cli_scene_operand (const char *cmd, const char *arg, const char **path);
    after a message. */
 int cli_scene_given (const char *cmd, const char *path);
 
-/* Read the scene PATH ("-": standard input) into *SC.  Returns 0, or 2
-   after a message.  *NAME (may be NULL) receives the name for messages. */
-int cli_load_scene (const char *path, scene *sc, const char **name);
+/* Read the scene PATH ("-": standard input) into *SC, with MAX_ROWS (the
+   text of --max-rows, NULL if not given) for its max_rows.  Returns 0, or
+   2 after a message.  *NAME (may be NULL) receives the name for
+   messages. */
+int cli_load_scene (const char *path, const char *max_rows, scene *sc,
+                    const char **name);
 
 /* --max-rows TEXT: an integer 1 .. 2^53 - 1 (number.h) into *N.  Returns
    0, or 2 after a message. */

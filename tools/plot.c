@@ -552,9 +552,7 @@ plot_main (int argc, char **argv)
   static scene sc;                  /* large: keep them off the stack */
   static figure_runs runs;
   const char *name;
-  int rc = cli_load_scene (scene_path, &sc, &name);
-  if (rc == EXIT_OK && max_rows)
-    rc = cli_max_rows (max_rows, &sc.max_rows);
+  int rc = cli_load_scene (scene_path, max_rows, &sc, &name);
   if (rc == EXIT_OK)
     rc = plan_figure (&sc, name, &runs);
   if (rc != EXIT_OK)

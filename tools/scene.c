@@ -415,6 +415,25 @@ read_number (parse_ctx *c, int k, const char *value, double *x)
   return -1;
 }
 
+/* Reads the number VALUE of key K, which must be > 0, into *X. */
+static int
+read_positive (parse_ctx *c, int k, const char *value, double *x)
+{
+  char buf[SHOWN_SIZE];
+  double v;
+
+  if (read_number (c, k, value, &v))
+    return -1;
+  if (!(v > 0))
+    {
+      fail_key (c, k, c->lineno, "value '%s' is not > 0",
+                shown (buf, sizeof buf, value));
+      return -1;
+    }
+  *x = v;
+  return 0;
+}
+
 /* Reads the integer VALUE of key K into *X, LO <= x <= HI (number.h: an
    exact integer in any form of a number, 1e3 among them). */
 static int
@@ -582,16 +601,7 @@ read_value (parse_ctx *c, int k, const char *value)
     case K_L0:
       return read_number (c, k, value, &sc->L0);
     case K_DELTA:
-      if (read_number (c, k, value, &x))
-        return -1;
-      if (!(x > 0))
-        {
-          fail_key (c, k, c->lineno, "value '%s' is not > 0",
-                    shown (buf, sizeof buf, value));
-          return -1;
-        }
-      sc->Delta = x;
-      return 0;
+      return read_positive (c, k, value, &sc->Delta);
     case K_L:
       return read_number (c, k, value, &sc->L);
     case K_V:
@@ -641,17 +651,9 @@ read_value (parse_ctx *c, int k, const char *value)
     case K_STOP_FATE:
       return read_word (c, k, value, yes_no, 2, "no, yes", &sc->stop_fate);
     case K_STOP_H:
+      return read_positive (c, k, value, &sc->stop_H);
     case K_STOP_TAU:
-      if (read_number (c, k, value, &x))
-        return -1;
-      if (!(x > 0))
-        {
-          fail_key (c, k, c->lineno, "value '%s' is not > 0",
-                    shown (buf, sizeof buf, value));
-          return -1;
-        }
-      *(k == K_STOP_H ? &sc->stop_H : &sc->stop_tau) = x;
-      return 0;
+      return read_positive (c, k, value, &sc->stop_tau);
     case K_MAX_ROWS:
       return read_integer (c, k, value, 1, SCENE_MAX_ROWS_MAX, &sc->max_rows);
     case K_VIEW:
