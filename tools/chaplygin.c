@@ -1,16 +1,18 @@
 /* chaplygin.c -- the command-line program of libchaplygin.
  *
- *   chaplygin run SCENE.ini [-o FILE] [--compare] [--stats]
+ *   chaplygin run SCENE.ini [OPTION...]
  *                                 run a scene (scene.h, run.c)
- *   chaplygin sweep SCENE.ini ... a parameter sweep (sweep.c)
+ *   chaplygin sweep SCENE.ini ... a parameter sweep (sweep-main.c)
  *   chaplygin skate [OPTION...]   iterate the discrete skate's return map
+ *   chaplygin plot SCENE.ini -o FILE   draw a scene (plot.c)
+ *   chaplygin eq LABEL ...        evaluate an equation (eq.c)
  *   chaplygin --help | -h         usage
  *   chaplygin --version           version
  *
  * Exit status: 0 success; 1 a library failure during the run (or a write
  * error); 2 a usage error (unknown option or subcommand, missing or bad
- * value, an invalid scene).  Every message goes to stderr as
- * "chaplygin: <what>".
+ * value, an invalid scene, a run beyond the row limit).  Every message
+ * goes to stderr as "chaplygin: <what>".
  *
  * The options are parsed by hand (no getopt state): an option is given as
  * "--name value" or "--name=value"; the value may begin with '-' (so
@@ -26,8 +28,11 @@
 #include <string.h>
 
 #include "chaplygin.h"
+#include "cli.h"
 #include "eq.h"
 #include "number.h"
+#include "output.h"
+#include "plot.h"
 #include "run.h"
 #include "scene.h"
 #include "sweep.h"
@@ -39,12 +44,13 @@ enum exit_code
   EXIT_USAGE = 2          /* bad command line */
 };
 
-#define COLLISIONS_MAX 100000000L
 
 static const char usage_text[] =
   "Usage: chaplygin run SCENE.ini [-o FILE] [--compare] [--stats]\n"
-  "       chaplygin sweep SCENE.ini [--shard i/N] [--threads N] [-o FILE]\n"
+  "                     [--max-rows N] [--no-provenance] [--print-scene]\n"
+  "       chaplygin sweep SCENE.ini [--shard i/N] [--threads N] [-o FILE] ...\n"
   "       chaplygin skate [OPTION...]\n"
+  "       chaplygin plot SCENE.ini -o FILE.png|FILE.svg [--format F]\n"
   "       chaplygin eq LABEL [NAME=VALUE...] [--csv] | eq --list [--csv]\n"
   "       chaplygin --help | -h\n"
   "       chaplygin --version\n"
@@ -61,19 +67,28 @@ static const char usage_text[] =
   "             3), in parallel or in shards ('chaplygin sweep --help')\n"
   "  skate      iterate the discrete skate's return map (B.3)/(B.4) from a\n"
   "             post-collision state given by options (below)\n"
+  "  plot       draw a scene with gnuplot: the path and V, Omega, theta, E,\n"
+  "             H against time, or the sweep's figure ('chaplygin plot --help')\n"
   "  eq         evaluate one numbered equation of the paper (3.10, A.2, B.16\n"
   "             ...) at the inputs given, with the paper's printed form\n"
   "             beside it where an erratum gives one ('chaplygin eq --help')\n"
   "\n"
-  "Options of run:\n"
-  "  -o FILE    write the CSV to FILE, created only once the scene is read\n"
+  "Options of run (SCENE.ini '-': standard input):\n"
+  "  -o FILE    write the CSV to FILE ('-': standard output): a temporary\n"
+  "             file beside it, renamed to FILE when the run succeeds; FILE\n"
+  "             may not be the scene\n"
   "  --compare  run the scene's smooth companion (compare = smooth) instead\n"
   "  --stats    print on stderr what was computed: return-map steps, heading\n"
   "             and time evaluations, closed-form evaluations (smooth), path\n"
   "             quadratures (smooth)\n"
+  "  --max-rows N  the row limit instead of [run] max_rows [1e7]\n"
+  "  --no-provenance  no '#' lines (version, command, effective scene) after\n"
+  "             the header line, and no '# end:' line\n"
+  "  --print-scene  print the effective scene (every key in use, defaults\n"
+  "             included; it reads back as the same scene) and exit\n"
   "\n"
-  "Numbers (scene keys, options, eq inputs): decimal or hex floats, or exact\n"
-  "rationals p/q, correctly rounded; integers in any of these forms (1e3).\n"
+  "Numbers (scene keys, options, eq inputs): one rule for all, 'man chaplygin',\n"
+  "section NUMBERS (1/3 and 1e3 are numbers).\n"
   "\n"
   "Scene files ('man chaplygin' has the full reference), INI; the scenes of\n"
   "the paper's figures are installed in " CHAPLYGIN_SCENES_DIR ":\n"
@@ -85,8 +100,14 @@ static const char usage_text[] =
   "                V < 0 at the rear D = Delta), Omega, theta (default 0)\n"
   "  [run]         collisions (discrete, massless), duration (smooth, the\n"
   "                companion), samples, outputs, method (discrete:\n"
-  "                closed-form | quadrature | ode), tolerance\n"
+  "                closed-form | quadrature | ode), tolerance; bounds:\n"
+  "                every = k (skates: every k-th collision and the last),\n"
+  "                stop_fate = yes (discrete: end once the fate is certain),\n"
+  "                stop_H = h (skates: end once |H| < h sqrt(2E)), stop_tau\n"
+  "                = T (skates: end at the first collision with tau >= T),\n"
+  "                max_rows = N (any scene; default 1e7)\n"
   "  [sweep]       kind = sigma4 | stability | basins, and its grid\n"
+  "  [plot]        view = panels | phase-space (read by plot only)\n"
   "The first peg (the smooth skate's contact point C) is at the origin at\n"
   "tau = 0.  outputs is a comma-separated list of E, H, theta, tau, peg, V,\n"
   "Omega, path, G (default E,H,theta,tau,peg for the skates,\n"
@@ -97,6 +118,12 @@ static const char usage_text[] =
   "Output of run: CSV, a header line, numbers with %.17g (they round-trip).\n"
   "The fixed columns come first, then the requested outputs, always in the\n"
   "order E,H,theta,tau,peg,V,Omega,path,G, whatever the order in the scene.\n"
+  "After the header line come '#' lines: the version, the command, the\n"
+  "method and the effective scene; the last line, '# end: ...', says how\n"
+  "the run ended ('#' lines are comments for gnuplot, numpy, pandas, R).\n"
+  "A run that would certainly write more than max_rows rows is refused\n"
+  "before anything is written; one with a stop condition ends at the limit.\n"
+  "A run that ends early says why on stderr (exit status 0).\n"
   "\n"
   "Per collision (discrete, massless; no samples, or samples = 0):\n"
   "  n,D,reversal[,E][,H][,theta][,tau][,peg_x,peg_y][,V][,Omega][,x,y][,G_x,G_y]\n"
@@ -137,20 +164,24 @@ static const char usage_text[] =
   "\n"
   "A scene with a [sweep] section prints the sweep's CSV (see sweep --help).\n"
   "\n"
-  "Options of skate (NUMBER: a decimal or hex float, or an exact p/q):\n"
+  "Options of skate (NUMBER, N: as 'man chaplygin' says under NUMBERS):\n"
   "  --L0 NUMBER        mass centre ahead of the slot front       [1]\n"
   "  --Delta NUMBER     slot length, > 0                          [1/3]\n"
   "  --V NUMBER         initial velocity along the slot, != 0     [1]\n"
   "                     (V > 0: peg at D = 0; V < 0: peg at D = Delta)\n"
   "  --Omega NUMBER     initial angular rate                      [0.5]\n"
   "  --theta NUMBER     initial heading (radians)                 [0]\n"
-  "  --collisions N     number of collisions, integer 0..100000000 [20]\n"
+  "  --collisions N     number of collisions, integer 0..1e9        [20]\n"
   "  --method M         heading and time between collisions by\n"
   "                     closed-form (elliptic integrals), quadrature\n"
   "                     (adaptive Gauss-Kronrod) or ode (RK8(9) on (3.1))\n"
   "                                                            [closed-form]\n"
   "  --tol NUMBER       relative tolerance of quadrature and ode,\n"
   "                     1e-15 <= tol < 1 (unused by closed-form)  [1e-12]\n"
+  "  --every K, --stop-H NUMBER, --stop-tau NUMBER, --stop-fate (no value),\n"
+  "  --max-rows N       as [run] every, stop_H, stop_tau, stop_fate = yes,\n"
+  "                     max_rows of a scene\n"
+  "  -o FILE, --no-provenance, --print-scene   as for run\n"
   "  -h, --help         print this text and exit\n"
   "The defaults are the set-up of the paper's Figure 6.  The initial peg is\n"
   "at the origin of the plane and the initial time is 0.  A value may be\n"
@@ -167,10 +198,12 @@ static const char usage_text[] =
    command line, for messages (NULL: the default). */
 typedef struct
 {
-  double L0, Delta, V, Omega, theta, tol;
-  long collisions;
+  double L0, Delta, V, Omega, theta, tol, stop_H, stop_tau;
+  long collisions, every, max_rows;
   chaplygin_method method;
+  int stop_fate, no_provenance, print_scene;
   const char *Delta_arg;
+  const char *output;           /* NULL: standard output */
 } skate_args;
 
 /* What an option takes. */
@@ -183,7 +216,12 @@ typedef enum
   OPT_THETA,
   OPT_COLLISIONS,
   OPT_METHOD,
-  OPT_TOL
+  OPT_TOL,
+  OPT_EVERY,
+  OPT_STOP_H,
+  OPT_STOP_TAU,
+  OPT_MAX_ROWS,
+  OPT_OUTPUT
 } skate_option;
 
 typedef struct
@@ -200,7 +238,12 @@ static const option_entry skate_options[] = {
   { "theta", OPT_THETA },
   { "collisions", OPT_COLLISIONS },
   { "method", OPT_METHOD },
-  { "tol", OPT_TOL }
+  { "tol", OPT_TOL },
+  { "every", OPT_EVERY },
+  { "stop-H", OPT_STOP_H },
+  { "stop-tau", OPT_STOP_TAU },
+  { "max-rows", OPT_MAX_ROWS },
+  { "output", OPT_OUTPUT }
 };
 
 static void
@@ -209,25 +252,11 @@ usage_hint (void)
   fputs ("Try 'chaplygin --help' for more information.\n", stderr);
 }
 
-/* Flush stdout and report a write error.  Returns EXIT_OK or
-   EXIT_FAILURE_LIB. */
-static int
-finish_output (void)
-{
-  if (fflush (stdout) != 0 || ferror (stdout))
-    {
-      fprintf (stderr, "chaplygin: error writing to standard output: %s\n",
-               strerror (errno));
-      return EXIT_FAILURE_LIB;
-    }
-  return EXIT_OK;
-}
-
 static int
 print_help (void)
 {
   fputs (usage_text, stdout);
-  return finish_output ();
+  return cli_finish_stdout ();
 }
 
 static int
@@ -255,12 +284,22 @@ set_option (skate_args *args, skate_option id, const char *name,
   switch (id)
     {
     case OPT_COLLISIONS:
-      if (number_integer (value, 0, COLLISIONS_MAX, &args->collisions) != 0)
-        {
-          fprintf (stderr, "chaplygin: --%s '%s': not an integer in "
-                   "0..%ld\n", name, value, COLLISIONS_MAX);
-          return EXIT_USAGE;
-        }
+    case OPT_EVERY:
+      {
+        const long lo = id == OPT_EVERY ? 1 : 0;
+        long *n = id == OPT_EVERY ? &args->every : &args->collisions;
+        if (number_integer (value, lo, SCENE_COLLISIONS_MAX, n) != 0)
+          {
+            fprintf (stderr, "chaplygin: --%s '%s': not an integer in "
+                     "%ld..%ld\n", name, value, lo, SCENE_COLLISIONS_MAX);
+            return EXIT_USAGE;
+          }
+        return EXIT_OK;
+      }
+    case OPT_MAX_ROWS:
+      return cli_max_rows (value, &args->max_rows);
+    case OPT_OUTPUT:
+      args->output = value;
       return EXIT_OK;
     case OPT_METHOD:
       if (parse_method (value, &args->method) != 0)
@@ -276,6 +315,8 @@ set_option (skate_args *args, skate_option id, const char *name,
     case OPT_OMEGA:
     case OPT_THETA:
     case OPT_TOL:
+    case OPT_STOP_H:
+    case OPT_STOP_TAU:
       break;
     }
 
@@ -320,8 +361,21 @@ set_option (skate_args *args, skate_option id, const char *name,
         }
       args->tol = x;
       break;
+    case OPT_STOP_H:
+    case OPT_STOP_TAU:
+      if (!(x > 0))
+        {
+          fprintf (stderr, "chaplygin: --%s '%s': must be > 0\n", name,
+                   value);
+          return EXIT_USAGE;
+        }
+      *(id == OPT_STOP_H ? &args->stop_H : &args->stop_tau) = x;
+      break;
     case OPT_COLLISIONS:
     case OPT_METHOD:
+    case OPT_EVERY:
+    case OPT_MAX_ROWS:
+    case OPT_OUTPUT:
       break;
     }
   return EXIT_OK;
@@ -353,6 +407,35 @@ parse_skate (int argc, char **argv, skate_args *args)
         }
       if (strcmp (arg, "--help") == 0 || strcmp (arg, "-h") == 0)
         return print_help ();
+      if (strcmp (arg, "--stop-fate") == 0)
+        {
+          args->stop_fate = 1;
+          continue;
+        }
+      if (strcmp (arg, "--no-provenance") == 0)
+        {
+          args->no_provenance = 1;
+          continue;
+        }
+      if (strcmp (arg, "--print-scene") == 0)
+        {
+          args->print_scene = 1;
+          continue;
+        }
+      if (strncmp (arg, "-o", 2) == 0)
+        {
+          /* -o FILE, -oFILE: --output */
+          const char *v = arg[2] ? arg + 2 : i < argc ? argv[i++] : NULL;
+          if (!v || !*v)
+            {
+              fputs ("chaplygin: skate: option '-o' requires a file name\n",
+                     stderr);
+              usage_hint ();
+              return EXIT_USAGE;
+            }
+          args->output = v;
+          continue;
+        }
       if (strncmp (arg, "--", 2) != 0)
         {
           if (arg[0] == '-' && arg[1] != '\0')
@@ -405,14 +488,37 @@ parse_skate (int argc, char **argv, skate_args *args)
   return -1;
 }
 
+/* Write SC (from PATH, the scene's name in messages; INPUT: the scene
+   file, NULL if none) as OPT says to OUTPUT (NULL or "-": standard
+   output): the row limit checked before the output is opened, the output
+   renamed into place on success (output.h).  Returns the exit status. */
+static int
+write_run (const scene *sc, const char *path, const char *input,
+           const run_options *opt, const char *output_name)
+{
+  int rc = sc->sweep != SWEEP_NONE ? sweep_check (sc, path, 0, 1)
+    : run_check (sc, path, opt->compare);
+  if (rc != EXIT_OK)
+    return rc;
+  output out;
+  rc = output_open (&out, output_name, input);
+  if (rc != EXIT_OK)
+    return rc;
+  rc = scene_run (sc, path, opt, out.stream);
+  if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
+    rc = EXIT_FAILURE_LIB;
+  return rc;
+}
+
 /* "chaplygin skate": the options validated here (messages naming them),
    then the per-collision run of a scene with the same skate and outputs
    E,H,theta,tau,peg (run.c: one mechanism for both). */
 static int
 run_skate (int argc, char **argv)
 {
-  skate_args args = { 1.0, 1.0 / 3.0, 1.0, 0.5, 0.0, 1e-12, 20L,
-                      CHAPLYGIN_CLOSED_FORM, NULL };
+  skate_args args = { 1.0, 1.0 / 3.0, 1.0, 0.5, 0.0, 1e-12, NAN, NAN, 20L,
+                      1L, SCENE_MAX_ROWS_DEFAULT, CHAPLYGIN_CLOSED_FORM, 0, 0,
+                      0, NULL, NULL };
   int rc = parse_skate (argc, argv, &args);
   if (rc >= 0)
     return rc;
@@ -454,16 +560,22 @@ run_skate (int argc, char **argv)
   sc.theta = args.theta;
   sc.collisions = args.collisions;
   sc.duration = NAN;
-  sc.samples = -1;
+  sc.samples = 0;
   sc.outputs = SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA | SCENE_OUT_TAU
     | SCENE_OUT_PEG;
   sc.method = args.method;
   sc.tolerance = args.tol;
+  sc.every = args.every;
+  sc.stop_fate = args.stop_fate;
+  sc.stop_H = args.stop_H;
+  sc.stop_tau = args.stop_tau;
+  sc.max_rows = args.max_rows;
   sc.sweep = SWEEP_NONE;
-  rc = scene_run (&sc, "skate", 0, stdout, NULL);
-  if (rc == EXIT_OK)
-    rc = finish_output ();
-  return rc;
+  sc.view = PLOT_PANELS;
+  if (args.print_scene)
+    return cli_print_scene (&sc);
+  run_options opt = { 0, args.no_provenance ? NULL : cli_command (), NULL };
+  return write_run (&sc, "skate", NULL, &opt, args.output);
 }
 
 /* The arguments of "run". */
@@ -471,20 +583,25 @@ typedef struct
 {
   const char *scene_path;
   const char *output;           /* NULL: stdout */
-  int compare, stats;
+  const char *max_rows;         /* NULL: the scene's */
+  int compare, stats, no_provenance, print_scene;
 } run_args;
 
 /* Parse the arguments of "run" (ARGV[0] is the first one after the
-   subcommand): one scene file, -o FILE (or --output FILE, --output=FILE,
-   -oFILE), --compare, --stats, in any order; "--" ends the options.
+   subcommand): one scene file ("-": standard input), -o FILE (or --output
+   FILE, --output=FILE, -oFILE), --compare, --stats, --max-rows N,
+   --no-provenance, --print-scene, in any order; "--" ends the options.
    Returns -1 to go on, or an exit code (after --help or a message). */
 static int
 parse_run (int argc, char **argv, run_args *args)
 {
   int options_done = 0;
-  for (int i = 0; i < argc; i++)
+  int i = 0;
+  while (i < argc)
     {
-      const char *arg = argv[i];
+      const char *arg = argv[i++];
+      const char *value;
+      int m;
       if (!options_done && arg[0] == '-' && arg[1] != '\0')
         {
           if (strcmp (arg, "--") == 0)
@@ -495,97 +612,60 @@ parse_run (int argc, char **argv, run_args *args)
             args->compare = 1;
           else if (strcmp (arg, "--stats") == 0)
             args->stats = 1;
-          else if (strcmp (arg, "-o") == 0 || strcmp (arg, "--output") == 0)
+          else if (strcmp (arg, "--no-provenance") == 0)
+            args->no_provenance = 1;
+          else if (strcmp (arg, "--print-scene") == 0)
+            args->print_scene = 1;
+          else if ((m = cli_option ("run", "--output", "-o", argc, argv, &i,
+                                    &value)) != 0)
             {
-              if (i + 1 >= argc)
-                {
-                  fprintf (stderr, "chaplygin: run: option '%s' requires a "
-                           "file name\n", arg);
-                  usage_hint ();
-                  return EXIT_USAGE;
-                }
-              args->output = argv[++i];
+              if (m < 0)
+                return EXIT_USAGE;
+              args->output = value;
             }
-          else if (strncmp (arg, "--output=", 9) == 0)
-            args->output = arg + 9;
-          else if (strncmp (arg, "-o", 2) == 0)
-            args->output = arg + 2;
+          else if ((m = cli_option ("run", "--max-rows", NULL, argc, argv,
+                                    &i, &value)) != 0)
+            {
+              if (m < 0)
+                return EXIT_USAGE;
+              args->max_rows = value;
+            }
           else
             {
               fprintf (stderr, "chaplygin: run: unknown option '%s'\n", arg);
               usage_hint ();
               return EXIT_USAGE;
             }
-          if (args->output && *args->output == '\0')
-            {
-              fprintf (stderr, "chaplygin: run: empty output file name\n");
-              return EXIT_USAGE;
-            }
           continue;
         }
-      if (args->scene_path)
-        {
-          fprintf (stderr, "chaplygin: run: unexpected argument '%s' (one "
-                   "scene file only)\n", arg);
-          usage_hint ();
-          return EXIT_USAGE;
-        }
-      args->scene_path = arg;
+      if (cli_scene_operand ("run", arg, &args->scene_path) != 0)
+        return EXIT_USAGE;
     }
-  if (!args->scene_path)
-    {
-      fputs ("chaplygin: run: missing scene file\n", stderr);
-      usage_hint ();
-      return EXIT_USAGE;
-    }
-  return -1;
+  return cli_scene_given ("run", args->scene_path) != 0 ? EXIT_USAGE : -1;
 }
 
-/* "chaplygin run": load the scene, open the output, run. */
+/* "chaplygin run": load the scene, check it, open the output, run. */
 static int
 run_scene (int argc, char **argv)
 {
-  run_args args = { NULL, NULL, 0, 0 };
+  run_args args = { NULL, NULL, NULL, 0, 0, 0, 0 };
   int rc = parse_run (argc, argv, &args);
   if (rc >= 0)
     return rc;
 
   static scene sc;              /* large: keep it off the stack */
-  char err[SCENE_ERRLEN];
-  if (scene_load (args.scene_path, &sc, err, sizeof err) != 0)
-    {
-      fprintf (stderr, "chaplygin: %s\n", err);
-      return EXIT_USAGE;
-    }
-
-  FILE *out = stdout;
-  if (args.output)
-    {
-      out = fopen (args.output, "w");
-      if (!out)
-        {
-          fprintf (stderr, "chaplygin: %s: %s\n", args.output,
-                   strerror (errno));
-          return EXIT_FAILURE_LIB;
-        }
-    }
+  const char *name;
+  rc = cli_load_scene (args.scene_path, args.max_rows, &sc, &name);
+  if (rc != EXIT_OK)
+    return rc;
+  if (args.print_scene)
+    return cli_print_scene (&sc);
 
   run_stats stats;
   memset (&stats, 0, sizeof stats);
-  rc = scene_run (&sc, args.scene_path, args.compare, out, &stats);
-
-  if (args.output)
-    {
-      if (fclose (out) != 0 && rc == EXIT_OK)
-        {
-          fprintf (stderr, "chaplygin: error writing to %s: %s\n",
-                   args.output, strerror (errno));
-          rc = EXIT_FAILURE_LIB;
-        }
-    }
-  else if (rc == EXIT_OK)
-    rc = finish_output ();
-
+  run_options opt = { args.compare,
+                      args.no_provenance ? NULL : cli_command (), &stats };
+  rc = write_run (&sc, name, args.scene_path, &opt, args.output);
   if (args.stats)
     fprintf (stderr, "chaplygin: stats: steps=%lu, heading_evals=%lu, "
              "closed_form_evals=%lu, path_quadratures=%lu\n", stats.steps,
@@ -605,12 +685,13 @@ main (int argc, char **argv)
     }
 
   const char *cmd = argv[1];
+  cli_set_command (argc, argv);
   if (strcmp (cmd, "--help") == 0 || strcmp (cmd, "-h") == 0)
     return print_help ();
   if (strcmp (cmd, "--version") == 0)
     {
       puts ("chaplygin " PACKAGE_VERSION);
-      return finish_output ();
+      return cli_finish_stdout ();
     }
   if (strcmp (cmd, "skate") == 0)
     return run_skate (argc - 2, argv + 2);
@@ -620,6 +701,8 @@ main (int argc, char **argv)
     return sweep_main (argc - 2, argv + 2);
   if (strcmp (cmd, "eq") == 0)
     return eq_main (argc - 2, argv + 2);
+  if (strcmp (cmd, "plot") == 0)
+    return plot_main (argc - 2, argv + 2);
 
   if (cmd[0] == '-')
     fprintf (stderr, "chaplygin: unknown option '%s'\n", cmd);

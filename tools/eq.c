@@ -2029,9 +2029,9 @@ static const char eq_usage[] =
   "B.16) at the inputs given, through the library function(s) implementing\n"
   "it; where an erratum gives the paper's printed form as a formula, its\n"
   "value is shown too.  --list lists the 43 labels with their inputs.\n"
-  "VALUE: a decimal or hex float, or an exact rational p/q (correctly\n"
-  "rounded); dir is +1 or -1.  [NAME=x] is optional with default x;\n"
-  "(a | b) means either set of inputs.\n";
+  "VALUE: a number as 'man chaplygin' says under NUMBERS (1/3 is one);\n"
+  "dir is +1 or -1.  [NAME=x] is optional with default x; (a | b) means\n"
+  "either set of inputs.\n";
 
 /* ---------------------------------------------------------------- */
 /* Entry point                                                       */

@@ -3,7 +3,8 @@
    The target parses its input and checks what scene.h promises: a
    message that begins with the name and is terminated, the same result
    with no message buffer, and on success a scene within the documented
-   ranges; a broken promise aborts.
+   ranges that scene_write writes back as a file that reads as the same
+   scene; a broken promise aborts.
 
    Built with -DCHAPLYGIN_LIBFUZZER and clang -fsanitize=fuzzer it is the
    fuzzer; otherwise a main replays every file named on the command line,
@@ -14,6 +15,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,6 +51,20 @@ scene_is_sound (const scene *sc)
   if (sc->outputs == 0 || (sc->outputs & ~0x1ffu))
     return 0;
   if (sc->model != SCENE_DISCRETE && sc->method != CHAPLYGIN_CLOSED_FORM)
+    return 0;
+  if (sc->max_rows < 1 || sc->max_rows >= 9007199254740992L
+      || sc->every < 1 || sc->every > 1000000000L
+      || (sc->stop_fate != 0 && sc->stop_fate != 1)
+      || !(isnan (sc->stop_H) || (sc->stop_H > 0 && isfinite (sc->stop_H)))
+      || !(isnan (sc->stop_tau)
+           || (sc->stop_tau > 0 && isfinite (sc->stop_tau)))
+      || (sc->view != PLOT_PANELS && sc->view != PLOT_PHASE_SPACE))
+    return 0;
+  if ((sc->sweep != SWEEP_NONE || sc->model == SCENE_SMOOTH)
+      && (scene_has_stop (sc) || sc->every != 1))
+    return 0;
+  if ((sc->stop_fate || sc->view == PLOT_PHASE_SPACE)
+      && (sc->model != SCENE_DISCRETE || sc->sweep != SWEEP_NONE))
     return 0;
   switch (sc->sweep)
     {
@@ -98,6 +114,47 @@ scene_is_sound (const scene *sc)
          && sc->x_min < sc->x_max && sc->nx >= 1 && sc->nx <= 10000000L;
 }
 
+/* Whether A and B have the same values (bit for bit). */
+static int
+same_scene (const scene *a, const scene *b)
+{
+#define SAME(f) (memcmp (&a->f, &b->f, sizeof a->f) == 0)
+  return SAME (model) && SAME (compare) && strcmp (a->title, b->title) == 0
+    && SAME (L0) && SAME (Delta) && SAME (L) && SAME (V) && SAME (Omega)
+    && SAME (theta) && SAME (collisions) && SAME (duration) && SAME (samples)
+    && SAME (outputs) && SAME (method) && SAME (tolerance) && SAME (every)
+    && SAME (stop_fate) && SAME (stop_H) && SAME (stop_tau)
+    && SAME (max_rows) && SAME (sweep) && SAME (x_min) && SAME (x_max)
+    && SAME (y_min) && SAME (y_max) && SAME (nx) && SAME (ny)
+    && SAME (n_y) && memcmp (a->y, b->y, a->n_y * sizeof a->y[0]) == 0
+    && SAME (dir) && SAME (view);
+#undef SAME
+}
+
+/* scene_write's promise: the scene it writes reads back as SC. */
+static int
+writes_back (const scene *sc)
+{
+  static scene back;            /* large: off the stack */
+  char *text = NULL;
+  size_t len = 0;
+  FILE *f = open_memstream (&text, &len);
+  int ok;
+
+  if (!f)
+    return 1;                   /* out of memory: nothing to check */
+  ok = scene_write (sc, f, "") == 0;
+  if (fclose (f) != 0 || !text)
+    {
+      free (text);
+      return 1;
+    }
+  ok = ok && scene_parse (text, len, "back.ini", &back, NULL, 0) == 0
+    && same_scene (sc, &back);
+  free (text);
+  return ok;
+}
+
 int
 LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
 {
@@ -115,8 +172,8 @@ LLVMFuzzerTestOneInput (const uint8_t *data, size_t size)
     abort ();
   if (r == 0)
     {
-      if (!scene_is_sound (&sc) || sc.model != again.model
-          || sc.sweep != again.sweep || sc.outputs != again.outputs)
+      if (!scene_is_sound (&sc) || !same_scene (&sc, &again)
+          || !writes_back (&sc))
         abort ();
       return 0;
     }

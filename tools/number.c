@@ -40,9 +40,11 @@ is_digits (const char *s, size_t n)
   return 1;
 }
 
-/* A decimal or hexadecimal constant, the whole of TEXT. */
+/* A decimal or hexadecimal constant, the whole of TEXT; *EXACT (may be
+   NULL) tells whether the double is the constant's exact value (MPFR reads
+   it exactly enough to say: at 64 bits it is exact iff it is the double). */
 static int
-read_constant (const char *text, double *x)
+read_constant (const char *text, double *x, int *exact)
 {
   char *end;
   double v;
@@ -55,13 +57,23 @@ read_constant (const char *text, double *x)
     return NUMBER_SYNTAX;
   if (!isfinite (v))
     return NUMBER_RANGE;
+  if (exact)
+    {
+      mpfr_t f;
+      char *mend;
+      mpfr_init2 (f, 64);
+      *exact = mpfr_strtofr (f, text, &mend, 0, MPFR_RNDN) == 0
+        && *mend == '\0' && mpfr_cmp_d (f, v) == 0;
+      mpfr_clear (f);
+    }
   *x = v;
   return NUMBER_OK;
 }
 
-/* P/Q rounded to the nearest double; P is TEXT up to SLASH. */
+/* P/Q rounded to the nearest double; P is TEXT up to SLASH; *EXACT (may
+   be NULL): whether the double is P/Q exactly. */
 static int
-read_rational (const char *text, const char *slash, double *x)
+read_rational (const char *text, const char *slash, double *x, int *exact)
 {
   const char *p = text, *q = slash + 1;
   size_t np = (size_t) (slash - text);
@@ -102,13 +114,17 @@ read_rational (const char *text, const char *slash, double *x)
   mpfr_set_emax (1024);
   mpfr_init2 (f, 53);
   inexact = mpfr_set_q (f, r, MPFR_RNDN);
-  mpfr_subnormalize (f, inexact, MPFR_RNDN);
+  inexact = mpfr_subnormalize (f, inexact, MPFR_RNDN);
   if (mpfr_inf_p (f))
     status = NUMBER_RANGE;
   else
-    /* -0/5 is -0, as strtod reads "-0". */
-    *x = negative ? copysign (mpfr_get_d (f, MPFR_RNDN), -1.0)
-      : mpfr_get_d (f, MPFR_RNDN);
+    {
+      /* -0/5 is -0, as strtod reads "-0". */
+      *x = negative ? copysign (mpfr_get_d (f, MPFR_RNDN), -1.0)
+        : mpfr_get_d (f, MPFR_RNDN);
+      if (exact)
+        *exact = inexact == 0;
+    }
   mpfr_clear (f);
   mpfr_set_emin (emin);
   mpfr_set_emax (emax);
@@ -116,18 +132,28 @@ read_rational (const char *text, const char *slash, double *x)
   return status;
 }
 
+/* TEXT as a real into *X; *EXACT (may be NULL) whether *X is its exact
+   value. */
+static int
+read_real (const char *text, double *x, int *exact)
+{
+  const char *slash = strchr (text, '/');
+  return slash ? read_rational (text, slash, x, exact)
+    : read_constant (text, x, exact);
+}
+
 int
 number_real (const char *text, double *x)
 {
-  const char *slash = strchr (text, '/');
-  return slash ? read_rational (text, slash, x) : read_constant (text, x);
+  return read_real (text, x, NULL);
 }
 
 int
 number_integer (const char *text, long lo, long hi, long *x)
 {
   double v;
-  int status = number_real (text, &v);
+  int exact = 0;
+  int status = read_real (text, &v, &exact);
 
   if (status != NUMBER_OK)
     return status;
@@ -135,6 +161,10 @@ number_integer (const char *text, long lo, long hi, long *x)
     return NUMBER_NOT_INTEGER;
   if (fabs (v) >= EXACT_INTEGER_LIMIT || v < (double) lo || v > (double) hi)
     return NUMBER_RANGE;
+  /* "1000.0000000000000001" and "1e-400" round to integers; they are not
+     integers */
+  if (!exact)
+    return NUMBER_NOT_INTEGER;
   *x = (long) v;
   return NUMBER_OK;
 }

@@ -13,9 +13,10 @@
    double is out of range; one below the smallest is its rounding (0 or a
    subnormal), as strtod gives it.
 
-   An integer is a real whose value is an integer, written any way above
-   ("1000", "1e3", "0x3e8", "3000/3"), within the range the caller gives;
-   "1.5" or "1e400" is not. */
+   An integer is a real whose exact value, not only its rounding, is an
+   integer, written any way above ("1000", "1e3", "0x3e8", "3000/3"), within
+   the range the caller gives; "1.5", "1e-400" (which rounds to 0) and
+   "1000.0000000000000001" (which rounds to 1000) are not. */
 #ifndef CHAPLYGIN_TOOLS_NUMBER_H
 #define CHAPLYGIN_TOOLS_NUMBER_H
 

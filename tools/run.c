@@ -26,8 +26,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bounds.h"
 #include "chaplygin.h"
 #include "progress.h"
+#include "provenance.h"
 #include "run.h"
 #include "scene.h"
 #include "sweep.h"
@@ -51,13 +53,18 @@ enum
 /* CSV rows                                                             */
 /* ------------------------------------------------------------------ */
 
-/* The output stream and the row being built. */
+/* The output stream, the row being built, and how the run ends. */
 typedef struct
 {
   FILE *out;
   char row[ROW_MAX];
   size_t len;                   /* characters in row */
   int failed;                   /* a write failed (message printed) */
+  long rows, max_rows;          /* data rows written; the limit */
+  int full;                     /* a row was refused: max_rows reached */
+  const run_options *opt;       /* opt->command: provenance lines */
+  const scene *sc;              /* for the provenance lines */
+  const char *path;
 } sink;
 
 /* Start a row. */
@@ -95,13 +102,20 @@ row_num (sink *s, double x)
   row_printf (s, "%.17g", x);
 }
 
-/* Write the row and a newline.  Returns 0, or -1 after a message on a
-   write error (the run must stop). */
+/* Write the row and a newline (DATA: a data row, counted against
+   max_rows).  Returns 0, or -1 (the run must stop) after a message on a
+   write error, or with s->full set where max_rows rows are written. */
 static int
-row_end (sink *s)
+row_write (sink *s, int data)
 {
-  if (s->failed)
+  if (s->failed || s->full)
     return -1;
+  if (data && s->rows >= s->max_rows)
+    {
+      s->full = 1;
+      return -1;
+    }
+  s->rows += data;
   s->row[s->len++] = '\n';
   if (fwrite (s->row, 1, s->len, s->out) != s->len || ferror (s->out))
     {
@@ -111,6 +125,25 @@ row_end (sink *s)
       s->failed = 1;
       return -1;
     }
+  return 0;
+}
+
+/* Write the data row built. */
+static int
+row_end (sink *s)
+{
+  return row_write (s, 1);
+}
+
+/* Write the CSV header line built, then the provenance lines if asked. */
+static int
+header_end (sink *s)
+{
+  if (row_write (s, 0) != 0)
+    return -1;
+  if (s->opt->command)
+    provenance_header (s->out, s->opt->command, s->path, s->sc,
+                       s->opt->compare);
   return 0;
 }
 
@@ -225,6 +258,11 @@ typedef struct
   int need_positions;           /* peg, path or G requested */
   const char *path;             /* the scene file, for messages */
   run_stats *stats;
+  long collisions, every;       /* [run] collisions, every */
+  int stop_fate;                /* [run] stop_fate */
+  double stop_ratio;            /* stop where 2E/H^2 > stop_ratio
+                                   (1/stop_H^2; NAN: no stop_H) */
+  double stop_tau;              /* [run] stop_tau (NAN: none) */
 } skate;
 
 /* Where a segment starts: the post-collision state and its phase. */
@@ -289,14 +327,81 @@ skate_post_point (const skate *k, const chaplygin_discrete_state *s,
 }
 
 /* "chaplygin: PATH: collision N: <status>" after flushing the rows
-   written. */
+   written (and the "# end:" line). */
 static int
 collision_failure (const skate *k, sink *s, long n, int status)
 {
+  if (s->opt->command && !s->failed)
+    provenance_end (s->out, "failed at collision %ld: %s", n,
+                    chaplygin_strerror (status));
   sink_flush_quietly (s);
   fprintf (stderr, "chaplygin: %s: collision %ld: %s\n", k->path, n,
            chaplygin_strerror (status));
   return RUN_FAILED;
+}
+
+#define WHY_MAX 256
+
+/* Whether a stop condition of the scene holds at the post-collision state
+   ST: 1 with the reason in WHY (WHY_MAX bytes), 0 if none does, -1 with
+   *STATUS if the library fails.  The numbers of the reason are the
+   library's: the fate (chaplygin_discrete_fate with no further collision),
+   2E/H^2 (chaplygin_discrete_spin_ratio), tau. */
+static int
+stop_reached (const skate *k, const chaplygin_discrete_state *st, char *why,
+              int *status)
+{
+  static const char *const fates[] = { "backward (V* < 0)",
+                                       "the spinning equilibrium (3.8)",
+                                       "forward (V* > 0)" };
+  if (k->stop_fate)
+    {
+      chaplygin_fate f;
+      *status = chaplygin_discrete_fate (&k->sys, st, 0, NULL, 0, &f);
+      if (*status != CHAPLYGIN_SUCCESS)
+        return -1;
+      if (f.kind != CHAPLYGIN_FATE_UNDECIDED)
+        {
+          snprintf (why, WHY_MAX, "stop_fate: the fate is certain: %s, "
+                    "E_final = %.17g, V_final = %.17g", fates[f.kind + 1],
+                    f.E_final, f.V_final);
+          return 1;
+        }
+    }
+  if (!isnan (k->stop_ratio))
+    {
+      double r;
+      *status = chaplygin_discrete_spin_ratio (st->E, st->H, &r);
+      if (*status == CHAPLYGIN_ERANGE)
+        {
+          snprintf (why, WHY_MAX, "stop_H: H = %.17g, 2E/H^2 is infinite",
+                    st->H);
+          return 1;
+        }
+      if (*status != CHAPLYGIN_SUCCESS)
+        return -1;
+      if (r > k->stop_ratio)
+        {
+          snprintf (why, WHY_MAX, "stop_H: |H| < stop_H sqrt(2E) "
+                    "(H = %.17g, 2E/H^2 = %.17g)", st->H, r);
+          return 1;
+        }
+    }
+  if (!isnan (k->stop_tau) && st->tau >= k->stop_tau)
+    {
+      snprintf (why, WHY_MAX, "stop_tau: tau = %.17g", st->tau);
+      return 1;
+    }
+  return 0;
+}
+
+/* Whether the row (per collision) or segment (dense) ending at collision N
+   is written: N a multiple of every, the last collision, or where the run
+   stops. */
+static int
+collision_written (const skate *k, long n, int stop)
+{
+  return n % k->every == 0 || n == k->collisions || stop;
 }
 
 /* Set up K for the scene SC and the initial post-collision state *START.
@@ -316,6 +421,13 @@ skate_init (skate *k, const scene *sc, const char *path, run_stats *stats,
   k->outputs = sc->outputs;
   k->path = path;
   k->stats = stats;
+  k->collisions = sc->collisions;
+  k->every = sc->every;
+  k->stop_fate = sc->stop_fate;
+  k->stop_ratio = sc->stop_H;
+  if (!isnan (sc->stop_H))
+    k->stop_ratio = 1.0 / (sc->stop_H * sc->stop_H);
+  k->stop_tau = sc->stop_tau;
   k->need_positions = (sc->outputs & (SCENE_OUT_PEG | SCENE_OUT_PATH
                                       | SCENE_OUT_G)) != 0;
   k->request = 0;
@@ -323,7 +435,7 @@ skate_init (skate *k, const scene *sc, const char *path, run_stats *stats,
     k->request |= CHAPLYGIN_WANT_PEG | CHAPLYGIN_WANT_THETA;
   if (sc->outputs & SCENE_OUT_THETA)
     k->request |= CHAPLYGIN_WANT_THETA;
-  if (sc->outputs & SCENE_OUT_TAU)
+  if ((sc->outputs & SCENE_OUT_TAU) || !isnan (sc->stop_tau))
     k->request |= CHAPLYGIN_WANT_TAU;
 
   if (!k->massless)
@@ -391,22 +503,38 @@ progress_start (progress *p, int is_long, double total)
     }
 }
 
-/* Per-collision rows n = 0..collisions. */
+/* The row of collision N (0: the initial state): D, the reversal flag and
+   the point P. */
 static int
-skate_run_collisions (const skate *k, const scene *sc, segment_start *cur,
-                      sink *s)
+collision_row (sink *s, unsigned outputs, long n, double D, int reversal,
+               const point *p)
+{
+  row_begin (s);
+  row_printf (s, "%ld", n);
+  row_num (s, D);
+  row_printf (s, "%d", reversal);
+  row_outputs (s, outputs, 0, p);
+  return row_end (s);
+}
+
+/* Per-collision rows n = 0..collisions (written as collision_written
+   says); the run ends early where a stop condition holds (*END_N the
+   collision, WHY the reason) or max_rows is reached (s->full). */
+static int
+skate_run_collisions (const skate *k, segment_start *cur, sink *s,
+                      long *end_n, char *why)
 {
   const unsigned outputs = k->outputs;
   point p;
-  int status;
+  int status, stop;
   progress bar;
-  progress_start (&bar, (double) sc->collisions > PROGRESS_COLLISIONS,
-                  (double) sc->collisions);
+  progress_start (&bar, (double) k->collisions > PROGRESS_COLLISIONS,
+                  (double) k->collisions);
 
   row_begin (s);
   row_printf (s, "n,D,reversal");
   header_outputs (s, outputs, 0);
-  if (row_end (s) != 0)
+  if (header_end (s) != 0)
     return RUN_FAILED;
 
   memset (&p, 0, sizeof p);
@@ -414,46 +542,47 @@ skate_run_collisions (const skate *k, const scene *sc, segment_start *cur,
   if (status != CHAPLYGIN_SUCCESS)
     return collision_failure (k, s, 0, status);
   p.Omega = cur->Omega0;        /* as given */
-  row_begin (s);
-  row_printf (s, "0");
-  row_num (s, cur->D0);
-  row_printf (s, "0");
-  row_outputs (s, outputs, 0, &p);
-  if (row_end (s) != 0)
+  *end_n = 0;
+  if (collision_row (s, outputs, 0, cur->D0, 0, &p) != 0)
     return RUN_FAILED;
+  stop = stop_reached (k, &cur->st, why, &status);
+  if (stop < 0)
+    return collision_failure (k, s, 0, status);
 
-  for (long n = 1; n <= sc->collisions; n++)
+  for (long n = 1; !stop && n <= k->collisions; n++)
     {
       chaplygin_discrete_state next;
       chaplygin_discrete_event ev;
+      *end_n = n;
       status = skate_step (k, &cur->st, k->request, &next, &ev);
+      if (status == CHAPLYGIN_SUCCESS)
+        {
+          cur->st = next;
+          stop = stop_reached (k, &next, why, &status);
+        }
+      if (status == CHAPLYGIN_SUCCESS && collision_written (k, n, stop))
+        {
+          status = skate_post_point (k, &next, ev.Vminus, &p);
+          if (status == CHAPLYGIN_SUCCESS
+              && collision_row (s, outputs, n, next.dir > 0 ? 0.0 : k->Delta,
+                                ev.reversal, &p) != 0)
+            {
+              if (s->full)
+                *end_n = n - 1;         /* the last row written */
+              progress_finish (&bar);
+              return RUN_FAILED;
+            }
+        }
       if (status != CHAPLYGIN_SUCCESS)
         {
           progress_finish (&bar);
           return collision_failure (k, s, n, status);
-        }
-      cur->st = next;
-      status = skate_post_point (k, &next, ev.Vminus, &p);
-      if (status != CHAPLYGIN_SUCCESS)
-        {
-          progress_finish (&bar);
-          return collision_failure (k, s, n, status);
-        }
-      row_begin (s);
-      row_printf (s, "%ld", n);
-      row_num (s, next.dir > 0 ? 0.0 : k->Delta);
-      row_printf (s, "%d", ev.reversal);
-      row_outputs (s, outputs, 0, &p);
-      if (row_end (s) != 0)
-        {
-          progress_finish (&bar);
-          return RUN_FAILED;
         }
       if (n % PROGRESS_EVERY == 0)
         progress_update (&bar, (double) n);
     }
   progress_finish (&bar);
-  return sink_finish (s);
+  return RUN_OK;
 }
 
 /* ---- dense output ---------------------------------------------------- */
@@ -514,10 +643,12 @@ dense_row (const skate *k, sink *s, const segment_start *start, long n,
    collision n-1 to just before collision n), k = 0 its start, N samples
    equally spaced in D (a reversing segment: floor(N/2) on each leg,
    mirrored, and the turning point), and its end; each from the library
-   (leg_sample), heading and time from the segment's start. */
+   (leg_sample), heading and time from the segment's start.  Segments are
+   written as collision_written says; the run ends early as in
+   skate_run_collisions. */
 static int
 skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
-                 sink *s)
+                 sink *s, long *end_n, char *why)
 {
   skate kk = *k0;
   skate *k = &kk;
@@ -537,10 +668,14 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
   row_begin (s);
   row_printf (s, "n,k,reversal,tau,D");
   header_outputs (s, k->outputs, 1);
-  if (row_end (s) != 0)
+  if (header_end (s) != 0)
     rc = RUN_FAILED;
+  *end_n = 0;
+  int stop = rc == RUN_OK ? stop_reached (k, &cur->st, why, &status) : 0;
+  if (stop < 0)
+    rc = collision_failure (k, s, 0, status);
 
-  for (long n = 1; rc == RUN_OK && n <= sc->collisions; n++)
+  for (long n = 1; rc == RUN_OK && !stop && n <= sc->collisions; n++)
     {
       const chaplygin_discrete_state *st = &cur->st;
       const double D0 = cur->D0, theta0 = st->theta, tau0 = st->tau;
@@ -549,22 +684,28 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
       long ki = 0;
 
       status = skate_step (k, st, k->request, &next, &ev);
+      if (status == CHAPLYGIN_SUCCESS
+          && (stop = stop_reached (k, &next, why, &status)) < 0)
+        stop = 0;
       if (status != CHAPLYGIN_SUCCESS)
         {
           rc = collision_failure (k, s, n, status);
           break;
         }
+      *end_n = n;
+      const int written = collision_written (k, n, stop);
 
-      if (dense_row (k, s, cur, n, ki++, ev.reversal, D0, cur->V0,
-                     cur->Omega0, theta0, tau0) != 0)
+      if (written && dense_row (k, s, cur, n, ki++, ev.reversal, D0, cur->V0,
+                                cur->Omega0, theta0, tau0) != 0)
         {
           rc = RUN_FAILED;
           break;
         }
       /* the samples: (leg, D) in order along the motion; without reversal
          N samples and the far end, with one m out, the turning point, m
-         back and the start end */
-      const long count = ev.reversal ? 2 * m + 2 : N + 1;
+         back and the start end (a segment between the written ones: not
+         sampled) */
+      const long count = !written ? 0 : ev.reversal ? 2 * m + 2 : N + 1;
       const double Dend = ev.reversal ? ev.Dc : ev.Dminus;
       for (long j = 1; j <= count && rc == RUN_OK; j++)
         {
@@ -610,18 +751,46 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
   return sink_finish (s);
 }
 
-/* The discrete or massless scene SC. */
+/* The discrete or massless scene SC; an early end (a stop condition, the
+   row limit) said on stderr and in the "# end:" line. */
 static int
 skate_run (const scene *sc, const char *path, run_stats *stats, sink *s)
 {
   skate k;
   segment_start cur;
+  long end_n = 0;
+  char why[WHY_MAX] = "";
   int rc = skate_init (&k, sc, path, stats, &cur);
   if (rc != RUN_OK)
     return rc;
   if (sc->samples > 0)
-    return skate_run_dense (&k, sc, &cur, s);
-  return skate_run_collisions (&k, sc, &cur, s);
+    rc = skate_run_dense (&k, sc, &cur, s, &end_n, why);
+  else
+    rc = skate_run_collisions (&k, &cur, s, &end_n, why);
+  if (rc == RUN_FAILED && s->full && !s->failed)
+    {
+      snprintf (why, sizeof why, "max_rows: the limit of %ld rows is "
+                "reached%s", s->max_rows, sc->samples > 0
+                ? " (in the segment ending at this collision)" : "");
+      rc = RUN_OK;
+    }
+  if (rc != RUN_OK)
+    return rc;
+  /* end_n: the collision of the last row (per collision) or segment
+     (dense) written */
+  if (why[0])
+    fprintf (stderr, "chaplygin: %s: stopped at collision %ld of %ld: %s\n",
+             path, end_n, sc->collisions, why);
+  if (s->opt->command)
+    {
+      if (why[0])
+        provenance_end (s->out, "stopped at collision %ld of %ld: %s",
+                        end_n, sc->collisions, why);
+      else
+        provenance_end (s->out, "complete: collision %ld of %ld", end_n,
+                        sc->collisions);
+    }
+  return sink_finish (s);
 }
 
 /* ------------------------------------------------------------------ */
@@ -663,7 +832,7 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
   row_begin (s);
   row_printf (s, "S,tau");
   header_outputs (s, outputs & ~(unsigned) SCENE_OUT_PEG, 1);
-  if (row_end (s) != 0)
+  if (header_end (s) != 0)
     rc = RUN_FAILED;
 
   chaplygin_smooth_path walk;
@@ -690,6 +859,9 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
         }
       if (status != CHAPLYGIN_SUCCESS)
         {
+          if (s->opt->command && !s->failed)
+            provenance_end (s->out, "failed at tau = %.17g: %s", T,
+                            chaplygin_strerror (status));
           sink_flush_quietly (s);
           fprintf (stderr, "chaplygin: %s: tau = %.17g: %s\n", path, T,
                    chaplygin_strerror (status));
@@ -714,23 +886,86 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
   progress_finish (&bar);
   if (rc != RUN_OK)
     return rc;
+  if (s->opt->command)
+    provenance_end (s->out, "complete: sample %ld of %ld", samples, samples);
   return sink_finish (s);
 }
 
 /* ------------------------------------------------------------------ */
 
-int
-scene_run (const scene *sc, const char *path, int compare, FILE *out,
-           run_stats *stats)
+
+/* An upper bound of the data rows of SC (its companion if COMPARE) and
+   the numbers in each. */
+static void
+rows_bound (const scene *sc, int compare, double *rows, int *columns)
 {
+  /* the numbers of E, H, theta, tau, peg, V, Omega, path, G */
+  static const int width[] = { 1, 1, 1, 1, 2, 1, 1, 2, 2 };
+  int out = 0;
+  for (size_t i = 0; i < sizeof width / sizeof width[0]; i++)
+    if (sc->outputs & (1u << i))
+      out += width[i];
+  if (compare || sc->model == SCENE_SMOOTH)
+    {
+      long n = sc->samples >= 0 ? sc->samples : SMOOTH_SAMPLES_DEFAULT;
+      if (compare && n < SMOOTH_SAMPLES_DEFAULT)
+        n = SMOOTH_SAMPLES_DEFAULT;
+      *rows = (double) (n > 1 ? n : 1) + 1.0;
+      *columns = 2 + out;
+      return;
+    }
+  /* the multiples of every, and the last collision */
+  double written = (double) (sc->collisions / sc->every)
+    + (sc->collisions % sc->every != 0);
+  if (sc->samples > 0)
+    {
+      /* a segment: its start, N samples (and a turning point), its end */
+      *rows = written * ((double) sc->samples + 3.0);
+      *columns = 5 + out - ((sc->outputs & SCENE_OUT_TAU) != 0);
+    }
+  else
+    {
+      *rows = written + 1.0;
+      *columns = 3 + out;
+    }
+}
+
+int
+run_check (const scene *sc, const char *path, int compare)
+{
+  double rows;
+  int columns;
+  if (sc->sweep != SWEEP_NONE)
+    return RUN_OK;              /* sweep.c checks its rows */
+  if (!compare && scene_has_stop (sc))
+    return RUN_OK;              /* the row limit ends it at worst */
+  rows_bound (sc, compare, &rows, &columns);
+  return bounds_check (path, "the run", rows, columns, sc->max_rows,
+                       "bound it ([run] every, stop_fate, stop_H, "
+                       "stop_tau; fewer collisions or samples) or raise "
+                       "the limit ([run] max_rows, or --max-rows)") == 0
+    ? RUN_OK : RUN_REJECTED;
+}
+
+int
+scene_run (const scene *sc, const char *path, const run_options *opt,
+           FILE *out)
+{
+  static const run_options plain = { 0, NULL, NULL };
   run_stats dummy;
   sink s;
 
-  if (!stats)
-    stats = &dummy;
+  if (!opt)
+    opt = &plain;
+  run_stats *stats = opt->stats ? opt->stats : &dummy;
+  const int compare = opt->compare;
   memset (stats, 0, sizeof *stats);
   memset (&s, 0, sizeof s);
   s.out = out;
+  s.max_rows = sc->max_rows;
+  s.opt = opt;
+  s.sc = sc;
+  s.path = path;
 
   if (compare && !sc->compare)
     {
@@ -746,8 +981,10 @@ scene_run (const scene *sc, const char *path, int compare, FILE *out,
                    "[sweep]\n", path);
           return RUN_REJECTED;
         }
-      return sweep_run (sc, path, 0, 1, out);
+      return sweep_run (sc, path, 0, 1, opt->command, out, NULL);
     }
+  if (run_check (sc, path, compare) != RUN_OK)
+    return RUN_REJECTED;
 
   if (compare)
     return smooth_run (sc->L, sc->V, sc->Omega, sc->theta, sc->duration,

@@ -40,10 +40,16 @@
      A sigma4 sweep has at most 1e8 points too: nx times the number of y
      values.
    - Defaults: title ""; compare 0; L0, Delta, L, V, Omega, duration NAN;
-     theta 0; collisions -1; samples -1 (discrete, massless; the run
-     chooses, also for the smooth companion) or 200 (smooth); outputs as in
-     scene.h; method closed-form; tolerance 1e-12; sweep SWEEP_NONE with
-     x_min, x_max, y_min, y_max NAN, nx, ny -1, n_y 0, y[] 0, dir 0.
+     theta 0; collisions -1; samples 0 (discrete, massless: per collision;
+     the smooth companion takes at least 200), 200 (smooth), -1 (a sweep);
+     outputs as in scene.h; method closed-form; tolerance 1e-12; every 1;
+     stop_fate 0; stop_H, stop_tau NAN; max_rows SCENE_MAX_ROWS_DEFAULT;
+     sweep SWEEP_NONE with x_min, x_max, y_min, y_max NAN, nx, ny -1,
+     n_y 0, y[] 0, dir 0; view panels; text[] "".
+   - every, stop_H, stop_tau: the skates (discrete, massless) only;
+     stop_fate: discrete only (the library's chaplygin_discrete_fate);
+     max_rows: any scene; [plot] view: any scene but a sweep, phase-space
+     with model discrete only.
    - One error is reported: the first in reading order among those a line
      shows on its own (syntax, unknown or repeated key, malformed value,
      a range needing no other key); failing that, a missing model, a sweep
@@ -56,6 +62,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -80,7 +87,6 @@
 #define SCENE_RAW_KEPT 64
 #define SCENE_SHOWN 40
 
-#define SCENE_COLLISIONS_MAX 1000000000L
 #define SCENE_SAMPLES_MAX 1000000L
 #define SCENE_GRID_MAX 10000000L
 #define SCENE_GRID_TOTAL_MAX 100000000.0
@@ -94,11 +100,12 @@ enum scene_section
   SEC_INITIAL,
   SEC_RUN,
   SEC_SWEEP,
+  SEC_PLOT,
   SEC_COUNT
 };
 
 static const char *const section_names[SEC_COUNT] =
-  { "scene", "parameters", "initial", "run", "sweep" };
+  { "scene", "parameters", "initial", "run", "sweep", "plot" };
 
 /* The keys, in the order of scene.h (the order missing keys are
    reported in). */
@@ -108,9 +115,13 @@ enum scene_key
   K_L0, K_DELTA, K_L,
   K_V, K_OMEGA, K_THETA,
   K_COLLISIONS, K_DURATION, K_SAMPLES, K_OUTPUTS, K_METHOD, K_TOLERANCE,
+  K_EVERY, K_STOP_FATE, K_STOP_H, K_STOP_TAU, K_MAX_ROWS,
   K_KIND, K_X_MIN, K_X_MAX, K_NX, K_Y_MIN, K_Y_MAX, K_NY, K_Y, K_DIR,
+  K_VIEW,
   K_COUNT
 };
+
+_Static_assert (K_COUNT == SCENE_N_KEYS, "SCENE_N_KEYS in scene.h");
 
 typedef struct
 {
@@ -125,9 +136,12 @@ static const key_spec keys[K_COUNT] = {
   { SEC_INITIAL, "V" }, { SEC_INITIAL, "Omega" }, { SEC_INITIAL, "theta" },
   { SEC_RUN, "collisions" }, { SEC_RUN, "duration" }, { SEC_RUN, "samples" },
   { SEC_RUN, "outputs" }, { SEC_RUN, "method" }, { SEC_RUN, "tolerance" },
+  { SEC_RUN, "every" }, { SEC_RUN, "stop_fate" }, { SEC_RUN, "stop_H" },
+  { SEC_RUN, "stop_tau" }, { SEC_RUN, "max_rows" },
   { SEC_SWEEP, "kind" }, { SEC_SWEEP, "x_min" }, { SEC_SWEEP, "x_max" },
   { SEC_SWEEP, "nx" }, { SEC_SWEEP, "y_min" }, { SEC_SWEEP, "y_max" },
-  { SEC_SWEEP, "ny" }, { SEC_SWEEP, "y" }, { SEC_SWEEP, "dir" }
+  { SEC_SWEEP, "ny" }, { SEC_SWEEP, "y" }, { SEC_SWEEP, "dir" },
+  { SEC_PLOT, "view" }
 };
 
 /* The keys of each section, for messages. */
@@ -135,8 +149,10 @@ static const char *const section_keys[SEC_COUNT] = {
   "model, compare, title",
   "L0, Delta, L",
   "V, Omega, theta",
-  "collisions, duration, samples, outputs, method, tolerance",
-  "kind, x_min, x_max, nx, y_min, y_max, ny, y, dir"
+  "collisions, duration, samples, outputs, method, tolerance, every, "
+  "stop_fate, stop_H, stop_tau, max_rows",
+  "kind, x_min, x_max, nx, y_min, y_max, ny, y, dir",
+  "view"
 };
 
 static const char *const model_names[] = { "discrete", "smooth", "massless" };
@@ -144,6 +160,8 @@ static const char *const method_names[] =
   { "closed-form", "quadrature", "ode" };
 static const char *const kind_names[] =
   { "none", "sigma4", "stability", "basins" };
+static const char *const yes_no[] = { "no", "yes" };
+static const char *const view_names[] = { "panels", "phase-space" };
 
 /* The outputs, bit i of SCENE_OUT_* named output_names[i]. */
 #define SCENE_N_OUTPUTS 9
@@ -175,16 +193,13 @@ typedef struct
   size_t errlen;
 } parse_ctx;
 
-/* Copies at most SCENE_SHOWN bytes of S to BUF (SIZE >= 4 SCENE_SHOWN + 4
-   bytes) with control bytes as \xHH and "..." where it is cut; returns
-   BUF. */
-static const char *
-shown (char *buf, size_t size, const char *s)
+const char *
+scene_shown (char *buf, size_t size, const char *s, size_t max)
 {
   static const char hex[] = "0123456789abcdef";
   size_t i, n = 0;
 
-  for (i = 0; s[i] && i < SCENE_SHOWN && n + 8 < size; i++)
+  for (i = 0; s[i] && i < max && n + 8 < size; i++)
     {
       unsigned char ch = (unsigned char) s[i];
       if (ch < 0x20 || ch == 0x7f)
@@ -204,6 +219,13 @@ shown (char *buf, size_t size, const char *s)
     }
   buf[n] = '\0';
   return buf;
+}
+
+/* S as messages show it: at most SCENE_SHOWN bytes (BUF of SHOWN_SIZE). */
+static const char *
+shown (char *buf, size_t size, const char *s)
+{
+  return scene_shown (buf, size, s, SCENE_SHOWN);
 }
 
 #define SHOWN_SIZE (4 * SCENE_SHOWN + 12)
@@ -393,6 +415,25 @@ read_number (parse_ctx *c, int k, const char *value, double *x)
   return -1;
 }
 
+/* Reads the number VALUE of key K, which must be > 0, into *X. */
+static int
+read_positive (parse_ctx *c, int k, const char *value, double *x)
+{
+  char buf[SHOWN_SIZE];
+  double v;
+
+  if (read_number (c, k, value, &v))
+    return -1;
+  if (!(v > 0))
+    {
+      fail_key (c, k, c->lineno, "value '%s' is not > 0",
+                shown (buf, sizeof buf, value));
+      return -1;
+    }
+  *x = v;
+  return 0;
+}
+
 /* Reads the integer VALUE of key K into *X, LO <= x <= HI (number.h: an
    exact integer in any form of a number, 1e3 among them). */
 static int
@@ -560,16 +601,7 @@ read_value (parse_ctx *c, int k, const char *value)
     case K_L0:
       return read_number (c, k, value, &sc->L0);
     case K_DELTA:
-      if (read_number (c, k, value, &x))
-        return -1;
-      if (!(x > 0))
-        {
-          fail_key (c, k, c->lineno, "value '%s' is not > 0",
-                    shown (buf, sizeof buf, value));
-          return -1;
-        }
-      sc->Delta = x;
-      return 0;
+      return read_positive (c, k, value, &sc->Delta);
     case K_L:
       return read_number (c, k, value, &sc->L);
     case K_V:
@@ -613,6 +645,21 @@ read_value (parse_ctx *c, int k, const char *value)
           return -1;
         }
       sc->tolerance = x;
+      return 0;
+    case K_EVERY:
+      return read_integer (c, k, value, 1, SCENE_COLLISIONS_MAX, &sc->every);
+    case K_STOP_FATE:
+      return read_word (c, k, value, yes_no, 2, "no, yes", &sc->stop_fate);
+    case K_STOP_H:
+      return read_positive (c, k, value, &sc->stop_H);
+    case K_STOP_TAU:
+      return read_positive (c, k, value, &sc->stop_tau);
+    case K_MAX_ROWS:
+      return read_integer (c, k, value, 1, SCENE_MAX_ROWS_MAX, &sc->max_rows);
+    case K_VIEW:
+      if (read_word (c, k, value, view_names, 2, "panels, phase-space", &w))
+        return -1;
+      sc->view = (plot_view) w;
       return 0;
     case K_KIND:
       if (read_word (c, k, value, kind_names + 1, 3,
@@ -682,7 +729,7 @@ fail_unknown (parse_ctx *c, const char *section, int sec, const char *name)
             return;
           }
       fail (c, c->lineno, section, name, "unknown section (sections: "
-            "scene, parameters, initial, run, sweep)");
+            "scene, parameters, initial, run, sweep, plot)");
       return;
     }
   for (i = 0; i < K_COUNT; i++)
@@ -752,6 +799,7 @@ scene_handler (void *user, const char *section, const char *name,
     }
   c->line_of[k] = c->lineno;
   snprintf (c->raw[k], sizeof c->raw[k], "%s", value);
+  snprintf (c->sc.text[k], sizeof c->sc.text[k], "%s", value);
   c->last_key = k;
   return read_value (c, k, value) == 0;
 }
@@ -831,6 +879,16 @@ key_use (const scene *sc, int k, const char **why)
               return USE_NOT;
             }
           break;
+        case K_MAX_ROWS:
+          use = 1;
+          break;
+        case K_VIEW:
+          *why = "not used by a sweep (it has one view)";
+          return USE_NOT;
+        case K_EVERY:
+        case K_STOP_FATE:
+        case K_STOP_H:
+        case K_STOP_TAU:
         case K_MODEL:
         case K_COMPARE:
         case K_TITLE:
@@ -849,6 +907,8 @@ key_use (const scene *sc, int k, const char **why)
           *why = required[kind];
           return USE_REQUIRED;
         }
+      if (use == 1)
+        return USE_OPTIONAL;
       *why = not_used[kind];
       return USE_NOT;
     }
@@ -933,10 +993,31 @@ key_use (const scene *sc, int k, const char **why)
           return USE_NOT;
         }
       return USE_OPTIONAL;
+    case K_EVERY:
+    case K_STOP_H:
+    case K_STOP_TAU:
+      if (model == SCENE_SMOOTH)
+        {
+          *why = "not used by model smooth (it runs for a duration, in "
+            "samples)";
+          return USE_NOT;
+        }
+      return USE_OPTIONAL;
+    case K_STOP_FATE:
+      if (model != SCENE_DISCRETE)
+        {
+          *why = model == SCENE_SMOOTH ? "only with model discrete (model "
+            "is smooth)" : "only with model discrete (the library gives the "
+            "fate of the discrete skate only)";
+          return USE_NOT;
+        }
+      return USE_OPTIONAL;
     case K_THETA:
     case K_SAMPLES:
     case K_OUTPUTS:
     case K_METHOD:
+    case K_MAX_ROWS:
+    case K_VIEW:
       return USE_OPTIONAL;
     case K_KIND:
     case K_X_MIN:
@@ -996,6 +1077,11 @@ check_key (parse_ctx *c, int k)
       if ((sc->outputs & SCENE_OUT_PEG) && sc->model == SCENE_SMOOTH)
         fail_key (c, k, line, "'peg' is not an output of model smooth");
       break;
+    case K_VIEW:
+      if (sc->view == PLOT_PHASE_SPACE && sc->model != SCENE_DISCRETE)
+        fail_key (c, k, line, "value 'phase-space' needs model discrete "
+                  "(model is %s)", model_names[sc->model]);
+      break;
     case K_X_MIN:
     case K_X_MAX:
       if (c->line_of[K_X_MIN] && c->line_of[K_X_MAX]
@@ -1040,6 +1126,11 @@ check_key (parse_ctx *c, int k)
     case K_DURATION:
     case K_SAMPLES:
     case K_TOLERANCE:
+    case K_EVERY:
+    case K_STOP_FATE:
+    case K_STOP_H:
+    case K_STOP_TAU:
+    case K_MAX_ROWS:
     case K_KIND:
     case K_DIR:
     case K_COUNT:
@@ -1062,7 +1153,7 @@ check_scene (parse_ctx *c)
       fail_key (c, K_MODEL, 0, "missing (required)");
       return;
     }
-  for (k = K_KIND; k < K_COUNT; k++)
+  for (k = K_KIND; k <= K_DIR; k++)
     if (c->line_of[k])
       any_sweep_key = 1;
   if (any_sweep_key && !c->line_of[K_KIND])
@@ -1094,8 +1185,8 @@ check_scene (parse_ctx *c)
     return;
   if (!c->line_of[K_OUTPUTS])
     sc->outputs = sc->model == SCENE_SMOOTH ? OUTPUTS_SMOOTH : OUTPUTS_POINT;
-  if (!c->line_of[K_SAMPLES] && sc->model == SCENE_SMOOTH)
-    sc->samples = 200;
+  if (!c->line_of[K_SAMPLES] && sc->sweep == SWEEP_NONE)
+    sc->samples = sc->model == SCENE_SMOOTH ? 200 : 0;
 }
 
 /* ---------------------------------------------------------------- */
@@ -1128,6 +1219,10 @@ ctx_init (parse_ctx *c, const char *path, char *err, size_t errlen)
   sc->outputs = OUTPUTS_POINT;
   sc->method = CHAPLYGIN_CLOSED_FORM;
   sc->tolerance = 1e-12;
+  sc->every = 1;
+  sc->stop_fate = 0;
+  sc->stop_H = sc->stop_tau = NAN;
+  sc->max_rows = SCENE_MAX_ROWS_DEFAULT;
   sc->sweep = SWEEP_NONE;
   sc->x_min = sc->x_max = sc->y_min = sc->y_max = NAN;
   sc->nx = sc->ny = -1;
@@ -1135,6 +1230,7 @@ ctx_init (parse_ctx *c, const char *path, char *err, size_t errlen)
     sc->y[i] = 0;
   sc->n_y = 0;
   sc->dir = 0;
+  sc->view = PLOT_PANELS;
 }
 
 /* Parses the source set up in C; 0 and *SC filled, or -1. */
@@ -1188,24 +1284,189 @@ scene_parse (const char *text, size_t len, const char *name, scene *sc,
 }
 
 int
-scene_load (const char *path, scene *sc, char *err, size_t errlen)
+scene_read (FILE *in, const char *name, scene *sc, char *err, size_t errlen)
 {
   parse_ctx c;
-  int r;
 
-  ctx_init (&c, path, err, errlen);
-  if (!sc || !path)
+  ctx_init (&c, name, err, errlen);
+  if (!sc || !in)
     {
-      fail (&c, 0, NULL, NULL, "no scene or no file name");
+      fail (&c, 0, NULL, NULL, "no scene or no stream");
       return -1;
     }
-  c.file = fopen (path, "r");
-  if (!c.file)
+  c.file = in;
+  return parse_source (&c, sc);
+}
+
+int
+scene_load (const char *path, scene *sc, char *err, size_t errlen)
+{
+  FILE *in;
+  int r;
+
+  if (!path)
+    return scene_read (NULL, path, sc, err, errlen);
+  in = fopen (path, "r");
+  if (!in)
     {
+      parse_ctx c;
+      ctx_init (&c, path, err, errlen);
       fail (&c, 0, NULL, NULL, "cannot open: %s", strerror (errno));
       return -1;
     }
-  r = parse_source (&c, sc);
-  fclose (c.file);
+  r = scene_read (in, path, sc, err, errlen);
+  fclose (in);
   return r;
+}
+
+/* ---------------------------------------------------------------- */
+/* Writing a scene                                                   */
+/* ---------------------------------------------------------------- */
+
+int
+scene_has_stop (const scene *sc)
+{
+  return sc->stop_fate || !isnan (sc->stop_H) || !isnan (sc->stop_tau);
+}
+
+/* X with the fewest significant digits (15 to 17) that read back as X,
+   into BUF (SIZE >= 32 bytes). */
+static const char *
+format_real (double x, char *buf, size_t size)
+{
+  for (int digits = 15; digits <= 17; digits++)
+    {
+      snprintf (buf, size, "%.*g", digits, x);
+      if (strtod (buf, NULL) == x)
+        break;
+    }
+  return buf;
+}
+
+/* The field of each real and integer key (offset into a scene), 0 for the
+   others (no field is at offset 0: title comes first). */
+static const size_t real_field[K_COUNT] = {
+  [K_L0] = offsetof (scene, L0), [K_DELTA] = offsetof (scene, Delta),
+  [K_L] = offsetof (scene, L), [K_V] = offsetof (scene, V),
+  [K_OMEGA] = offsetof (scene, Omega), [K_THETA] = offsetof (scene, theta),
+  [K_DURATION] = offsetof (scene, duration),
+  [K_TOLERANCE] = offsetof (scene, tolerance),
+  [K_STOP_H] = offsetof (scene, stop_H),
+  [K_STOP_TAU] = offsetof (scene, stop_tau),
+  [K_X_MIN] = offsetof (scene, x_min), [K_X_MAX] = offsetof (scene, x_max),
+  [K_Y_MIN] = offsetof (scene, y_min), [K_Y_MAX] = offsetof (scene, y_max)
+};
+static const size_t long_field[K_COUNT] = {
+  [K_COLLISIONS] = offsetof (scene, collisions),
+  [K_SAMPLES] = offsetof (scene, samples), [K_EVERY] = offsetof (scene, every),
+  [K_MAX_ROWS] = offsetof (scene, max_rows), [K_NX] = offsetof (scene, nx),
+  [K_NY] = offsetof (scene, ny)
+};
+
+/* The value scene_write writes for key K of SC into BUF (SIZE bytes), or
+   NULL for a key without a value: a real as the file gave it, else the
+   field (NULL if NaN: not set); an integer as the field (NULL if negative:
+   not set); words and lists from their fields. */
+static const char *
+value_text (const scene *sc, int k, char *buf, size_t size)
+{
+  size_t n = 0;
+
+  if (real_field[k])
+    {
+      double x;
+      memcpy (&x, (const char *) sc + real_field[k], sizeof x);
+      if (sc->text[k][0])
+        return sc->text[k];
+      return isnan (x) ? NULL : format_real (x, buf, size);
+    }
+  if (long_field[k])
+    {
+      long x;
+      memcpy (&x, (const char *) sc + long_field[k], sizeof x);
+      if (x < 0)
+        return NULL;
+      snprintf (buf, size, "%ld", x);
+      return buf;
+    }
+  switch (k)                    /* the words and lists */
+    {
+    case K_MODEL:
+      return model_names[sc->model];
+    case K_COMPARE:
+      return sc->compare ? "smooth" : NULL;
+    case K_TITLE:
+      return sc->title[0] ? sc->title : NULL;
+    case K_OUTPUTS:
+      buf[0] = '\0';
+      for (int i = 0; i < SCENE_N_OUTPUTS; i++)
+        if (sc->outputs & (1u << i))
+          {
+            int m = snprintf (buf + n, size - n, "%s%s", n ? "," : "",
+                              output_names[i]);
+            if (m > 0 && (size_t) m < size - n)
+              n += (size_t) m;
+          }
+      return buf;
+    case K_METHOD:
+      return method_names[sc->method];
+    case K_STOP_FATE:
+      return yes_no[sc->stop_fate != 0];
+    case K_KIND:
+      return kind_names[sc->sweep];
+    case K_Y:
+      if (sc->text[k][0])
+        return sc->text[k];
+      buf[0] = '\0';
+      for (size_t i = 0; i < sc->n_y; i++)
+        {
+          char one[32];
+          int m = snprintf (buf + n, size - n, "%s%s", i ? "," : "",
+                            format_real (sc->y[i], one, sizeof one));
+          if (m > 0 && (size_t) m < size - n)
+            n += (size_t) m;
+        }
+      return buf;
+    case K_DIR:
+      snprintf (buf, size, "%d", sc->dir);
+      return buf;
+    case K_VIEW:
+      return view_names[sc->view];
+    default:
+      break;
+    }
+  return NULL;
+}
+
+int
+scene_write (const scene *sc, FILE *out, const char *prefix)
+{
+  /* holds any value: 64 reals of y, or a text of a line */
+  char buf[SCENE_SWEEP_YMAX * 32 + SCENE_TEXT_MAX];
+  const char *why;
+
+  for (int sec = 0; sec < SEC_COUNT; sec++)
+    {
+      int header = 0;
+      for (int k = 0; k < K_COUNT; k++)
+        {
+          const char *v;
+          if ((int) keys[k].section != sec
+              || key_use (sc, k, &why) == USE_NOT
+              || !(v = value_text (sc, k, buf, sizeof buf)))
+            continue;
+          if (!header)
+            fprintf (out, "%s[%s]\n", prefix, section_names[sec]);
+          header = 1;
+          /* A line of INI_MAX_LINE - 2 bytes at most, as read; no space
+             before a value that begins with ';' (inih would take " ;"
+             for the start of a comment). */
+          if (strlen (keys[k].name) + strlen (v) + 3 <= INI_MAX_LINE - 2)
+            fprintf (out, "%s%s =%s%s\n", prefix, keys[k].name,
+                     v[0] == ';' ? "" : " ", v);
+          else
+            fprintf (out, "%s%s=%s\n", prefix, keys[k].name, v);
+        }
+    }
+  return ferror (out) ? -1 : 0;
 }

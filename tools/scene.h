@@ -35,6 +35,24 @@
                              ; the smooth and massless models have only
                              ; closed-form
      tolerance = 1e-12       ; quadrature and ode: 1e-15 <= tol < 1
+     every = 1               ; discrete, massless: write only collisions
+                             ; (per collision: rows; dense: segments) n
+                             ; that are multiples of every, and the last;
+                             ; 1..1e9 (default 1)
+     stop_fate = no          ; discrete: yes ends the run at the first
+                             ; collision whose fate is certain
+                             ; (chaplygin_discrete_fate) (default no)
+     stop_H = 1e-12          ; discrete, massless: end the run at the first
+                             ; collision with |H| < stop_H sqrt(2E), i.e.
+                             ; 2E/H^2 > 1/stop_H^2; > 0 (optional)
+     stop_tau = 100          ; discrete, massless: end the run at the first
+                             ; collision with tau >= stop_tau; > 0
+                             ; (optional)
+     max_rows = 10000000     ; the row limit of the output (any scene):
+                             ; a run that would certainly write more is
+                             ; refused before anything is written, one with
+                             ; a stop condition ends there; 1..2^53 - 1
+                             ; (default SCENE_MAX_ROWS_DEFAULT)
      [sweep]                 ; optional: a parameter sweep instead of a run
      kind = stability        ; sigma4 (Fig. 2a) | stability (Fig. 2b) |
                              ; basins (Fig. 3)
@@ -49,6 +67,10 @@
                              ; basins: L0, Delta from [parameters], Omega
                              ; from [initial], collisions = the most
                              ; collisions iterated per point
+     [plot]                  ; optional: read by "chaplygin plot" only
+     view = panels           ; panels (the path and V, Omega, theta, E, H
+                             ; against time) | phase-space (discrete: the
+                             ; (S, E/E_f, H) curves of Figures 4, 5)
 
    Every key is checked: unknown sections or keys, a key given twice, a key
    the model does not use, a missing required key, a value that is not a
@@ -60,6 +82,7 @@
 #define CHAPLYGIN_TOOLS_SCENE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "chaplygin.h"
 
@@ -94,7 +117,19 @@ enum scene_output
   SCENE_OUT_G = 1u << 8        /* G_x, G_y: the mass centre */
 };
 
+typedef enum
+{
+  PLOT_PANELS = 0,
+  PLOT_PHASE_SPACE = 1
+} plot_view;
+
 #define SCENE_SWEEP_YMAX 64
+#define SCENE_COLLISIONS_MAX 1000000000L
+#define SCENE_MAX_ROWS_DEFAULT 10000000L
+#define SCENE_MAX_ROWS_MAX 9007199254740991L      /* 2^53 - 1 */
+/* The keys of a scene file; SCENE_TEXT_MAX holds any value of a line. */
+#define SCENE_N_KEYS 30
+#define SCENE_TEXT_MAX 200
 
 typedef struct
 {
@@ -105,10 +140,15 @@ typedef struct
   double V, Omega, theta;       /* theta defaults to 0 */
   long collisions;              /* -1 if not given */
   double duration;              /* NAN if not given */
-  long samples;                 /* -1 if not given */
+  long samples;                 /* not given: 0 (discrete, massless),
+                                   200 (smooth), -1 (a sweep) */
   unsigned outputs;             /* SCENE_OUT_* */
   chaplygin_method method;
   double tolerance;             /* default 1e-12 */
+  long every;                   /* default 1 */
+  int stop_fate;                /* 1: stop_fate = yes */
+  double stop_H, stop_tau;      /* NAN if not given */
+  long max_rows;                /* default SCENE_MAX_ROWS_DEFAULT */
   /* [sweep] */
   sweep_kind sweep;
   double x_min, x_max, y_min, y_max;
@@ -116,6 +156,12 @@ typedef struct
   double y[SCENE_SWEEP_YMAX];
   size_t n_y;
   int dir;
+  /* [plot] */
+  plot_view view;               /* default PLOT_PANELS */
+  /* The text of each key's value as the file gave it (scene_write prints
+     those of reals and of y), "" for a key not given (and in a scene not
+     read from a file). */
+  char text[SCENE_N_KEYS][SCENE_TEXT_MAX];
 } scene;
 
 #define SCENE_ERRLEN 512
@@ -125,10 +171,33 @@ typedef struct
    applies) in err (errlen bytes, always NUL-terminated). */
 int scene_load (const char *path, scene *sc, char *err, size_t errlen);
 
+/* The same from the open stream IN (standard input for "-"), NAME standing
+   for the file name in messages. */
+int scene_read (FILE *in, const char *name, scene *sc, char *err,
+                size_t errlen);
+
 /* The same from the LEN bytes at TEXT (need not be NUL-terminated; may
    contain NUL bytes, which are an error), NAME standing for the file name
    in messages.  The fuzzing target. */
 int scene_parse (const char *text, size_t len, const char *name, scene *sc,
                  char *err, size_t errlen);
+
+/* Write the effective scene SC as a scene file to OUT, each line preceded
+   by PREFIX ("" or "# "): every key the scene uses, defaults included (a
+   key without a default, such as stop_H, only if given): a real or the y
+   list as the file gave it where it did (text[]: "1/3" stays "1/3"), else
+   the field's value (integers exactly, reals with the fewest digits that
+   read back as the same double, words, outputs in canonical order).
+   Reading the output back gives the same scene.  Returns 0, or -1 if
+   writing failed. */
+int scene_write (const scene *sc, FILE *out, const char *prefix);
+
+/* At most MAX bytes of the text S into BUF (SIZE >= 12 bytes), to be shown
+   on one line: control bytes as \xHH, "..." where it is cut (by MAX or by
+   SIZE); returns BUF. */
+const char *scene_shown (char *buf, size_t size, const char *s, size_t max);
+
+/* Whether SC has a stop condition (stop_fate, stop_H or stop_tau). */
+int scene_has_stop (const scene *sc);
 
 #endif

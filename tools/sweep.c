@@ -1,12 +1,12 @@
-/* sweep.c -- "chaplygin sweep SCENE.ini": the parameter sweeps of the
-   paper's Figures 2(a), 2(b) and 3 as CSV, computed in parallel with
-   OpenMP and split across processes or machines with --shard i/N.
+/* sweep.c -- the parameter sweeps of the paper's Figures 2(a), 2(b) and
+   3 as CSV, computed in parallel with OpenMP and split across processes
+   or machines with --shard i/N (the command line: sweep-main.c).
 
    Every point of a sweep has a global index k, and its row depends on k
    alone, so the output is the same for any number of threads, and the
    shards' outputs concatenated in shard order (each begins with the
-   header line) are the unsharded output once the repeated header lines
-   are dropped.  Shard s of N holds the k in
+   header line, then its provenance lines) are the unsharded output once
+   the repeated header lines and the '#' lines are dropped.  Shard s of N holds the k in
    [floor(s T/N), floor((s+1) T/N)), T the number of points.
 
    Grid values: v_j = lo + (hi - lo) (j/(n - 1)), j = 0 .. n-1, with
@@ -19,10 +19,11 @@
    sigma4 (Fig. 2(a)), k = i nx + j for y = the i-th value of the [sweep]
    y list and x = x_j (x = L0/Delta, y = (1/Delta)^2):
      k,y,x,sigma4,status
-       sigma4  (3.10) for the direction [sweep] dir; empty if status != 0
-       status  0, or the library's status at this point (5,
-               CHAPLYGIN_ERANGE: sigma4 is infinite, at y = 0 with x = -1
-               for dir +1 or x = 0 for dir -1)
+       sigma4  (3.10) for the direction [sweep] dir; empty unless
+               status is SUCCESS
+       status  SUCCESS, or the name of the library's status at this point
+               (status_name: ERANGE where sigma4 is infinite, at y = 0
+               with x = -1 for dir +1 or x = 0 for dir -1)
 
    stability (Fig. 2(b)), k = i nx + j for y = y_i, x = x_j:
      k,x,y,region,forward,backward
@@ -43,14 +44,13 @@
        reversals   velocity reversals on the way
        E_final     final energy (B.10) (undecided: E after the collisions)
        V_final     final velocity (spin: 0; undecided: V+ after them)
-       status      0, or the library's status at this point (then the
-                   fate fields are empty).  A grid point V+ = 0 (not a
-                   state just after a collision) is not passed to the
-                   library: its row has status 3 (CHAPLYGIN_ESTATE).
+       status      SUCCESS, or the name of the library's status at this
+                   point (then the fate fields are empty).  A grid point
+                   V+ = 0 (not a state just after a collision) is not
+                   passed to the library: its row has status ESTATE.
 
-   Exit status: 0 success (points where the library failed are rows with a
-   status); 1 output error (also: -o FILE cannot be opened); 2 usage error or a scene the sweep cannot use
-   (no [sweep] section, a skate chaplygin_discrete_init rejects, ...).  */
+   A shard with more points than [run] max_rows is refused before anything
+   is written (bounds.h). */
 #include <config.h>
 
 #include <errno.h>
@@ -66,8 +66,10 @@
 #include <omp.h>
 #endif
 
+#include "bounds.h"
 #include "chaplygin.h"
 #include "progress.h"
+#include "provenance.h"
 #include "scene.h"
 #include "sweep.h"
 
@@ -78,8 +80,6 @@ enum sweep_exit
   SWEEP_EXIT_USAGE = 2      /* bad command line or unusable scene */
 };
 
-#define SHARDS_MAX 1000000L
-#define THREADS_MAX 4096L
 #define GRID_MAX 10000000L          /* nx, ny at most (scene.h) */
 #define BLOCK_POINTS 65536          /* rows computed per block (two
                                        blocks in memory: 25 MB) */
@@ -91,41 +91,12 @@ enum sweep_exit
 typedef struct
 {
   const scene *sc;
+  const char *path;           /* the scene file */
+  const char *command;        /* provenance lines (NULL: none) */
   uint64_t nx;                /* x grid points */
   uint64_t total;             /* T: points in the whole sweep */
   chaplygin_discrete sys;     /* basins: the skate */
 } sweep_plan;
-
-static const char usage_text[] =
-  "Usage: chaplygin sweep SCENE.ini [--shard i/N] [-o FILE] [--threads N]\n"
-  "\n"
-  "Compute the [sweep] of the scene file SCENE.ini (kind sigma4: Fig. 2(a),\n"
-  "stability: Fig. 2(b), basins: Fig. 3) and write it as CSV, one row per\n"
-  "point with its global index k.\n"
-  "\n"
-  "Options:\n"
-  "  --shard i/N     only the i-th of N equal parts of the points,\n"
-  "                  0 <= i < N <= 1000000; the parts concatenated in order\n"
-  "                  (header lines after the first dropped) are the whole\n"
-  "  -o, --output FILE  write to FILE instead of standard output\n"
-  "  --threads N     OpenMP threads, 1..4096 [OpenMP's default, e.g.\n"
-  "                  OMP_NUM_THREADS]; no effect in a build without OpenMP\n"
-  "  -h, --help      print this text and exit\n"
-  "The output does not depend on the number of threads.  A progress bar is\n"
-  "drawn on standard error when it is a terminal (and the output is not),\n"
-  "unless CHAPLYGIN_NO_PROGRESS is set.\n"
-  "\n"
-  "Columns (numbers with %.17g; an empty field: not computed, see status):\n"
-  "  sigma4     k,y,x,sigma4,status                 x = L0/Delta,\n"
-  "  stability  k,x,y,region,forward,backward       y = (1/Delta)^2\n"
-  "  basins     k,V0,fate,collisions,reversals,E_final,V_final,status\n"
-  "region = forward + 2 backward: 1 where V* > 0 is stable (3.11), 2 where\n"
-  "V* < 0 is (3.12); fate -1 backward, 0 spin, 1 forward, 2 undecided;\n"
-  "status 0 or the library's status at the point (a V0 of 0: 3).\n"
-  "\n"
-  "Exit status: 0 success (a point where the library fails is a row with\n"
-  "its status); 1 an output error (or -o FILE cannot be opened); 2 a usage\n"
-  "error or an unusable scene.\n";
 
 /* ------------------------------------------------------------------ */
 /* The points                                                          */
@@ -157,6 +128,31 @@ shard_start (uint64_t total, uint64_t s, uint64_t n)
   return s * q + s * r / n;
 }
 
+/* The name of the library's STATUS in the status column (the suffix of
+   its name in chaplygin.h: SUCCESS, ERANGE, ...), or NULL if unknown. */
+static const char *
+status_name (int status)
+{
+  static const char *const names[] = { "SUCCESS", "EINVAL", "EDOM",
+                                       "ESTATE", "ESPIN", "ERANGE",
+                                       "ENOCONV", "ENOMEM" };
+  if (status >= 0 && (size_t) status < sizeof names / sizeof names[0])
+    return names[status];
+  return NULL;
+}
+
+/* STATUS as the status column prints it into BUF (16 bytes): its name,
+   or its number where it has none. */
+static const char *
+status_field (int status, char *buf)
+{
+  const char *name = status_name (status);
+  if (name)
+    return name;
+  snprintf (buf, 16, "%d", status);
+  return buf;
+}
+
 /* The row of sigma4 point K into BUF (LEN bytes); returns its length. */
 static int
 format_sigma4 (const sweep_plan *plan, uint64_t k, char *buf, size_t len)
@@ -165,12 +161,13 @@ format_sigma4 (const sweep_plan *plan, uint64_t k, char *buf, size_t len)
   double y = sc->y[k / plan->nx];
   double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
   double sigma4 = 0.0;
+  char st[16];
   int status = chaplygin_sweep_sigma4 (sc->dir, y, 1, &x, &sigma4, NULL);
   if (status != CHAPLYGIN_SUCCESS)
-    return snprintf (buf, len, "%" PRIu64 ",%.17g,%.17g,,%d\n", k, y, x,
-                     status);
-  return snprintf (buf, len, "%" PRIu64 ",%.17g,%.17g,%.17g,0\n", k, y, x,
-                   sigma4);
+    return snprintf (buf, len, "%" PRIu64 ",%.17g,%.17g,,%s\n", k, y, x,
+                     status_field (status, st));
+  return snprintf (buf, len, "%" PRIu64 ",%.17g,%.17g,%.17g,SUCCESS\n", k,
+                   y, x, sigma4);
 }
 
 /* The row of stability point K into BUF (LEN bytes); returns its length. */
@@ -204,10 +201,13 @@ format_basins (const sweep_plan *plan, uint64_t k, char *buf, size_t len)
                                               (unsigned long) sc->collisions,
                                               NULL, 0, &fate);
     }
+  char st[16];
   if (status != CHAPLYGIN_SUCCESS)
-    return snprintf (buf, len, "%" PRIu64 ",%.17g,,,,,,%d\n", k, V, status);
-  return snprintf (buf, len, "%" PRIu64 ",%.17g,%d,%lu,%lu,%.17g,%.17g,0\n",
-                   k, V, fate.kind, fate.collisions, fate.reversals,
+    return snprintf (buf, len, "%" PRIu64 ",%.17g,,,,,,%s\n", k, V,
+                     status_field (status, st));
+  return snprintf (buf, len,
+                   "%" PRIu64 ",%.17g,%d,%lu,%lu,%.17g,%.17g,SUCCESS\n", k,
+                   V, fate.kind, fate.collisions, fate.reversals,
                    fate.E_final, fate.V_final);
 }
 
@@ -417,6 +417,8 @@ write_shard (const sweep_plan *plan, uint64_t shard, uint64_t nshards,
   errno = 0;
   if (!error && fputs (header_line (plan->sc->sweep), out) == EOF)
     error = errno ? errno : EIO;
+  if (!error && plan->command)
+    provenance_header (out, plan->command, plan->path, plan->sc, 0);
   const int show = bar->stream != NULL;
   uint64_t done = 0;            /* points finished, in this shard */
   for (uint64_t b = 0; b <= nblocks && !error; b++)
@@ -469,6 +471,16 @@ write_shard (const sweep_plan *plan, uint64_t shard, uint64_t nshards,
       free (blocks[b].text);
       free (blocks[b].length);
     }
+  if (!error && plan->command)
+    {
+      if (count > 0)
+        provenance_end (out, "complete: %" PRIu64 " points, k = %" PRIu64
+                        " .. %" PRIu64 " of %" PRIu64, count, first,
+                        first + count - 1, plan->total);
+      else
+        provenance_end (out, "complete: 0 points of %" PRIu64,
+                        plan->total);
+    }
 
   errno = 0;
   if (error != -2 && (fflush (out) != 0 || ferror (out)) && !error)
@@ -484,25 +496,59 @@ write_shard (const sweep_plan *plan, uint64_t shard, uint64_t nshards,
   return error ? SWEEP_EXIT_FAILURE : SWEEP_EXIT_OK;
 }
 
-/* Shard SHARD of NSHARDS of the sweep of SC (from PATH) on OUT, called
-   OUT_NAME in messages; the progress bar on stderr unless OUT is a
-   terminal itself.  Returns the exit status. */
-static int
-run_sweep (const scene *sc, const char *path, int shard, int nshards,
-           FILE *out, const char *out_name)
+/* The points of shard SHARD of NSHARDS of PLAN. */
+static uint64_t
+shard_count (const sweep_plan *plan, int shard, int nshards)
 {
+  return shard_start (plan->total, (uint64_t) shard + 1, (uint64_t) nshards)
+    - shard_start (plan->total, (uint64_t) shard, (uint64_t) nshards);
+}
+
+/* The plan of shard SHARD of NSHARDS of SC (from PATH), checked against
+   the row limit.  Returns the exit status (2 after a message). */
+static int
+plan_shard (const scene *sc, const char *path, int shard, int nshards,
+            sweep_plan *plan)
+{
+  static const int columns[] = { 0, 5, 6, 8 };
   if (nshards < 1 || shard < 0 || shard >= nshards)
     {
       fprintf (stderr, "chaplygin: shard %d/%d: need 0 <= i < N\n", shard,
                nshards);
       return SWEEP_EXIT_USAGE;
     }
-  sweep_plan plan;
-  int rc = plan_sweep (sc, path, &plan);
+  int rc = plan_sweep (sc, path, plan);
   if (rc != SWEEP_EXIT_OK)
     return rc;
+  if (bounds_check (path, nshards > 1 ? "the shard" : "the sweep",
+                    (double) shard_count (plan, shard, nshards),
+                    columns[sc->sweep], sc->max_rows,
+                    "split it (--shard i/N) or raise the limit ([run] "
+                    "max_rows, or --max-rows)") != 0)
+    return SWEEP_EXIT_USAGE;
+  return SWEEP_EXIT_OK;
+}
 
-  uint64_t s = (uint64_t) shard, n = (uint64_t) nshards;
+int
+sweep_check (const scene *sc, const char *path, int shard, int nshards)
+{
+  sweep_plan plan;
+  return plan_shard (sc, path, shard, nshards, &plan);
+}
+
+/* sweep_run: see sweep.h.  The progress bar on stderr unless OUT is a
+   terminal itself. */
+int
+sweep_run (const scene *sc, const char *path, int shard, int nshards,
+           const char *command, FILE *out, const char *out_name)
+{
+  sweep_plan plan;
+  int rc = plan_shard (sc, path, shard, nshards, &plan);
+  if (rc != SWEEP_EXIT_OK)
+    return rc;
+  plan.path = path;
+  plan.command = command;
+
   char label[32];
   if (nshards > 1)
     snprintf (label, sizeof label, "sweep %d/%d", shard, nshards);
@@ -510,264 +556,7 @@ run_sweep (const scene *sc, const char *path, int shard, int nshards,
     snprintf (label, sizeof label, "sweep");
   progress bar;
   progress_init (&bar, isatty (fileno (out)) ? NULL : stderr, label,
-                 (double) (shard_start (plan.total, s + 1, n)
-                           - shard_start (plan.total, s, n)));
-  return write_shard (&plan, s, n, out, out_name, &bar);
-}
-
-/* sweep_run: see sweep.h.  Output errors are reported as "error writing
-   to the output". */
-int
-sweep_run (const scene *sc, const char *path, int shard, int nshards,
-           FILE *out)
-{
-  return run_sweep (sc, path, shard, nshards, out, "the output");
-}
-
-/* ------------------------------------------------------------------ */
-/* The command line                                                    */
-/* ------------------------------------------------------------------ */
-
-static void
-usage_hint (void)
-{
-  fputs ("Try 'chaplygin sweep --help' for more information.\n", stderr);
-}
-
-/* A decimal integer 0..SHARDS_MAX at *P (digits only), advancing *P past
-   it.  Returns 0, or -1 if there are no digits or the value is larger. */
-static int
-parse_shard_number (const char **p, long *value)
-{
-  const char *s = *p;
-  long v = 0;
-  if (*s < '0' || *s > '9')
-    return -1;
-  for (; *s >= '0' && *s <= '9'; s++)
-    {
-      v = 10 * v + (*s - '0');
-      if (v > SHARDS_MAX)
-        return -1;
-    }
-  *value = v;
-  *p = s;
-  return 0;
-}
-
-/* "--shard TEXT": TEXT exactly "i/N", decimal digits, 0 <= i < N <=
-   SHARDS_MAX.  Returns SWEEP_EXIT_OK, or SWEEP_EXIT_USAGE after a
-   message. */
-static int
-parse_shard (const char *text, int *shard, int *nshards)
-{
-  const char *p = text;
-  long i, n;
-  if (parse_shard_number (&p, &i) != 0 || *p++ != '/'
-      || parse_shard_number (&p, &n) != 0 || *p != '\0')
-    {
-      fprintf (stderr, "chaplygin: sweep: --shard '%s': not of the form "
-               "i/N with integers 0 <= i < N <= %ld\n", text, SHARDS_MAX);
-      return SWEEP_EXIT_USAGE;
-    }
-  if (n < 1 || i >= n)
-    {
-      fprintf (stderr, "chaplygin: sweep: --shard '%s': need 0 <= i < N\n",
-               text);
-      return SWEEP_EXIT_USAGE;
-    }
-  *shard = (int) i;
-  *nshards = (int) n;
-  return SWEEP_EXIT_OK;
-}
-
-/* "--threads TEXT": an integer 1..THREADS_MAX.  Returns SWEEP_EXIT_OK, or
-   SWEEP_EXIT_USAGE after a message. */
-static int
-parse_threads (const char *text, int *threads)
-{
-  char *end;
-  long v;
-  errno = 0;
-  v = strtol (text, &end, 10);
-  if (*text == '\0' || *end != '\0' || errno == ERANGE || v < 1
-      || v > THREADS_MAX)
-    {
-      fprintf (stderr, "chaplygin: sweep: --threads '%s': not an integer "
-               "in 1..%ld\n", text, THREADS_MAX);
-      return SWEEP_EXIT_USAGE;
-    }
-  *threads = (int) v;
-  return SWEEP_EXIT_OK;
-}
-
-/* The settings of "sweep". */
-typedef struct
-{
-  const char *scene_path;
-  const char *output;     /* NULL: stdout */
-  int shard, nshards;
-  int threads;            /* 0: OpenMP's default */
-} sweep_args;
-
-/* If ARG is the option NAME ("--name" or "--name=value"; SHORT_NAME, if
-   not NULL, as "-x value"), set *VALUE to its value, taken from ARGV[*I]
-   (advancing *I) when not given with '='.  Returns 1 if ARG is the
-   option, 0 if not, -1 (after a message) if its value is missing. */
-static int
-match_option (const char *arg, const char *name, const char *short_name,
-              int argc, char **argv, int *i, const char **value)
-{
-  size_t len = strlen (name);
-  if (strncmp (arg, name, len) == 0 && arg[len] == '=')
-    {
-      *value = arg + len + 1;
-      return 1;
-    }
-  if (strcmp (arg, name) != 0
-      && !(short_name && strcmp (arg, short_name) == 0))
-    return 0;
-  if (*i >= argc)
-    {
-      fprintf (stderr, "chaplygin: sweep: option '%s' requires a value\n",
-               arg);
-      usage_hint ();
-      return -1;
-    }
-  *value = argv[(*i)++];
-  return 1;
-}
-
-/* Parse the arguments of "sweep" into ARGS.  Returns -1 to go on, or an
-   exit status (after --help or a message). */
-static int
-parse_sweep_args (int argc, char **argv, sweep_args *args)
-{
-  int i = 0, only_operands = 0;
-  while (i < argc)
-    {
-      const char *arg = argv[i++];
-      const char *value = NULL;
-      int m;
-
-      if (!only_operands && strcmp (arg, "--") == 0)
-        {
-          only_operands = 1;
-          continue;
-        }
-      if (!only_operands && arg[0] == '-' && arg[1] != '\0')
-        {
-          if (strcmp (arg, "--help") == 0 || strcmp (arg, "-h") == 0)
-            {
-              fputs (usage_text, stdout);
-              if (fflush (stdout) != 0 || ferror (stdout))
-                {
-                  fprintf (stderr, "chaplygin: error writing to standard "
-                           "output: %s\n", strerror (errno));
-                  return SWEEP_EXIT_FAILURE;
-                }
-              return SWEEP_EXIT_OK;
-            }
-          if ((m = match_option (arg, "--shard", NULL, argc, argv, &i,
-                                 &value)) != 0)
-            {
-              if (m < 0)
-                return SWEEP_EXIT_USAGE;
-              if (parse_shard (value, &args->shard, &args->nshards) != 0)
-                return SWEEP_EXIT_USAGE;
-            }
-          else if ((m = match_option (arg, "--output", "-o", argc, argv, &i,
-                                      &value)) != 0)
-            {
-              if (m < 0)
-                return SWEEP_EXIT_USAGE;
-              if (*value == '\0')
-                {
-                  fputs ("chaplygin: sweep: --output: empty file name\n",
-                         stderr);
-                  return SWEEP_EXIT_USAGE;
-                }
-              args->output = value;
-            }
-          else if ((m = match_option (arg, "--threads", NULL, argc, argv, &i,
-                                      &value)) != 0)
-            {
-              if (m < 0)
-                return SWEEP_EXIT_USAGE;
-              if (parse_threads (value, &args->threads) != 0)
-                return SWEEP_EXIT_USAGE;
-            }
-          else
-            {
-              fprintf (stderr, "chaplygin: sweep: unknown option '%s'\n",
-                       arg);
-              usage_hint ();
-              return SWEEP_EXIT_USAGE;
-            }
-          continue;
-        }
-      if (args->scene_path)
-        {
-          fprintf (stderr, "chaplygin: sweep: unexpected argument '%s'\n",
-                   arg);
-          usage_hint ();
-          return SWEEP_EXIT_USAGE;
-        }
-      args->scene_path = arg;
-    }
-  if (!args->scene_path)
-    {
-      fputs ("chaplygin: sweep: missing scene file\n", stderr);
-      usage_hint ();
-      return SWEEP_EXIT_USAGE;
-    }
-  return -1;
-}
-
-/* sweep_main: everything is checked (arguments, scene, sweep) before the
-   output file is opened; it is then truncated even if the shard is empty
-   (the header line alone).  Failing to open it exits 1. */
-int
-sweep_main (int argc, char **argv)
-{
-  sweep_args args = { NULL, NULL, 0, 1, 0 };
-  int rc = parse_sweep_args (argc, argv, &args);
-  if (rc >= 0)
-    return rc;
-
-  scene sc;
-  char err[SCENE_ERRLEN];
-  if (scene_load (args.scene_path, &sc, err, sizeof err) != 0)
-    {
-      fprintf (stderr, "chaplygin: %s\n", err);
-      return SWEEP_EXIT_USAGE;
-    }
-  sweep_plan plan;
-  rc = plan_sweep (&sc, args.scene_path, &plan);
-  if (rc != SWEEP_EXIT_OK)
-    return rc;
-
-#ifdef _OPENMP
-  if (args.threads > 0)
-    omp_set_num_threads (args.threads);
-#endif
-
-  if (!args.output)
-    return run_sweep (&sc, args.scene_path, args.shard, args.nshards, stdout,
-                      "standard output");
-
-  FILE *out = fopen (args.output, "w");
-  if (!out)
-    {
-      fprintf (stderr, "chaplygin: %s: %s\n", args.output, strerror (errno));
-      return SWEEP_EXIT_FAILURE;
-    }
-  rc = run_sweep (&sc, args.scene_path, args.shard, args.nshards, out,
-                  args.output);
-  if (fclose (out) != 0 && rc == SWEEP_EXIT_OK)
-    {
-      fprintf (stderr, "chaplygin: error writing to %s: %s\n", args.output,
-               strerror (errno));
-      rc = SWEEP_EXIT_FAILURE;
-    }
-  return rc;
+                 (double) shard_count (&plan, shard, nshards));
+  return write_shard (&plan, (uint64_t) shard, (uint64_t) nshards, out,
+                      out_name ? out_name : "the output", &bar);
 }

@@ -7,15 +7,24 @@
 
 #include "scene.h"
 
-/* Shard SHARD (0 <= shard < nshards) of the points of the sweep SC
-   (sc->sweep != SWEEP_NONE), as CSV on OUT: the header line, then one row
-   per point with its global index, so that the shards' rows concatenated
-   in shard order are the rows of the unsharded sweep.  Returns an exit status (0, 1 failure/write error, 2 a
-   sweep the library rejects, with a message naming PATH). */
-int sweep_run (const scene *sc, const char *path, int shard, int nshards,
-               FILE *out);
+/* Whether shard SHARD of NSHARDS of the sweep SC (from PATH) can be run:
+   a sweep the library accepts, 0 <= shard < nshards, at most max_rows
+   points.  Returns 0, or the exit status 2 after a message. */
+int sweep_check (const scene *sc, const char *path, int shard,
+                 int nshards);
 
-/* "chaplygin sweep ..." with ARGV[0] the first argument after "sweep". */
+/* Shard SHARD (0 <= shard < nshards) of the points of the sweep SC
+   (sc->sweep != SWEEP_NONE), as CSV on OUT (OUT_NAME in messages; NULL:
+   "the output"): the header line, the provenance lines of COMMAND (NULL:
+   none; provenance.h), one row per point with its global index, the
+   "# end:" line, so that the shards' rows concatenated in shard order are
+   the rows of the unsharded sweep.  Returns an exit status (0, 1 failure or
+   write error, 2 what sweep_check refuses, with a message naming PATH). */
+int sweep_run (const scene *sc, const char *path, int shard, int nshards,
+               const char *command, FILE *out, const char *out_name);
+
+/* "chaplygin sweep ..." with ARGV[0] the first argument after "sweep"
+   (sweep-main.c). */
 int sweep_main (int argc, char **argv);
 
 #endif

@@ -30,9 +30,16 @@ result () {
   fi
 }
 
-# run ARGS...: run the program; stdout in $tmp/out, stderr in $tmp/err,
-# exit status in $rc.
+# run ARGS...: run the program; stdout in $tmp/raw, and without its '#'
+# lines (provenance) in $tmp/out; stderr in $tmp/err, exit status in $rc.
 run () {
   rc=0
-  "$prog" "$@" >"$tmp/out" 2>"$tmp/err" || rc=$?
+  "$prog" "$@" >"$tmp/raw" 2>"$tmp/err" || rc=$?
+  grep -v '^#' "$tmp/raw" >"$tmp/out" || :
+}
+
+# csv_only FILE: FILE without its '#' lines, in place.
+csv_only () {
+  grep -v '^#' "$1" >"$1.csv-only" || :
+  mv "$1.csv-only" "$1"
 }

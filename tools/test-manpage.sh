@@ -7,7 +7,11 @@
 #     OUTPUT or COMMANDS;
 #  3. every status of the library (lib/chaplygin.h) is in STATUS CODES;
 #  4. the generated chapter doc/program.texi indexes every scene key;
-#  5. every subcommand of --help has its entry in COMMANDS.
+#  5. every subcommand of --help has its entry in COMMANDS;
+#  6. every option of the --help texts (the program's, sweep's, plot's,
+#     eq's) is named in the man page;
+#  7. every status the sweeps print (by name) is a tag of STATUS CODES,
+#     and every status of the library has its name there.
 # POSIX sh.
 
 set -u
@@ -17,7 +21,7 @@ prog=$top_builddir/tools/chaplygin
 man=$top_srcdir/tools/chaplygin.1.in
 
 . "$top_srcdir/tools/tap-lib.sh"
-tap_start test-manpage 5
+tap_start test-manpage 7
 
 # section NAME: the lines of the man page's .SH NAME section.
 section () {
@@ -112,6 +116,10 @@ for args in "run $tmp/d.ini" "run $tmp/dense.ini" "run --compare $tmp/d.ini" \
   run $args
   if test "$rc" -ne 0; then echo "# $args: exit $rc" >&2; echo "__failed__" >> "$tmp/headers"; fi
   head -n 1 "$tmp/out" | tr ',' '\n' >> "$tmp/headers"
+  case $args in
+    "run $tmp/s4.ini"|"run $tmp/b.ini") cut -d, -f5,8 "$tmp/out" \
+      | sed 1d | tr ',' '\n' | grep '^[A-Z]' >> "$tmp/statuses" ;;
+  esac
 done
 text=$( (section OUTPUT; section COMMANDS) | sed -e 's/\\://g' -e 's/\\f[BIRP]//g' -e 's/\\-/-/g')
 missing=""
@@ -149,3 +157,27 @@ for s in $subs; do
 done
 ok=1; test -n "$subs" && test -z "$missing" && ok=0
 result "$ok" "every subcommand of --help ($(echo $subs)) has its entry in COMMANDS${missing:+ (missing:$missing)}"
+
+# 6: options
+: > "$tmp/options"
+for args in "--help" "sweep --help" "plot --help" "eq --help"; do
+  # shellcheck disable=SC2086
+  run $args
+  grep -o -- '--[a-zA-Z][a-zA-Z0-9-]*' "$tmp/out" | grep -vx -- '--name' >> "$tmp/options"
+done
+man_text=$(sed -e 's/\\-/-/g' "$man")
+missing=""
+for o in $(sort -u "$tmp/options"); do
+  echo "$man_text" | grep -q -- "$o" || missing="$missing $o"
+done
+ok=1; test -s "$tmp/options" && test -z "$missing" && ok=0
+result "$ok" "every option of the --help texts is in the man page${missing:+ (missing:$missing)}"
+
+# 7: status names
+tags=$(section "STATUS CODES" | awk '/^\.TP/ { getline; print $2 }')
+missing=""
+for st in $(sort -u "$tmp/statuses") $(echo "$statuses" | sed 's/CHAPLYGIN_//'); do
+  echo "$tags" | grep -qx "$st" || missing="$missing $st"
+done
+ok=1; test -s "$tmp/statuses" && test -z "$missing" && ok=0
+result "$ok" "every status name (the sweeps' $(sort -u "$tmp/statuses" | tr '\n' ' ')and the library's) is a tag of STATUS CODES${missing:+ (missing:$missing)}"

@@ -217,6 +217,17 @@ START_TEST (integers)
   integer_fails ("-1", 0, 10, NUMBER_RANGE);
   integer_fails ("1e400", 0, 10, NUMBER_RANGE);
   integer_fails ("abc", 0, 10, NUMBER_SYNTAX);
+  /* The exact value decides, not its rounding: each of these rounds to an
+     integer double. */
+  integer_fails ("1000.0000000000000001", 0, 10000, NUMBER_NOT_INTEGER);
+  integer_fails ("1e-400", 0, 10, NUMBER_NOT_INTEGER);
+  integer_fails ("0x1.00000000000000001p10", 0, 10000, NUMBER_NOT_INTEGER);
+  integer_fails ("10000000000000000001/10000000000000000000", 0, 10,
+                 NUMBER_NOT_INTEGER);
+  integer_is ("1000.000000000000000000", 0, 10000, 1000);
+  integer_is ("0x3e8.000p0", 0, 10000, 1000);
+  integer_is ("10000000000000000000/10000000000000000", 0, 10000, 1000);
+  integer_is ("-0", -1, 1, 0);
   /* 2^53 + 1 reads as 2^53: integers from 2^53 on are refused. */
   integer_fails ("9007199254740993", 0, LONG_MAX, NUMBER_RANGE);
   integer_fails ("9007199254740992", 0, LONG_MAX, NUMBER_RANGE);

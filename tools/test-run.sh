@@ -121,6 +121,7 @@ discrete fig6 1 0.3333333333333333 1 0.5 20
 run run "$tmp/fig6.ini"
 cp "$tmp/out" "$tmp/fig6.csv"
 "$prog" skate >"$tmp/skate.csv" 2>/dev/null
+csv_only "$tmp/skate.csv"
 ok=1
 test "$rc" -eq 0 && cmp -s "$tmp/fig6.csv" "$tmp/skate.csv" && ok=0
 test "$ok" -eq 0 || explain
@@ -132,6 +133,7 @@ run run "$tmp/back.ini"
 "$prog" skate --L0 -2.3570226039551585 --Delta 3.5355339059327378 --V -1 \
   --Omega 0.1 --collisions 15 --method quadrature --tol 1e-13 \
   >"$tmp/skate.csv" 2>/dev/null
+csv_only "$tmp/skate.csv"
 ok=1
 test "$rc" -eq 0 && cmp -s "$tmp/out" "$tmp/skate.csv" && ok=0
 result "$ok" "V < 0, method = quadrature: identical to skate"
@@ -464,6 +466,7 @@ cp "$tmp/out" "$tmp/cmp.csv"
   printf 'outputs = E,H,theta,tau,V,Omega,path\n'
 } >"$tmp/cmps.ini"
 "$prog" run "$tmp/cmps.ini" >"$tmp/cmps.csv" 2>/dev/null
+csv_only "$tmp/cmps.csv"
 ok=1
 test "$rc" -eq 0 && test -s "$tmp/cmp.csv" && cmp -s "$tmp/cmp.csv" "$tmp/cmps.csv" && ok=0
 test "$ok" -eq 0 || explain
@@ -538,7 +541,8 @@ collisions = 3'
 rm -f "$tmp/o.csv"
 run run "$tmp/fig6.ini" -o "$tmp/o.csv"
 ok=1
-test "$rc" -eq 0 && test ! -s "$tmp/out" && cmp -s "$tmp/o.csv" "$tmp/fig6.csv" && ok=0
+test "$rc" -eq 0 && test ! -s "$tmp/raw" && csv_only "$tmp/o.csv" \
+  && cmp -s "$tmp/o.csv" "$tmp/fig6.csv" && ok=0
 result "$ok" "-o FILE: the CSV in FILE, nothing on stdout"
 
 rm -f "$tmp/o.csv"

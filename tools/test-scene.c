@@ -125,7 +125,7 @@ START_TEST (discrete_defaults)
   ck_assert (sc.theta == 0);
   ck_assert_int_eq (sc.collisions, 20);
   ck_assert (isnan (sc.duration));
-  ck_assert_int_eq (sc.samples, -1);
+  ck_assert_int_eq (sc.samples, 0);
   ck_assert_uint_eq (sc.outputs, SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA
                      | SCENE_OUT_TAU | SCENE_OUT_PEG);
   ck_assert_int_eq (sc.method, CHAPLYGIN_CLOSED_FORM);
@@ -231,7 +231,7 @@ START_TEST (massless)
   ck_assert (sc.L0 == -0.25 && sc.V == -1 && sc.Omega == 0.5);
   ck_assert (isnan (sc.Delta));
   ck_assert_int_eq (sc.collisions, 7);
-  ck_assert_int_eq (sc.samples, -1);
+  ck_assert_int_eq (sc.samples, 0);
   ck_assert_uint_eq (sc.outputs, SCENE_OUT_PEG);
 }
 END_TEST
@@ -696,6 +696,145 @@ START_TEST (sweep_keys)
 }
 END_TEST
 
+/* The bounds of a run ([run] every, stop_fate, stop_H, stop_tau, max_rows)
+   and [plot] view: values, defaults, errors, which models take them. */
+START_TEST (bounds_keys)
+{
+  scene sc;
+  parse_ok (DISCRETE, &sc);
+  ck_assert_int_eq (sc.every, 1);
+  ck_assert_int_eq (sc.stop_fate, 0);
+  ck_assert (isnan (sc.stop_H) && isnan (sc.stop_tau));
+  ck_assert_int_eq (sc.max_rows, SCENE_MAX_ROWS_DEFAULT);
+  ck_assert_int_eq (sc.view, PLOT_PANELS);
+  ck_assert (!scene_has_stop (&sc));
+  parse_ok (DISCRETE "every = 1e3\nstop_fate = yes\nstop_H = 1/1000\n"
+            "stop_tau = 0x1p4\nmax_rows = 2e9\n[plot]\nview = phase-space\n",
+            &sc);
+  ck_assert_int_eq (sc.every, 1000);
+  ck_assert_int_eq (sc.stop_fate, 1);
+  ck_assert (sc.stop_H == 0.001 && sc.stop_tau == 16.0);
+  ck_assert_int_eq (sc.max_rows, 2000000000L);
+  ck_assert_int_eq (sc.view, PLOT_PHASE_SPACE);
+  ck_assert (scene_has_stop (&sc));
+  parse_ok (MASSLESS "every = 2\nstop_H = 1e-9\nstop_tau = 5\n", &sc);
+  ck_assert (scene_has_stop (&sc));
+  parse_ok (SMOOTH "max_rows = 10\n[plot]\nview = panels\n", &sc);
+  ck_assert_int_eq (sc.max_rows, 10);
+  parse_ok (STABILITY "[run]\nmax_rows = 1e8\n", &sc);
+  ck_assert_int_eq (sc.max_rows, 100000000L);
+
+  expect_error (DISCRETE "every = 0\n", 11, "[run] every",
+                "out of range (1..1000000000)");
+  expect_error (DISCRETE "every = 2.5\n", 11, "[run] every",
+                "is not an integer");
+  expect_error (DISCRETE "stop_fate = 1\n", 11, "[run] stop_fate",
+                "is not one of no, yes");
+  expect_error (DISCRETE "stop_H = 0\n", 11, "[run] stop_H", "is not > 0");
+  expect_error (DISCRETE "stop_tau = -1\n", 11, "[run] stop_tau",
+                "is not > 0");
+  expect_error (DISCRETE "stop_tau = 1e999\n", 11, "[run] stop_tau",
+                "out of range");
+  expect_error (DISCRETE "max_rows = 0\n", 11, "[run] max_rows",
+                "out of range");
+  expect_error (DISCRETE "max_rows = 9007199254740992\n", 11,
+                "[run] max_rows", "out of range");
+  expect_error (MASSLESS "stop_fate = yes\n", 10, "[run] stop_fate",
+                "only with model discrete (the library gives the fate of "
+                "the discrete skate only)");
+  expect_error (SMOOTH "every = 2\n", 10, "[run] every",
+                "not used by model smooth");
+  expect_error (SMOOTH "stop_H = 1e-3\n", 10, "[run] stop_H",
+                "not used by model smooth");
+  expect_error (SIGMA4 "[run]\nstop_tau = 3\n", 11, "[run] stop_tau",
+                "not used by a sigma4 sweep");
+  expect_error (BASINS "[run]\nevery = 3\n", 16, "[run] every",
+                "not used by a basins sweep");
+  expect_error (STABILITY "[plot]\nview = panels\n", 12, "[plot] view",
+                "not used by a sweep (it has one view)");
+  expect_error (SMOOTH "[plot]\nview = phase-space\n", 11, "[plot] view",
+                "value 'phase-space' needs model discrete");
+  expect_error (DISCRETE "[plot]\nview = 3d\n", 12, "[plot] view",
+                "is not one of panels, phase-space");
+  expect_error (DISCRETE "[plot]\nkind = x\n", 12, "[plot] kind",
+                "unknown key in [plot] (it belongs in [sweep])");
+}
+END_TEST
+
+/* scene_write: the effective scene, which reads back as the same scene;
+   reals as the file wrote them, defaults written. */
+static void
+write_back (const char *text, const char *must_contain)
+{
+  scene a, b;
+  char *buf = NULL, err[SCENE_ERRLEN];
+  size_t len = 0;
+  FILE *f = open_memstream (&buf, &len);
+  ck_assert_ptr_nonnull (f);
+  parse_ok (text, &a);
+  ck_assert_int_eq (scene_write (&a, f, ""), 0);
+  ck_assert_int_eq (fclose (f), 0);
+  ck_assert_msg (scene_parse (buf, len, "back.ini", &b, err, sizeof err)
+                 == 0, "%s\n--- written:\n%s", err, buf);
+  ck_assert_msg (strstr (buf, must_contain), "'%s' lacks '%s'", buf,
+                 must_contain);
+  ck_assert (a.model == b.model && a.sweep == b.sweep
+             && a.outputs == b.outputs && a.samples == b.samples
+             && a.every == b.every && a.max_rows == b.max_rows
+             && a.stop_fate == b.stop_fate && a.view == b.view
+             && a.collisions == b.collisions && a.method == b.method
+             && strcmp (a.title, b.title) == 0 && a.n_y == b.n_y);
+  ck_assert (memcmp (&a.L0, &b.L0, sizeof a.L0) == 0
+             && memcmp (&a.Delta, &b.Delta, sizeof a.Delta) == 0
+             && memcmp (&a.V, &b.V, sizeof a.V) == 0
+             && memcmp (&a.theta, &b.theta, sizeof a.theta) == 0
+             && memcmp (&a.tolerance, &b.tolerance, sizeof a.tolerance) == 0
+             && memcmp (&a.stop_H, &b.stop_H, sizeof a.stop_H) == 0
+             && memcmp (&a.y, &b.y, sizeof a.y) == 0);
+  free (buf);
+}
+
+START_TEST (writing)
+{
+  write_back (DISCRETE, "[scene]\nmodel = discrete\n[parameters]\nL0 = 1\n"
+              "Delta = 0.333\n[initial]\nV = 1\nOmega = 0.5\ntheta = 0\n"
+              "[run]\ncollisions = 20\nsamples = 0\n"
+              "outputs = E,H,theta,tau,peg\nmethod = closed-form\n"
+              "every = 1\nstop_fate = no\nmax_rows = 10000000\n"
+              "[plot]\nview = panels\n");
+  write_back ("[scene]\nmodel = discrete\ntitle = a; b = c\n[parameters]\n"
+              "L0 = -1/3\nDelta = 0x1p-3\n[initial]\nV = -0.5\nOmega = -0\n"
+              "[run]\ncollisions = 1e3\noutputs = G,E\nmethod = ode\n"
+              "stop_H = 1/7\n", "L0 = -1/3\nDelta = 0x1p-3\n");
+  write_back (SMOOTH, "samples = 200\noutputs = E,H,theta,tau,V,Omega\n");
+  /* a value that begins with ';' (found by the fuzzer): no space before
+     it, which inih would take for the start of a comment */
+  write_back (DISCRETE "[scene]\ntitle =; a = b ; c\n", "title =; a = b\n");
+  write_back (MASSLESS "method = closed-form\n", "model = massless");
+  write_back (SIGMA4, "[run]\nmax_rows = 10000000\n[sweep]\nkind = sigma4\n");
+  write_back (BASINS, "[run]\ncollisions = 1000\nmax_rows = 10000000\n"
+              "[sweep]\nkind = basins\n");
+  /* a method other than closed-form: its tolerance, by default 1e-12 */
+  write_back (DISCRETE "method = quadrature\n", "tolerance = 1e-12\n");
+
+  /* Fields without a file's text: the fewest digits that read back. */
+  scene sc;
+  char *buf = NULL;
+  size_t len = 0;
+  parse_ok (DISCRETE, &sc);
+  memset (sc.text, 0, sizeof sc.text);
+  sc.Delta = 1.0 / 3.0;
+  sc.V = 0.1;
+  FILE *f = open_memstream (&buf, &len);
+  ck_assert_ptr_nonnull (f);
+  ck_assert_int_eq (scene_write (&sc, f, "# "), 0);
+  fclose (f);
+  ck_assert_msg (strstr (buf, "# Delta = 0.3333333333333333\n# [initial]\n"
+                         "# V = 0.1\n"), "%s", buf);
+  free (buf);
+}
+END_TEST
+
 /* Whole messages, and message buffers of any size. */
 START_TEST (messages)
 {
@@ -842,6 +981,8 @@ main (void)
   tcase_add_test (errors, model_keys);
   tcase_add_test (errors, missing_keys);
   tcase_add_test (errors, sweep_keys);
+  tcase_add_test (errors, bounds_keys);
+  tcase_add_test (other, writing);
   tcase_add_test (other, messages);
   tcase_add_test (other, files);
   tcase_add_test (other, odd_inputs);

@@ -17,7 +17,8 @@ Values of a dict: numbers (written with repr, which round-trips), strings
 (as in the file: '1/3', 'closed-form', 'E,H'), or lists (joined with
 commas: outputs, y).  The integer columns (n, k, reversal, fate, collisions,
 reversals, status, region, forward, backward) are int64, the others
-float64.  A column with empty fields (a sweep's point that failed: its
+float64; status is the library's status number (the program's CSV names
+it: SUCCESS, ERANGE, ...).  A column with empty fields (a sweep's point that failed: its
 status column says why) is a numpy.ma.MaskedArray, masked there.
 
 Errors: a scene that does not parse or that the model rejects raises
@@ -32,7 +33,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ._core import (_ffi, _lib, ChaplyginError, SceneError, error_class,
-                    ERRORS)
+                    ERRORS, Status)
 
 __all__ = ['run_scene', 'to_ini', 'INTEGER_COLUMNS']
 
@@ -94,7 +95,12 @@ def _columns(text):
     for j, name in enumerate(names):
         fields = [r[j] if j < len(r) else '' for r in rows]
         missing = [f == '' for f in fields]
-        if name in INTEGER_COLUMNS:
+        if name == 'status':
+            # a name (SUCCESS, ERANGE, ...), or a number the program has no
+            # name for
+            vals = np.array([0 if not f else int(f) if f.lstrip('-').isdigit()
+                             else Status[f] for f in fields], dtype=np.int64)
+        elif name in INTEGER_COLUMNS:
             vals = np.array([int(f) if f else 0 for f in fields],
                             dtype=np.int64)
         else:

@@ -47,8 +47,9 @@ chp_py_scene_run (const char *path, const char *text, size_t len,
     }
   else
     {
+      run_options opt = { compare, NULL, NULL };
       chp_py_errstream = es;
-      rc = scene_run (sc, path, compare, out, NULL);
+      rc = scene_run (sc, path, &opt, out);
       chp_py_errstream = NULL;
     }
   free (sc);

@@ -27,7 +27,9 @@ def program_csv(program, path, compare=False):
                        capture_output=True, text=True,
                        env=dict(os.environ, CHAPLYGIN_NO_PROGRESS='1'))
     assert r.returncode == 0, r.stderr
-    rows = list(csv.reader(io.StringIO(r.stdout)))
+    # the provenance lines ('#') are comments
+    rows = list(csv.reader(line for line in io.StringIO(r.stdout)
+                           if not line.startswith('#')))
     return rows[0], rows[1:]
 
 
@@ -49,7 +51,10 @@ def check_same(cols, header, rows):
                 assert np.ma.is_masked(col[i]), (name, i)
                 continue
             got = col[i]
-            if name in c.scene.INTEGER_COLUMNS:
+            if name == 'status':
+                # the program prints the name, run_scene the number
+                assert col.dtype == np.int64 and got == c.Status[text]
+            elif name in c.scene.INTEGER_COLUMNS:
                 assert col.dtype == np.int64 and got == int(text)
             else:
                 want = float(text)
@@ -158,3 +163,22 @@ def test_to_ini_and_values():
     base['parameters']['Delta'] = 1 / 3
     r2 = c.run_scene(base)
     assert all(np.array_equal(r1[k], r2[k]) for k in r1)
+
+
+def test_bounds():
+    """A scene's bounds hold in run_scene as in the program: a stop
+    condition ends a run of 1e9 collisions at once, a run beyond max_rows
+    is refused."""
+    sc = {'scene': {'model': 'discrete'},
+          'parameters': {'L0': 1, 'Delta': '1/3'},
+          'initial': {'V': 1, 'Omega': 0.5},
+          'run': {'collisions': '1e9', 'stop_H': '1e-9', 'every': 10,
+                  'outputs': ['E', 'H']}}
+    cols = c.run_scene(sc)
+    n, E, H = cols['n'], cols['E'], cols['H']
+    assert n[0] == 0 and all(n[1:-1] % 10 == 0)
+    assert abs(H[-1]) < 1e-9 * np.sqrt(2 * E[-1])
+    assert abs(H[-2]) >= 1e-9 * np.sqrt(2 * E[-2])
+    del sc['run']['stop_H']
+    with pytest.raises(c.SceneError, match='max_rows'):
+        c.run_scene(sc)

@@ -1,0 +1,256 @@
+/* sweep-main.c -- the subcommand "chaplygin sweep SCENE.ini": its command
+   line, then sweep_run (sweep.c) on the output (output.c).  Everything is
+   checked (arguments, scene, sweep, row limit) before the output is
+   opened; -o FILE is then written as a temporary file renamed over FILE
+   on success (even for an empty shard: the header line alone).
+
+   Exit status: 0 success (points where the library failed are rows with a
+   status); 1 output error (also: -o FILE cannot be created); 2 usage error
+   or a scene the sweep cannot use (no [sweep] section, a skate
+   chaplygin_discrete_init rejects, more rows than max_rows, ...). */
+#include <config.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "cli.h"
+#include "number.h"
+#include "output.h"
+#include "scene.h"
+#include "sweep.h"
+
+enum
+{
+  EXIT_OK = 0,
+  EXIT_OUTPUT = 1,
+  EXIT_USAGE = 2
+};
+
+#define SHARDS_MAX 1000000L
+#define THREADS_MAX 4096L
+
+static const char usage_text[] =
+  "Usage: chaplygin sweep SCENE.ini [--shard i/N] [-o FILE] [--threads N]\n"
+  "                       [--max-rows N] [--no-provenance] [--print-scene]\n"
+  "\n"
+  "Compute the [sweep] of the scene file SCENE.ini ('-': standard input;\n"
+  "kind sigma4: Fig. 2(a), stability: Fig. 2(b), basins: Fig. 3) and write\n"
+  "it as CSV, one row per point with its global index k.\n"
+  "\n"
+  "Options:\n"
+  "  --shard i/N     only the i-th of N equal parts of the points,\n"
+  "                  0 <= i < N <= 1000000; the parts concatenated in order\n"
+  "                  (header lines after the first dropped; '#' lines are\n"
+  "                  comments) are the whole\n"
+  "  -o, --output FILE  write to FILE ('-': standard output), renamed into\n"
+  "                  place on success; FILE may not be the scene\n"
+  "  --threads N     OpenMP threads, 1..4096 [OpenMP's default, e.g.\n"
+  "                  OMP_NUM_THREADS]; no effect in a build without OpenMP\n"
+  "  --max-rows N    the row limit, instead of [run] max_rows [1e7]: a\n"
+  "                  shard with more points is refused before anything is\n"
+  "                  written\n"
+  "  --no-provenance no '#' lines (version, command, scene) after the header\n"
+  "  --print-scene   print the effective scene (every key in use, defaults\n"
+  "                  included) and exit\n"
+  "  -h, --help      print this text and exit\n"
+  "The output does not depend on the number of threads.  A progress bar is\n"
+  "drawn on standard error when it is a terminal (and the output is not),\n"
+  "unless CHAPLYGIN_NO_PROGRESS is set.  Numbers (i/N, N): 'man chaplygin',\n"
+  "NUMBERS.\n"
+  "\n"
+  "Columns (numbers with %.17g; an empty field: not computed, see status):\n"
+  "  sigma4     k,y,x,sigma4,status                 x = L0/Delta,\n"
+  "  stability  k,x,y,region,forward,backward       y = (1/Delta)^2\n"
+  "  basins     k,V0,fate,collisions,reversals,E_final,V_final,status\n"
+  "region = forward + 2 backward: 1 where V* > 0 is stable (3.11), 2 where\n"
+  "V* < 0 is (3.12); fate -1 backward, 0 spin, 1 forward, 2 undecided;\n"
+  "status SUCCESS or the name of the library's status at the point\n"
+  "(ERANGE, ...; a V0 of 0: ESTATE); 'man chaplygin' explains each.\n"
+  "\n"
+  "Exit status: 0 success (a point where the library fails is a row with\n"
+  "its status); 1 an output error (or -o FILE cannot be created); 2 a usage\n"
+  "error, an unusable scene or more rows than max_rows.\n";
+
+static void
+usage_hint (void)
+{
+  fputs ("Try 'chaplygin sweep --help' for more information.\n", stderr);
+}
+
+/* "--shard TEXT": TEXT is "i/N", two integers (number.h) with
+   0 <= i < N <= SHARDS_MAX.  Returns EXIT_OK, or EXIT_USAGE after a
+   message. */
+static int
+parse_shard (const char *text, int *shard, int *nshards)
+{
+  const char *slash = strchr (text, '/');
+  char first[64];
+  long i = -1, n = -1;
+  if (slash && (size_t) (slash - text) < sizeof first)
+    {
+      memcpy (first, text, (size_t) (slash - text));
+      first[slash - text] = '\0';
+      if (number_integer (first, 0, SHARDS_MAX, &i) != NUMBER_OK
+          || number_integer (slash + 1, 1, SHARDS_MAX, &n) != NUMBER_OK)
+        i = -1;
+    }
+  if (i < 0)
+    {
+      fprintf (stderr, "chaplygin: sweep: --shard '%s': not of the form "
+               "i/N with integers 0 <= i < N <= %ld\n", text, SHARDS_MAX);
+      return EXIT_USAGE;
+    }
+  if (i >= n)
+    {
+      fprintf (stderr, "chaplygin: sweep: --shard '%s': need 0 <= i < N\n",
+               text);
+      return EXIT_USAGE;
+    }
+  *shard = (int) i;
+  *nshards = (int) n;
+  return EXIT_OK;
+}
+
+/* "--threads TEXT": an integer 1..THREADS_MAX (number.h).  Returns
+   EXIT_OK, or EXIT_USAGE after a message. */
+static int
+parse_threads (const char *text, int *threads)
+{
+  long v;
+  int r = number_integer (text, 1, THREADS_MAX, &v);
+  if (r != NUMBER_OK)
+    {
+      fprintf (stderr, "chaplygin: sweep: --threads '%s' %s (an integer "
+               "in 1..%ld)\n", text, number_problem (r), THREADS_MAX);
+      return EXIT_USAGE;
+    }
+  *threads = (int) v;
+  return EXIT_OK;
+}
+
+/* The settings of "sweep". */
+typedef struct
+{
+  const char *scene_path;
+  const char *output;     /* NULL: stdout */
+  int shard, nshards;
+  int threads;            /* 0: OpenMP's default */
+  const char *max_rows;   /* NULL: the scene's */
+  int no_provenance, print_scene;
+} sweep_args;
+
+/* Parse the arguments of "sweep" into ARGS.  Returns -1 to go on, or an
+   exit status (after --help or a message). */
+static int
+parse_sweep_args (int argc, char **argv, sweep_args *args)
+{
+  int i = 0, only_operands = 0;
+  while (i < argc)
+    {
+      const char *arg = argv[i++];
+      const char *value = NULL;
+      int m;
+
+      if (!only_operands && strcmp (arg, "--") == 0)
+        {
+          only_operands = 1;
+          continue;
+        }
+      if (!only_operands && arg[0] == '-' && arg[1] != '\0')
+        {
+          if (strcmp (arg, "--help") == 0 || strcmp (arg, "-h") == 0)
+            {
+              fputs (usage_text, stdout);
+              return cli_finish_stdout ();
+            }
+          if (strcmp (arg, "--no-provenance") == 0)
+            args->no_provenance = 1;
+          else if (strcmp (arg, "--print-scene") == 0)
+            args->print_scene = 1;
+          else if ((m = cli_option ("sweep", "--shard", NULL, argc, argv, &i,
+                                    &value)) != 0)
+            {
+              if (m < 0 || parse_shard (value, &args->shard,
+                                        &args->nshards) != 0)
+                return EXIT_USAGE;
+            }
+          else if ((m = cli_option ("sweep", "--output", "-o", argc, argv,
+                                    &i, &value)) != 0)
+            {
+              if (m < 0)
+                return EXIT_USAGE;
+              args->output = value;
+            }
+          else if ((m = cli_option ("sweep", "--threads", NULL, argc, argv,
+                                    &i, &value)) != 0)
+            {
+              if (m < 0 || parse_threads (value, &args->threads) != 0)
+                return EXIT_USAGE;
+            }
+          else if ((m = cli_option ("sweep", "--max-rows", NULL, argc, argv,
+                                    &i, &value)) != 0)
+            {
+              if (m < 0)
+                return EXIT_USAGE;
+              args->max_rows = value;
+            }
+          else
+            {
+              fprintf (stderr, "chaplygin: sweep: unknown option '%s'\n",
+                       arg);
+              usage_hint ();
+              return EXIT_USAGE;
+            }
+          continue;
+        }
+      if (cli_scene_operand ("sweep", arg, &args->scene_path) != 0)
+        return EXIT_USAGE;
+    }
+  return cli_scene_given ("sweep", args->scene_path) != 0 ? EXIT_USAGE : -1;
+}
+
+int
+sweep_main (int argc, char **argv)
+{
+  sweep_args args = { NULL, NULL, 0, 1, 0, NULL, 0, 0 };
+  int rc = parse_sweep_args (argc, argv, &args);
+  if (rc >= 0)
+    return rc;
+
+  static scene sc;              /* large: keep it off the stack */
+  const char *name;
+  rc = cli_load_scene (args.scene_path, args.max_rows, &sc, &name);
+  if (rc != EXIT_OK)
+    return rc;
+  if (sc.sweep == SWEEP_NONE)
+    {
+      fprintf (stderr, "chaplygin: %s: no [sweep] section\n", name);
+      return EXIT_USAGE;
+    }
+  if (args.print_scene)
+    return cli_print_scene (&sc);
+  rc = sweep_check (&sc, name, args.shard, args.nshards);
+  if (rc != EXIT_OK)
+    return rc;
+
+#ifdef _OPENMP
+  if (args.threads > 0)
+    omp_set_num_threads (args.threads);
+#endif
+
+  output out;
+  rc = output_open (&out, args.output, args.scene_path);
+  if (rc != EXIT_OK)
+    return rc;
+  rc = sweep_run (&sc, name, args.shard, args.nshards,
+                  args.no_provenance ? NULL : cli_command (), out.stream,
+                  out.name);
+  if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
+    rc = EXIT_OUTPUT;
+  return rc;
+}

@@ -1,0 +1,158 @@
+#!/bin/sh
+# test-plot.sh -- TAP: "chaplygin plot".  A PNG of the size of the style
+# (1200 x 760, read from its IHDR chunk) for a run, a massless run and the
+# three sweeps; SVG; the axis labels per model (in the SVG's text); a
+# scene's title or file name that tries to make gnuplot run a command or
+# read a file draws as text and runs nothing; the row limit and -o rules
+# as for run; a missing gnuplot.  Skipped without gnuplot (pngcairo).
+# Run by `make check', or by hand:
+#   top_builddir=. top_srcdir=. sh tools/test-plot.sh
+# POSIX sh.
+
+set -u
+top_builddir=${top_builddir:-.}
+top_srcdir=${top_srcdir:-.}
+prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
+
+. "$top_srcdir/tools/tap-lib.sh"
+tap_start test-plot 15
+
+if ! gnuplot -e 'set terminal pngcairo' </dev/null >/dev/null 2>&1; then
+  while test "$count" -lt "$plan"; do
+    count=$((count + 1))
+    echo "ok $count # SKIP gnuplot with pngcairo not found"
+  done
+  exit 0
+fi
+
+say () { echo "# $*" >&2; }
+abs_prog=$(cd "$(dirname "$prog")" && pwd)/$(basename "$prog")
+
+# png_size FILE: "WIDTH HEIGHT" from the IHDR chunk (bytes 17-24, big
+# endian), or nothing if FILE does not start with the PNG signature.
+png_size () {
+  test "$(od -An -tx1 -N8 "$1" | tr -d ' \n')" = 89504e470d0a1a0a || return 0
+  od -An -tu1 -j16 -N8 "$1" | awk '{ printf "%d %d\n",
+    (($1 * 256 + $2) * 256 + $3) * 256 + $4,
+    (($5 * 256 + $6) * 256 + $7) * 256 + $8 }'
+}
+
+# png_ok FILE MIN-BYTES: a 1200 x 760 PNG of at least MIN-BYTES.
+png_ok () {
+  test -f "$1" && test "$(png_size "$1")" = "1200 760" \
+    && test "$(wc -c <"$1")" -ge "$2"
+}
+
+cat >"$tmp/fig6.ini" <<'EOF'
+[scene]
+model = discrete
+compare = smooth
+title = Fig. 6
+[parameters]
+L0 = 1
+Delta = 1/3
+L = 1
+[initial]
+V = 1
+Omega = 0.5
+[run]
+collisions = 20
+duration = 5.64
+EOF
+
+# ---- images -------------------------------------------------------------------
+run plot "$tmp/fig6.ini" -o "$tmp/fig6.png"
+ok=1
+png_ok "$tmp/fig6.png" 40000 && test "$rc" -eq 0 && test ! -s "$tmp/raw" && ok=0
+say "fig6.png: $(png_size "$tmp/fig6.png"), $(wc -c <"$tmp/fig6.png") bytes"
+result "$ok" "a discrete run with its companion: a 1200 x 760 PNG of > 40 kB"
+
+for f in fig2a fig2b fig3 fig4 fig10; do
+  run plot "$top_srcdir/scenes/$f.ini" -o "$tmp/$f.png"
+  ok=1
+  test "$rc" -eq 0 && png_ok "$tmp/$f.png" 15000 && ok=0
+  test "$ok" -eq 0 || sed 's/^/# /' "$tmp/err"
+  result "$ok" "scenes/$f.ini: a 1200 x 760 PNG"
+done
+
+run plot "$tmp/fig6.ini" -o "$tmp/fig6.svg"
+ok=1
+test "$rc" -eq 0 && grep -q '<svg' "$tmp/fig6.svg" \
+  && grep -q 'width="1200' "$tmp/fig6.svg" && ok=0
+result "$ok" "-o FILE.svg: SVG"
+
+# Axis labels per model: lengths in units of rho for the discrete skate,
+# of the slot length for the massless one.
+run plot "$top_srcdir/scenes/fig10.ini" -o - --format svg
+ok=1
+grep -q '>x (slot lengths)<' "$tmp/raw" && ! grep -q 'ρ' "$tmp/raw" \
+  && grep -q '>x/ρ<' "$tmp/fig6.svg" && ! grep -q 'slot lengths' "$tmp/fig6.svg" \
+  && ok=0
+result "$ok" "axis labels: x (slot lengths) for the massless skate, x/rho for the discrete one"
+
+(cd "$tmp" && "$abs_prog" plot fig6.ini -o - >stdout.png 2>/dev/null)
+ok=1
+png_ok "$tmp/stdout.png" 40000 && test ! -e "$tmp/-" && ok=0
+result "$ok" "-o -: the PNG on standard output"
+
+# ---- a scene is data, never code ----------------------------------------------
+mkdir "$tmp/hostile"
+cat >"$tmp/hostile/h.ini" <<'EOF'
+[scene]
+model = discrete
+title = `touch PWNED1` system("touch PWNED2") @cmd '; system("touch PWNED3"); ' " . system("touch PWNED4") . " \n $d {/Symbol a}
+[parameters]
+L0 = 1
+Delta = 1/3
+[initial]
+V = 1
+Omega = 0.5
+[run]
+collisions = 3
+EOF
+# the file name as title (a scene without one)
+sed '/^title/d' "$tmp/hostile/h.ini" >"$tmp/hostile/n\`touch PWNED5\`'\"@x.ini"
+(cd "$tmp/hostile" && "$abs_prog" plot h.ini -o h.png 2>err1 \
+   && "$abs_prog" plot "n\`touch PWNED5\`'\"@x.ini" -o n.png 2>err2) && rc=0 || rc=$?
+ok=1
+test "$rc" -eq 0 && png_ok "$tmp/hostile/h.png" 20000 && png_ok "$tmp/hostile/n.png" 20000 \
+  && test -z "$(ls "$tmp/hostile" | grep '^PWNED')" && ok=0
+test "$ok" -eq 0 || { ls "$tmp/hostile" | sed 's/^/# /'; cat "$tmp/hostile/err1" "$tmp/hostile/err2" | sed 's/^/# /'; }
+result "$ok" "hostile title and file name (backquotes, system(), @macro, quotes): drawn, nothing run"
+
+# The title is drawn as it is: in the SVG's text, with its quotes.
+(cd "$tmp/hostile" && "$abs_prog" plot h.ini -o h.svg 2>/dev/null)
+ok=1
+grep -qF 'system("touch PWNED2") @cmd' "$tmp/hostile/h.svg" \
+  && grep -q '`touch PWNED1`' "$tmp/hostile/h.svg" \
+  && test -z "$(ls "$tmp/hostile" | grep '^PWNED')" && ok=0
+result "$ok" "... the title appears verbatim in the figure"
+
+# ---- bounds and files -----------------------------------------------------------
+sed 's/^collisions = 20$/collisions = 1e9/' "$tmp/fig6.ini" >"$tmp/big.ini"
+run plot "$tmp/big.ini" -o "$tmp/big.png"
+ok=1
+test "$rc" -eq 2 && test ! -e "$tmp/big.png" && grep -q 'max_rows' "$tmp/err" && ok=0
+result "$ok" "a runaway scene: refused before anything is drawn, no file"
+
+cp "$tmp/fig6.ini" "$tmp/keep.ini"
+run plot "$tmp/keep.ini" -o "$tmp/keep.ini" --format png
+ok=1
+test "$rc" -eq 2 && cmp -s "$tmp/keep.ini" "$tmp/fig6.ini" && ok=0
+result "$ok" "-o the scene: refused, the scene intact"
+
+rm -f "$tmp/g.png"
+rc=0
+GNUPLOT=/nonexistent/gnuplot "$prog" plot "$tmp/fig6.ini" -o "$tmp/g.png" \
+  2>"$tmp/err" || rc=$?
+ok=1
+test "$rc" -eq 1 && test ! -e "$tmp/g.png" && grep -q 'cannot run /nonexistent/gnuplot' "$tmp/err" \
+  && test -z "$(ls -A "$tmp" | grep '^\.g\.png\.')" && ok=0
+result "$ok" "GNUPLOT not a program: exit 1, no file, no temporary left"
+
+run plot "$tmp/fig6.ini" -o "$tmp/x.pdf"
+ok=1
+test "$rc" -eq 2 && test ! -e "$tmp/x.pdf" && ok=0
+result "$ok" "an unknown format (.pdf): exit 2"
+
+test "$count" -eq "$plan" || echo "Bail out! ran $count tests, planned $plan"
