@@ -196,14 +196,19 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   return CHAPLYGIN_SUCCESS;
 }
 
-/* The (E, H) update of the common case, without a division or a square
-   root: E' = E + C1 H^2 by one fma from C1 H, H' = C2 H, with C1, C2 of
-   the end the peg leaves.  It applies where the classification is certain
-   from H^2 and 2E (1 + l^2) rounded, and where the collision takes at most
-   half the energy, |C1| H^2 <= E/2: then E' >= E/2 and the fma loses
-   nothing to cancellation (C1's few ulps weigh at most as much as E'
-   itself: about 3 ulps in all, as the sum of nonnegative terms of
-   step_core; the oracle measures it).  The classification:
+/* The (E, H) update where the classification is certain from H^2 and
+   2E (1 + l^2) rounded, without the frame of step_core: H' = C2 H with C2
+   of the end the peg leaves, and E' by one of two routes.  Where the
+   collision takes at most half the energy, |C1| H^2 <= E/2, E' = E + C1 H^2
+   by one fma from C1 H, without a division or a square root: then
+   E' >= E/2 and the fma loses nothing to cancellation (C1's few ulps weigh
+   at most as much as E' itself: about 3 ulps in all, as the sum of
+   nonnegative terms of step_core; the oracle measures it).  Where it takes
+   more (LARGE set: not for chaplygin_discrete_poincare, whose g at the
+   start comes from V+), E' is step_by_integrals' sum of nonnegative terms
+   with the same g (bit for bit the general path's E'), unless g at the
+   end the peg leaves is so small that the general path would raise E' by
+   ulps (valid_energy).  The classification:
      H^2 <= E: 2E > H^2 (H*H rounded is at most E (1 + eps)), so no
        turning point exists and V+^2 >= E > 0: the motion reaches the far
        end (B.3);
@@ -223,18 +228,36 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    cover everything excluded here), 1 with E', H' and the reversal flag
    written. */
 #define EH_MARGIN 0x1p-40
-static CHP_ALWAYS_INLINE int
-eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
-         int start, double *E1, double *H1, int *reversal)
+
+/* eh_fast's E' for a collision at end K that takes more than half the
+   energy: step_by_integrals' sum of nonnegative terms, with g at that end
+   from E and H as there (the same bits), where it needs no raising
+   (valid_energy: g > 2^-40 (1 + l^2)); 0 (the general path) otherwise.
+   Out of line: it keeps calls out of the fast path's frame. */
+static int __attribute__ ((noinline))
+eh_large (const chaplygin_discrete *sys, int k, double E, double H,
+          double H1, double *E1)
 {
-  const double E = in->E, H = in->H;
+  const double lm = sys->l_end[k];
+  const double gm = chp_g_exact (E, H, lm, sys->l_err[k]);
+  if (!(gm > 0x1p-40 * chp_one_plus_sq (lm)) || !isfinite (gm))
+    return 0;
+  *E1 = chp_post_collision_energy (E, gm, lm, H1, sys->l_end[1 - k]);
+  return 1;
+}
+
+static CHP_ALWAYS_INLINE int
+eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
+         int large, double *E1, double *H1, int *reversal)
+{
   if (!(E > 0.0 && E <= 0.25 * DBL_MAX && fabs (H) <= 0x1p500))
     return 0;
+  const int start = dir > 0 ? 0 : 1;
   const double H2 = H * H;
   /* the sign of the least V^2 on the segment, where it is certain: the
-     input of the segment rule (motion.h) */
-  double least = 1.0;
-  int crosses = 0;
+     input of the segment rule (motion.h), whose outcome for a certain
+     sign is: pass (> 0), reverse (< 0) */
+  int rev = 0;
   if (!(H2 <= E))
     {
       const double l0 = sys->l_end[start], l1 = sys->l_end[1 - start];
@@ -242,26 +265,26 @@ eh_fast (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
       if (!(E >= 0x1p-900
             && H2 < twoE * fma (l0, l0, 1.0) * (1.0 - EH_MARGIN)))
         return 0;
-      crosses = chp_crosses (l0, l1);
-      if (in->dir * l0 < 0.0)
+      if (dir * l0 < 0.0)
         {
           /* towards l = 0: V^2 least at l = 0 (2E - H^2) or at l1 */
-          const double b = crosses ? twoE : twoE * fma (l1, l1, 1.0);
+          const double b = chp_crosses (l0, l1) ? twoE
+            : twoE * fma (l1, l1, 1.0);
           if (H2 > b * (1.0 + EH_MARGIN))
-            least = -1.0;
+            rev = 1;
           else if (!(H2 < b * (1.0 - EH_MARGIN)))
             return 0;
         }
-      else if (!(in->dir * l0 > 0.0))
+      else if (!(dir * l0 > 0.0))
         return 0;               /* from l = 0 exactly: the spinning test */
     }
-  const int rev = chp_segment_rule (crosses, least) == CHP_SEGMENT_REVERSE;
   const int k = rev ? start : 1 - start;
-  const double c1h = sys->C1[k] * H;
-  if (!(fabs (c1h * H) <= 0.5 * E))
+  const double c1h = sys->C1[k] * H, h1 = sys->C2[k] * H;
+  if (fabs (c1h * H) <= 0.5 * E)
+    *E1 = fma (c1h, H, E);
+  else if (!large || !eh_large (sys, k, E, H, h1, E1))
     return 0;
-  *E1 = fma (c1h, H, E);
-  *H1 = sys->C2[k] * H;
+  *H1 = h1;
   *reversal = rev;
   return 1;
 }
@@ -691,7 +714,8 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
       : step_far (sys, in, w.request, opt, out, ev);
   int fast_reversal = 0;
   w.fast = w.o.method != CHAPLYGIN_ODE
-    && eh_fast (sys, in, in->dir > 0 ? 0 : 1, &w.E1, &w.H1, &fast_reversal);
+    && eh_fast (sys, in->dir, in->E, in->H, g0_phase == NULL, &w.E1, &w.H1,
+                &fast_reversal);
   if (w.fast && w.request == 0 && !ev && in->V == 0.0)
     {
       *out = *in;
@@ -708,6 +732,17 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   else
     CHP_TRY (step_by_integrals (&w));
   return step_finish (&w, out, ev);
+}
+
+/* step_core from an (E, H) state: chaplygin_discrete_step's slow path,
+   kept out of line so that its fast path needs no frame. */
+static int __attribute__ ((noinline))
+step_general (const chaplygin_discrete *sys,
+              const chaplygin_discrete_state *in, unsigned request,
+              const chaplygin_options *opt, chaplygin_discrete_state *out,
+              chaplygin_discrete_event *ev)
+{
+  return step_core (sys, in, NULL, request, opt, out, ev);
 }
 
 /* chaplygin_discrete_step: (B.3) and (B.4), the return map on post-collision
@@ -762,31 +797,29 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
 {
   /* E and H only, options that do not integrate (E and H do not depend
      on the method otherwise), the common case: the same validation and
-     eh_fast as step_core, without its frame (a third of the cost of such
-     a step); anything else goes through step_core */
-  chaplygin_options o;
+     eh_fast as step_core, without its frame and without a call (a third
+     of the cost of such a step); anything else goes through step_core */
   if (request == 0 && !ev && sys && in && out && in->V == 0.0
-      && (!opt || (chp_options_resolve (opt, &o) == CHAPLYGIN_SUCCESS
-                   && o.method != CHAPLYGIN_ODE))
-      && check_state (sys, in) == CHAPLYGIN_SUCCESS)
+      && (!opt || (opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))
+      && check_state (sys, in) == CHAPLYGIN_SUCCESS
+      && fabs (sys->l_end[0]) <= CHP_L_MAX
+      && fabs (sys->l_end[1]) <= CHP_L_MAX)
     {
-      const int start = in->dir > 0 ? 0 : 1;
       double E1, H1;
       int rev;
-      if (fabs (sys->l_end[0]) <= CHP_L_MAX
-          && fabs (sys->l_end[1]) <= CHP_L_MAX
-          && eh_fast (sys, in, start, &E1, &H1, &rev))
+      if (eh_fast (sys, in->dir, in->E, in->H, 1, &E1, &H1, &rev))
         {
-          chaplygin_discrete_state r = *in;
-          r.dir = rev ? -in->dir : in->dir;
-          r.E = E1;
-          r.H = H1;
-          r.V = 0.0;
-          *out = r;
+          const int dir = rev ? -in->dir : in->dir;
+          if (out != in)
+            *out = *in;
+          out->dir = dir;
+          out->E = E1;
+          out->H = H1;
+          out->V = 0.0;
           return CHAPLYGIN_SUCCESS;
         }
     }
-  return step_core (sys, in, NULL, request, opt, out, ev);
+  return step_general (sys, in, request, opt, out, ev);
 }
 
 /* chaplygin_discrete_step_eh_n: (B.3)/(B.4), n steps of the return map
@@ -805,29 +838,41 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
 {
   if (!sys || !st)
     return CHAPLYGIN_EINVAL;
-  chaplygin_discrete_state s = *st;
   unsigned long i = 0;
-  int status = check_state (sys, &s);
+  int status = check_state (sys, st);
   const int in_cap = fabs (sys->l_end[0]) <= CHP_L_MAX
     && fabs (sys->l_end[1]) <= CHP_L_MAX;
+  /* the state in registers: dir, E, H (V = 0 on the fast path); *st
+     itself (written only by a successful step_core) when it leaves it */
+  int dir = st->dir;
+  double E = st->E, H = st->H, V = st->V;
   while (status == CHAPLYGIN_SUCCESS && i < n)
     {
       double E1, H1;
       int rev;
       /* eh_fast's outputs are finite: the state stays valid for it */
-      if (in_cap && s.V == 0.0
-          && eh_fast (sys, &s, s.dir > 0 ? 0 : 1, &E1, &H1, &rev))
+      if (in_cap && V == 0.0 && eh_fast (sys, dir, E, H, 1, &E1, &H1, &rev))
         {
-          s.dir = rev ? -s.dir : s.dir;
-          s.E = E1;
-          s.H = H1;
-          s.V = 0.0;
+          dir = rev ? -dir : dir;
+          E = E1;
+          H = H1;
         }
       else
-        status = step_core (sys, &s, NULL, 0, NULL, &s, NULL);
+        {
+          st->dir = dir;
+          st->E = E;
+          st->H = H;
+          status = step_core (sys, st, NULL, 0, NULL, st, NULL);
+          dir = st->dir;
+          E = st->E;
+          H = st->H;
+          V = st->V;
+        }
       i += status == CHAPLYGIN_SUCCESS;
     }
-  *st = s;
+  st->dir = dir;
+  st->E = E;
+  st->H = H;
   if (done)
     *done = i;
   return status;

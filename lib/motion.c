@@ -136,15 +136,15 @@ chp_motion_g (const chp_motion *m, double l)
   return fma (l, l, m->one_minus_h2);
 }
 
-/* chp_motion_g_exact: g(l) = [2E (1 + l^2) - H^2]/(2E) for l = l + el (el the
+/* chp_g_exact: g(l) = [2E (1 + l^2) - H^2]/(2E) for l = l + el (el the
    rounding error of l, 0 if l is exact), the numerator with error-free
    products and sums, so that g is within ~2 ulps of its value for the
    given E, H, l however much 2E (1 + l^2) and H^2 cancel (a turning point
-   near l).  Falls back to chp_motion_g where an intermediate overflows. */
+   near l).  Not finite where an intermediate overflows. */
 double
-chp_motion_g_exact (const chp_motion *m, double l, double el)
+chp_g_exact (double E, double H, double l, double el)
 {
-  double twoE = 2.0 * m->E, H = m->H;
+  double twoE = 2.0 * E;
   double p1, e1, p2, e2, p3, e3, s1, f1, s2, f2;
   chp_two_prod (l, l, &p1, &e1);
   chp_two_prod (twoE, p1, &p2, &e2);
@@ -152,10 +152,17 @@ chp_motion_g_exact (const chp_motion *m, double l, double el)
   chp_two_sum (twoE, -p3, &s1, &f1);
   chp_two_sum (s1, p2, &s2, &f2);
   double N = s2 + (((f1 + f2) + (e2 - e3)) + twoE * (e1 + 2.0 * l * el));
-  double g = N / twoE;
-  if (!isfinite (g) || !isfinite (p2) || !isfinite (p3))
-    return chp_motion_g (m, l);
-  return g;
+  return N / twoE;
+}
+
+/* chp_motion_g_exact: chp_g_exact for the motion's E and H; chp_motion_g
+   where an intermediate overflows (an overflowed 2E l^2 or H^2 makes the
+   numerator infinite or NaN). */
+double
+chp_motion_g_exact (const chp_motion *m, double l, double el)
+{
+  const double g = chp_g_exact (m->E, m->H, l, el);
+  return isfinite (g) ? g : chp_motion_g (m, l);
 }
 
 

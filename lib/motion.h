@@ -65,6 +65,11 @@ double chp_motion_g (const chp_motion *m, double l);
    ~2 ulps of g for the given E, H, l (error-free transformations). */
 double chp_motion_g_exact (const chp_motion *m, double l, double el);
 
+/* chp_motion_g_exact's arithmetic from E > 0 and H alone (no chp_motion:
+   the (E, H) fast path of the map), without its fallback: not finite
+   where an intermediate overflows. */
+double chp_g_exact (double E, double H, double l, double el);
+
 /* (B.1) as printed, no reachability checks: V(D)^2 (may be slightly
    negative near a turning point) and Omega(D). */
 int chp_flow_eval (double L0, double D0, double V0, double Omega0, double D,

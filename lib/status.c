@@ -41,27 +41,8 @@ chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out)
 {
   static const chaplygin_options defaults = CHAPLYGIN_OPTIONS_DEFAULT;
   const chaplygin_options *o = opt ? opt : &defaults;
-
-  switch (o->method)
-    {
-    case CHAPLYGIN_CLOSED_FORM:
-      break;
-    case CHAPLYGIN_QUADRATURE:
-    case CHAPLYGIN_ODE:
-      if (!(o->tol >= 1e-15 && o->tol < 1.0))
-        return CHAPLYGIN_EINVAL;
-      break;
-    default:
-      return CHAPLYGIN_EINVAL;
-    }
-  switch (o->precision)
-    {
-    case CHAPLYGIN_PREC_DOUBLE:
-    case CHAPLYGIN_PREC_SINGLE:
-      break;
-    default:
-      return CHAPLYGIN_EINVAL;
-    }
+  if (!chp_options_valid (o))
+    return CHAPLYGIN_EINVAL;
   *out = *o;
   return CHAPLYGIN_SUCCESS;
 }
