@@ -737,7 +737,9 @@ chaplygin_massless_omega (double L0, double D, double H, double *Omega)
      leg 1 (a reversing segment after the turning point):
        V = -dir s w/|l|,  dtau = (w0 + w)/s,
        dtheta = sgn(H) (atan2(w0, p) + atan2(w, p));
-   and Omega = H/l^2 (chaplygin_massless_omega).  H = 0: G moves along the
+   and Omega = H/l^2 (chaplygin_massless_omega), at D_c 2E/H (V = 0
+   there: E = H Omega/2 exactly; H/l^2 would carry the rounding of D_c,
+   6e-11 relative where p = 1e-6).  H = 0: G moves along the
    slot, V = dir s, Omega = 0, dtheta = 0, dtau = |D - D0|/s.  At the far
    end (and back at D0 on leg 1) the values are those of
    chaplygin_massless_step bit for bit (the same expressions).
@@ -778,6 +780,7 @@ chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
     return CHAPLYGIN_ESTATE;
   const double D0 = sg.start ? 1.0 : 0.0, H = st->H, s = sg.s;
   double v, dth, dist;
+  int turning = 0;                      /* D is D_c: V = 0 */
   if (H == 0.0)
     {
       v = st->dir * s;
@@ -799,6 +802,7 @@ chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
         w = 0.0;
       else if (sign < 0)
         return CHAPLYGIN_ESTATE;        /* beyond the turning point */
+      turning = w == 0.0;
       const double w0 = sg.w0, p = sg.p;
       /* V = 0 (not -0) at the turning point */
       v = w == 0.0 ? 0.0 : (leg ? -st->dir : st->dir) * (s * (w / fabs (lh)));
@@ -836,8 +840,13 @@ chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
         }
       dth = copysign (dth, H);
     }
+  /* at D_c, V = 0: E = H Omega/2 exactly, so Omega = 2E/H to an ulp,
+     not from the rounded position */
   double om;
-  CHP_TRY (chaplygin_massless_omega (L0, D, H, &om));
+  if (turning)
+    om = 2.0 * (st->E / H);
+  else
+    CHP_TRY (chaplygin_massless_omega (L0, D, H, &om));
   const double dt = dist / s;
   if (!chp_finite4 (v, om, dth, dt))
     return CHAPLYGIN_ERANGE;

@@ -252,7 +252,14 @@ segment_sample (const chaplygin_discrete *sys,
       v = at_turn ? 0.0 : sp->ev.Vminus;
       th = half * sp->ev.dtheta;
       ta = half * sp->ev.dtau;
-      CHP_TRY (chaplygin_discrete_omega (L0, at_turn ? Dc : D, H, &om));
+      /* at D_c, V = 0: E = H Omega/2 exactly, so Omega = 2E/H to an ulp
+         (H/(1 + l^2) would carry the rounding of D_c and of L0 + D_c) */
+      if (at_turn)
+        om = 2.0 * (st->E / H);
+      else
+        CHP_TRY (chaplygin_discrete_omega (L0, D, H, &om));
+      if (!isfinite (om))
+        return CHAPLYGIN_ERANGE;
     }
   else if (D == D0)
     {
@@ -296,7 +303,9 @@ segment_sample (const chaplygin_discrete *sys,
      leg 1 (a reversing segment, from D_c back to D0): by the time
        reversal about D_c, V = -dir sqrt(V(D)^2) and the increments are
        the whole segment's (chaplygin_discrete_step's) less leg 0's at D;
-   Omega = H/(1 + (L0 + D)^2) (chaplygin_discrete_omega) on both.
+   Omega = H/(1 + (L0 + D)^2) (chaplygin_discrete_omega) on both, and
+   2E/H at D_c (V = 0 there: exact for E and H, where the first would
+   carry the rounding of D_c).
    V(D)^2 = 2E g(l)/(1 + l^2), g = l^2 + 1 - H^2/(2E) by error-free
    arithmetic.  At the far end, at D_c (V = 0, half the segment's heading
    and time: the motion is symmetric about it) and back at D0 the values

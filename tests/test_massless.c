@@ -1582,6 +1582,11 @@ START_TEST (test_flow_edges)
               ck_assert_ok (chaplygin_massless_flow (L0, &st, ev.Dc, leg, &V, &Om, &dth, &dta));
               ck_assert (V == 0.0 && !signbit (V));
               ck_assert (dth == 0.5 * ev.dtheta && dta == 0.5 * ev.dtau);
+              /* Omega at D_c: H/p^2, p^2 = H^2/(2E) the turning point's
+                 l^2 (B.5 at rho = 0), in binary128: the quotient's
+                 half ulp */
+              const q128 p2 = (q128) st.H * st.H / (2 * (q128) st.E);
+              ck_assert_rel (Om, (double) ((q128) st.H / p2), 0.5 * DBL_EPSILON);
               /* within 8 eps of D_c: D_c itself */
               const double Dn = ev.Dc + (D0 == 0 ? 4 : -4) * DBL_EPSILON;
               ck_assert_ok (chaplygin_massless_flow (L0, &st, Dn, leg, &V, NULL, &dth, NULL));
@@ -1589,6 +1594,19 @@ START_TEST (test_flow_edges)
             }
           ck_assert_ok (chaplygin_massless_flow (L0, &st, D0, 1, &V, &Om, &dth, &dta));
           ck_assert (V == ev.Vminus && dth == ev.dtheta && dta == ev.dtau);
+          if (k == 0 && i == 0 && dir > 0)
+            {
+              /* a turning point near the peg, |l| = p ~ 1e-6: H/l^2 at the
+                 rounded D_c would carry D_c's rounding, 2 (eps/2)/p ~ 1e-10
+                 relative (measured before the library took 2E/H: 6.0e-11) */
+              chaplygin_discrete_state sp = phase_state (-0.7, 1.0, 1e-6 / 0.49);
+              ck_assert_ok (chaplygin_massless_step (-0.7, &sp, CHAPLYGIN_WANT_ALL, &nx, &ev));
+              ck_assert (ev.reversal);
+              ck_assert_ok (chaplygin_massless_flow (-0.7, &sp, ev.Dc, 0, &V, &Om, NULL, NULL));
+              const q128 p2 = (q128) sp.H * sp.H / (2 * (q128) sp.E);
+              ck_assert (V == 0.0);
+              ck_assert_rel (Om, (double) ((q128) sp.H / p2), 0.5 * DBL_EPSILON);
+            }
           /* D0 on leg 0: the start */
           ck_assert_ok (chaplygin_massless_flow (L0, &st, D0, 0, &V, &Om, &dth, &dta));
           ck_assert (dth == 0.0 && dta == 0.0);

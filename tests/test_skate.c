@@ -196,6 +196,51 @@ START_TEST (test_segment_flow_reference)
 }
 END_TEST
 
+/* Omega at the turning point of a motion with invariants E, H (doubles,
+   H^2 > 2E): H/(1 + c^2) with c^2 = H^2/(2E) - 1 from (B.5), in
+   binary128 (the library takes 2E/H, the conservation of E at V = 0). */
+static double
+omega_at_turn (double E, double H)
+{
+  const q128 c2 = (q128) H * H / (2 * (q128) E) - 1;
+  return (double) ((q128) H / (1 + c2));
+}
+
+/* Omega at a turning point far from the slot's front (|L0| >> c): there
+   H/(1 + l^2) at the rounded D_c carries the rounding of D_c, ~|L0| eps
+   (measured before the library took 2E/H: 7.4 eps at L0 = -100.3, 1.2e5
+   eps at -1e6, 1.2e11 eps at -1.5 2^40); now within the quotient's half
+   ulp, on both legs. */
+START_TEST (test_segment_flow_turn_omega)
+{
+  const double L0s[] = { -100.3, -1e6 + 0.1, 0x1.8p40 };
+  for (int i = 0; i < 3; i++)
+    {
+      /* the slot reaches from L0 to past l = 0; the turning point at
+         |l| = c ~ 0.3 (h^2 = 1.09 rounded: c not a multiple of L0's
+         ulp, so that D_c = -c - L0 rounds) */
+      const double L0 = L0s[i] < 0 ? L0s[i] : -L0s[i], Delta = -L0 + 0.7;
+      const double E = 1.0, H = sqrt (2.18);
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+      const chaplygin_discrete_state st = { 1, E, H, 0.0, 0.0, { 0.0, 0.0 }, 0.0 };
+      chaplygin_discrete_state next;
+      chaplygin_discrete_event ev;
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_ALL, NULL, &next,
+                                             &ev));
+      ck_assert (ev.reversal);
+      for (int leg = 0; leg < 2; leg++)
+        {
+          double V, Om;
+          ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ev.Dc, leg, NULL, &V,
+                                                         &Om, NULL, NULL));
+          ck_assert (V == 0);
+          ck_assert_rel (Om, omega_at_turn (E, H), 0.5 * DBL_EPSILON);
+        }
+    }
+}
+END_TEST
+
 /* At the ends of the legs the values are the step's, bit for bit: the
    far end (no reversal), the turning point (half the segment's heading
    and time: the motion is symmetric about it) and back at the start;
@@ -235,12 +280,15 @@ START_TEST (test_segment_flow_ends)
                         CHAPLYGIN_ESTATE);
       return;
     }
-  ck_assert_ok (chaplygin_discrete_omega (sys.L0, ev.Dc, st.H, &Omc));
+  /* Omega at D_c against (B.5) and (B.1) in binary128: H/(1 + c^2),
+     c^2 = H^2/(2E) - 1, to the division's half ulp */
+  Omc = omega_at_turn (st.E, st.H);
   for (int leg = 0; leg < 2; leg++)
     {
       ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, ev.Dc, leg, NULL, &V, &Om,
                                                      &th, &ta));
-      ck_assert (V == 0 && Om == Omc && th == 0.5 * ev.dtheta && ta == 0.5 * ev.dtau);
+      ck_assert (V == 0 && th == 0.5 * ev.dtheta && ta == 0.5 * ev.dtau);
+      ck_assert_rel (Om, Omc, 0.5 * DBL_EPSILON);
     }
   ck_assert_ok (chaplygin_discrete_segment_flow (&sys, &st, D0, 1, NULL, &V, &Om, &th, &ta));
   ck_assert (V == ev.Vminus && th == ev.dtheta && ta == ev.dtau);
@@ -314,6 +362,7 @@ main (void)
   tcase_add_loop_test (tc, test_segment_flow_reference, 0, n);
   tcase_add_loop_test (tc, test_segment_flow_ends, 0, 2 * n);
   tcase_add_test (tc, test_segment_flow_errors);
+  tcase_add_test (tc, test_segment_flow_turn_omega);
   suite_add_tcase (s, tc);
   return tu_run (s);
 }
