@@ -770,18 +770,26 @@ START_TEST (test_step_errors)
   o.E = 9;
   s.dir = 1, s.E = 1.0, s.H = 1.0;
   /* every field of the state is validated */
-  for (int f = 0; f < 6; f++)
+  for (int f = 0; f < 7; f++)
     {
       chaplygin_discrete_state v = { 1, 1.0, 0.5, 0.1, 0.2, { 0.3, 0.4 }, 0.0 };
-      double *field[6] = { &v.E, &v.H, &v.theta, &v.tau, &v.peg[0], &v.peg[1] };
+      double *field[7] = { &v.E, &v.H, &v.theta, &v.tau, &v.peg[0], &v.peg[1], &v.V };
       *field[f] = NAN;
       ck_assert_status (chaplygin_discrete_step (&sys, &v, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+      ck_assert_status (chaplygin_discrete_step (&sys, &v, 0, &QUAD, &o, NULL), CHAPLYGIN_EDOM);
       *field[f] = INFINITY;
       ck_assert_status (chaplygin_discrete_step (&sys, &v, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+      ck_assert_status (chaplygin_discrete_step_eh_n (&sys, &v, 3, NULL), CHAPLYGIN_EDOM);
     }
   junk = sys;
   junk.L0 = NAN;
   ck_assert_status (chaplygin_discrete_step (&junk, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+  junk = sys;
+  junk.Delta = INFINITY;
+  ck_assert_status (chaplygin_discrete_step (&junk, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+  junk.Delta = 0.0;
+  ck_assert_status (chaplygin_discrete_step (&junk, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
+  ck_assert (o.E == 9);                 /* nothing written on a failure */
   /* phase conversions */
   double q[4] = { 0.0, 1.0, 0.0, 1.0 };
   ck_assert_status (chaplygin_discrete_state_from_phase (&sys, q, NAN, NULL, &s), CHAPLYGIN_EDOM);
