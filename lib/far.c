@@ -168,6 +168,23 @@ chp_far_phase (chp_far *f, double l0, double V, double Omega, double *Vs,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* Whether the speed of a phase state at l0, sp = max(|V|, sqrt(1 + l0^2)
+   |Omega|), is so large or small that E or H (or their products in the
+   routines that use them) would overflow or underflow: sp max(1, |l0|) >
+   2^450 or sp < 2^-400 (the bounds of chaplygin_discrete_heading's
+   time-scaling).  sp^2/2 <= E <= sp^2 and |H| <= sqrt(2) sp max(1, |l0|),
+   so within them E lies in [2^-801, 2^900] and |H| below 2^451.  Once
+   scaled by chp_far_speed, sp is in [1, 2): never a second time.  The
+   one test of chaplygin_velocity_scaling (units.c),
+   chaplygin_discrete_poincare (map.c) and a leg's scaling (flow.c). */
+int
+chp_far_speed_needed (double l0, double V, double Omega)
+{
+  const double sp = fmax (fabs (V), hypot (1.0, l0) * fabs (Omega));
+  return sp > 0.0 && isfinite (sp) && ilogb (sp) != 0
+    && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400);
+}
+
 int
 chp_far_speed (chp_far *f, double l0, double V, double Omega, double *Vs,
                double *Omegas)
