@@ -536,10 +536,17 @@ run_skate (int argc, char **argv)
       return EXIT_USAGE;
     }
 
-  const double q[4] = { args.V > 0.0 ? 0.0 : args.Delta, args.V, args.theta,
-                        args.Omega };
+  /* the state as the run forms it: in the units of its velocity scaling
+     where it is tiny or huge (run.c) */
+  double q[4] = { args.V > 0.0 ? 0.0 : args.Delta, args.V, args.theta,
+                  args.Omega };
   chaplygin_discrete_state st;
-  status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st);
+  int m;
+  status = chaplygin_velocity_scaling (args.L0 + q[CHAPLYGIN_D], args.V,
+                                       args.Omega, &m, &q[CHAPLYGIN_V],
+                                       &q[CHAPLYGIN_OMEGA]);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st);
   if (status != CHAPLYGIN_SUCCESS)
     {
       fprintf (stderr, "chaplygin: initial state --L0 %.17g --Delta %.17g "
