@@ -204,7 +204,7 @@ header_end (sink *s)
     return -1;
   if (s->opt->command)
     provenance_header (s->out, s->opt->command, s->path, s->sc,
-                       s->opt->compare);
+                       s->opt->compare, s->m);
   return 0;
 }
 

@@ -33,7 +33,7 @@ prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 cmp=$top_builddir/tools/scaled-cmp
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-scaled 25
+tap_start test-scaled 26
 
 TOL=4
 
@@ -159,6 +159,14 @@ run run --no-provenance "$tmp/a.ini"
 row0=$(sed -n 2p "$tmp/out")
 test "$rc" -eq 0 && test "$row0" = "0,0,0,1.1249999999999999e-600,1.25e-300,1e-300,1e-300"
 result $? "E beyond the doubles is printed exactly, 17 digits (row 0: $row0)"
+
+# the provenance says so; a run that needs no scaling has no such line
+skate_scene "$tmp/a.ini" discrete -0.5 1 1e-300 1e-300 "collisions = 1"
+run run "$tmp/a.ini"
+grep -q '^# velocity scaling: computed with V, Omega times 2^997 ' "$tmp/raw" \
+  && run run "${top_srcdir:-.}/scenes/example.ini" \
+  && ! grep -q '^# velocity scaling' "$tmp/raw"
+result $? "provenance: '# velocity scaling: ... 2^997' for V = Omega = 1e-300 only"
 
 # ---- time beyond DBL_MAX -----------------------------------------------------------
 # V = 1e-308 along a straight line (Omega = 0): each segment takes
