@@ -245,7 +245,8 @@ scale_quantity (chaplygin_scale_kind kind, chp_quantity *q)
    = max(|V|, sqrt(1 + l0^2) |Omega|) is in [2^-400, 2^450/max(1, |l0|)]
    (E in [2^-801, 2^900], |H| below 2^451: every routine works
    unscaled, and the caller's results are bit for bit those of an unscaled
-   run); otherwise m = -ilogb(sp), so that 2^m sp is in [1, 2).
+   run); otherwise m = -ilogb(sp), so that 2^m sp is in [1, 2) (sp
+   beyond DBL_MAX too: its exponent without overflow, lib/far.c).
    Domain: l0, V, Omega finite.  A zero speed (V = Omega = 0) is not
    scaled (m = 0).
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite),

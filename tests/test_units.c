@@ -319,6 +319,9 @@ START_TEST (test_velocity_scaling)
     { 0.0, 0x1p450, 0.0, 0 },
     { 0.0, 0x1.0000000000001p450, 0.0, 1 },
     { 0.0, 0.0, 0.0, 0 },                 /* no speed: nothing to scale */
+    { 1.0, 1.7e308, -1.7e308, 1 },        /* the speed overflows: 2^1024 */
+    { 0.0, -0x1.fffffffffffffp1023, 0x1.fffffffffffffp1023, 1 },
+    { 1e300, 1.0, 2.385e10, 1 },          /* sqrt(1 + l0^2) Omega too */
   };
   for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
     {

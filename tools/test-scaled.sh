@@ -33,7 +33,7 @@ prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 cmp=$top_builddir/tools/scaled-cmp
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-scaled 26
+tap_start test-scaled 27
 
 TOL=4
 
@@ -102,6 +102,8 @@ skate_agree "discrete, V = Omega = 1e+200 (E ~ 1e400): against 2^-664 V, 2^-664 
   discrete -0.5 1 1e200 1e200 -664 "$RUN"
 skate_agree "discrete, L0 = 1, Delta = 1/3, V = 1e+200, Omega = -2.385e+199: against 2^-664" \
   discrete 1 1/3 1e200 -2.385e199 -664 "$RUN"
+skate_agree "discrete, V = 1.5e+308, Omega = -1.5e+308 (sqrt(1 + L0^2) |Omega| beyond DBL_MAX, E ~ 1e616): against 2^-1020" \
+  discrete -0.5 1 1.5e308 -1.5e308 -1020 "$RUN"
 skate_agree "discrete, L0 = -0.5, Delta = 1, V = 1e-300, Omega = 1 (slow, not tiny: run unscaled, V+ in the state): against 2^10 V, 2^10 Omega" \
   discrete -0.5 1 1e-300 1 10 "$RUN"
 DENSE="collisions = 6
