@@ -107,38 +107,38 @@ degree (const char *name)
   return 0;
 }
 
-int
-main (int argc, char **argv)
+/* Free the lines of T. */
+static void
+free_table (table *t)
 {
-  static table a, b;
-  char *ha[COLS], *hb[COLS];
-  if (argc == 4 && !strcmp (argv[1], "-s"))
+  for (size_t i = 0; i < t->n; i++)
+    free (t->line[i]);
+  t->n = 0;
+}
+
+/* A copy of LINE in BUF (LINE_MAX_LEN bytes: read_table's lines fit). */
+static char *
+copy_line (char *buf, const char *line)
+{
+  snprintf (buf, LINE_MAX_LEN, "%s", line);
+  return buf;
+}
+
+/* Compare the tables A and B (A's physical values against B's scaled by
+   2^(-d K)): 0 if every column is within TOL eps, 1 if not. */
+static int
+compare (const table *a, const table *b, double tol, long K)
+{
+  static char hla[LINE_MAX_LEN], hlb[LINE_MAX_LEN];
+  static char la[LINE_MAX_LEN], lb[LINE_MAX_LEN];
+  char *ha[COLS], *hb[COLS], *fa[COLS], *fb[COLS];
+  if (a->n < 2 || a->n != b->n)
     {
-      const double v = strtod (argv[2], NULL);
-      const int k = atoi (argv[3]);
-      const double r = ldexp (v, k);
-      if (!isfinite (r) || ldexp (r, -k) != v)
-        return 1;
-      printf ("%a\n", r);
-      return 0;
-    }
-  if (argc != 5)
-    {
-      fputs ("usage: scaled-cmp TOL K A.csv B.csv\n", stderr);
-      return 2;
-    }
-  const double tol = atof (argv[1]);
-  const long K = atol (argv[2]);
-  if (read_table (argv[3], &a) || read_table (argv[4], &b))
-    return 2;
-  if (a.n < 2 || a.n != b.n)
-    {
-      fprintf (stderr, "scaled-cmp: %zu and %zu lines\n", a.n, b.n);
+      fprintf (stderr, "scaled-cmp: %zu and %zu lines\n", a->n, b->n);
       return 1;
     }
-  char *hla = strdup (a.line[0]), *hlb = strdup (b.line[0]);
-  const int nc = split (hla, ha);
-  if (nc < 0 || split (hlb, hb) != nc)
+  const int nc = split (copy_line (hla, a->line[0]), ha);
+  if (nc < 0 || split (copy_line (hlb, b->line[0]), hb) != nc)
     {
       fprintf (stderr, "scaled-cmp: different headers\n");
       return 1;
@@ -150,9 +150,7 @@ main (int argc, char **argv)
         return 1;
       }
 
-  mpfr_set_emin (mpfr_get_emin_min ());
-  mpfr_set_emax (mpfr_get_emax_max ());
-  mpfr_t x, y, d, colmax[COLS], worst[COLS], eps;
+  mpfr_t x, y, d, eps, colmax[COLS], worst[COLS];
   mpfr_inits2 (PREC, x, y, d, eps, (mpfr_ptr) 0);
   mpfr_set_ui_2exp (eps, 1, -52, MPFR_RNDN);
   for (int j = 0; j < nc; j++)
@@ -164,16 +162,16 @@ main (int argc, char **argv)
     }
   int bad = 0;
   /* two passes: the columns' largest |b|, then the errors */
-  for (int pass = 0; pass < 2; pass++)
-    for (size_t i = 1; i < a.n; i++)
+  for (int pass = 0; pass < 2 && bad < 2; pass++)
+    for (size_t i = 1; i < a->n && bad < 2; i++)
       {
-        char *la = strdup (a.line[i]), *lb = strdup (b.line[i]);
-        char *fa[COLS], *fb[COLS];
-        if (split (la, fa) != nc || split (lb, fb) != nc)
+        if (split (copy_line (la, a->line[i]), fa) != nc
+            || split (copy_line (lb, b->line[i]), fb) != nc)
           {
             fprintf (stderr, "scaled-cmp: line %zu: not %d fields\n", i + 1,
                      nc);
-            return 1;
+            bad = 2;
+            break;
           }
         for (int j = 0; j < nc; j++)
           {
@@ -194,7 +192,8 @@ main (int argc, char **argv)
               {
                 fprintf (stderr, "line %zu, %s: not numbers: %s, %s\n",
                          i + 1, ha[j], fa[j], fb[j]);
-                return 1;
+                bad = 2;
+                break;
               }
             mpfr_mul_2si (y, y, -deg * K, MPFR_RNDN);   /* exact */
             if (pass == 0)
@@ -222,10 +221,8 @@ main (int argc, char **argv)
             if (mpfr_cmp (d, worst[j]) > 0)
               mpfr_set (worst[j], d, MPFR_RNDN);
           }
-        free (la);
-        free (lb);
       }
-  for (int j = 0; j < nc; j++)
+  for (int j = 0; j < nc && bad < 2; j++)
     {
       if (degree (ha[j]) == 99)
         continue;
@@ -234,5 +231,41 @@ main (int argc, char **argv)
       if (!(w <= tol))
         bad = 1;
     }
-  return bad;
+  for (int j = 0; j < nc; j++)
+    {
+      mpfr_clear (colmax[j]);
+      mpfr_clear (worst[j]);
+    }
+  mpfr_clears (x, y, d, eps, (mpfr_ptr) 0);
+  return bad != 0;
+}
+
+int
+main (int argc, char **argv)
+{
+  static table a, b;
+  if (argc == 4 && !strcmp (argv[1], "-s"))
+    {
+      const double v = strtod (argv[2], NULL);
+      const int k = atoi (argv[3]);
+      const double r = ldexp (v, k);
+      if (!isfinite (r) || ldexp (r, -k) != v)
+        return 1;
+      printf ("%a\n", r);
+      return 0;
+    }
+  if (argc != 5)
+    {
+      fputs ("usage: scaled-cmp TOL K A.csv B.csv\n", stderr);
+      return 2;
+    }
+  int rc = 2;
+  mpfr_set_emin (mpfr_get_emin_min ());
+  mpfr_set_emax (mpfr_get_emax_max ());
+  if (read_table (argv[3], &a) == 0 && read_table (argv[4], &b) == 0)
+    rc = compare (&a, &b, atof (argv[1]), atol (argv[2]));
+  free_table (&a);
+  free_table (&b);
+  mpfr_free_cache ();
+  return rc;
 }
