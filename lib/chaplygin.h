@@ -155,6 +155,42 @@ int chaplygin_energy_nondimensionalize (double m, double v0, double T,
 int chaplygin_momentum_nondimensionalize (double m, double rho, double v0,
                                           double h, double *H);
 
+/* The velocity scaling: a change of the speed unit v0 by a power of two.
+   The motion of every model (smooth, discrete, massless) is homogeneous in
+   velocity: with V and Omega times s = 2^m, E is times s^2, H times s,
+   every time and time increment times 1/s, and D, S, theta, the positions
+   and 2E/H^2 are unchanged.  A quantity of kind q is scaled as
+   x 2^(d m), d its degree: */
+typedef enum
+{
+  CHAPLYGIN_SCALE_NONE = 0,   /* d = 0: D, S, theta, positions, 2E/H^2 */
+  CHAPLYGIN_SCALE_SPEED = 1,  /* d = 1: V, Omega, H */
+  CHAPLYGIN_SCALE_ENERGY = 2, /* d = 2: E */
+  CHAPLYGIN_SCALE_TIME = 3    /* d = -1: tau, time increments */
+} chaplygin_scale_kind;
+
+/* The exact velocity scaling of the phase state (V, Omega) at l0 (L0 + D;
+   the smooth sleigh's L; the massless skate's L0 + D in its units): *m = 0
+   and (V, Omega) as given where E and H and the products formed from them
+   are in range (speed sp = max(|V|, sqrt(1 + l0^2) |Omega|) in
+   [2^-400, 2^450/max(1, |l0|)]); otherwise the m with 2^m sp in [1, 2)
+   and *Vs = 2^m V, *Omegas = 2^m Omega exactly (the library's own
+   time-scaling, lib/far.c).  CHAPLYGIN_ERANGE where V or Omega would lose
+   bits (they differ by more than the doubles' range). */
+int chaplygin_velocity_scaling (double l0, double V, double Omega, int *m,
+                                double *Vs, double *Omegas);
+
+/* y = x 2^(d m) for a quantity of KIND (degree d): into the scaled units
+   with m, back with -m.  *exact = 1 if y is that value exactly, 0 if it
+   was rounded (below DBL_MIN); CHAPLYGIN_ERANGE where |x 2^(d m)| >
+   DBL_MAX.  |m| <= 4096. */
+int chaplygin_velocity_scale (int m, chaplygin_scale_kind kind, double x,
+                              double *y, int *exact);
+
+/* *e = d m, the power of two of a quantity of KIND (so that a value
+   outside the doubles can be printed exactly: x 2^e).  |m| <= 4096. */
+int chaplygin_velocity_exponent (int m, chaplygin_scale_kind kind, int *e);
+
 /* ------------------------------------------------------------------ */
 /* Section 2 and Appendix A: the smooth Chaplygin sleigh               */
 /* q = {S, V, theta, Omega}, S the arc length of the path of C.        */

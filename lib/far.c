@@ -168,13 +168,51 @@ chp_far_phase (chp_far *f, double l0, double V, double Omega, double *Vs,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* Whether the speed of a phase state at l0, sp = max(|V|, sqrt(1 + l0^2)
+   |Omega|), is so large or small that E or H (or their products in the
+   routines that use them) would overflow or underflow: sp max(1, |l0|) >
+   2^450 or sp < 2^-400 (the bounds of chaplygin_discrete_heading's
+   time-scaling), or sp overflows.  sp^2/2 <= E <= sp^2 and |H| <= sqrt(2) sp max(1, |l0|),
+   so within them E lies in [2^-801, 2^900] and |H| below 2^451.  Once
+   scaled by chp_far_speed, sp is in [1, 2): never a second time.  The
+   one test of chaplygin_velocity_scaling (units.c),
+   chaplygin_discrete_poincare (map.c) and a leg's scaling (flow.c). */
+/* The speed sp = max(|V|, sqrt(1 + l0^2) |Omega|) of a phase state and
+   *e = ilogb(sp) (0 for sp = 0 or non-finite inputs).  Where the product
+   overflows (finite inputs: |Omega| > 1 there, up to V = Omega = DBL_MAX),
+   sp = +Inf and *e from the product formed 2^-64 lower, exactly (both
+   factors then normal): the exponent an unbounded format would give. */
+static double
+speed (double l0, double V, double Omega, int *e)
+{
+  const double sp = fmax (fabs (V), hypot (1.0, l0) * fabs (Omega));
+  *e = 0;
+  if (sp > 0.0 && isfinite (sp))
+    *e = ilogb (sp);
+  else if (isinf (sp) && isfinite (V) && isfinite (Omega) && isfinite (l0))
+    *e = ilogb (fmax (ldexp (fabs (V), -64),
+                      hypot (1.0, l0) * ldexp (fabs (Omega), -64))) + 64;
+  return sp;
+}
+
+int
+chp_far_speed_needed (double l0, double V, double Omega)
+{
+  int e;
+  const double sp = speed (l0, V, Omega, &e);
+  return e != 0
+    && (!isfinite (sp) || sp * fmax (1.0, fabs (l0)) > 0x1p450
+        || sp < 0x1p-400);
+}
+
 int
 chp_far_speed (chp_far *f, double l0, double V, double Omega, double *Vs,
                double *Omegas)
 {
+  int e;
   f->j = 0;
-  const double sp = fmax (fabs (V), hypot (1.0, l0) * fabs (Omega));
-  f->m = sp > 0.0 && isfinite (sp) ? -ilogb (sp) : 0;
+  (void) speed (l0, V, Omega, &e);
+  f->m = -e;
   if (!chp_far_in (f, CHP_Q_SPEED, V, Vs)
       || !chp_far_in (f, CHP_Q_RATE, Omega, Omegas))
     return CHAPLYGIN_ERANGE;

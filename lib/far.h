@@ -59,9 +59,17 @@ int chp_far_state (chp_far *f, double E, double H, int linear, double *Es,
 int chp_far_phase (chp_far *f, double l0, double V, double Omega,
                    double *Vs, double *Omegas);
 
+/* 1 if the phase state (V, Omega) at l0 must be time-scaled by
+   chp_far_speed before E and H are formed (its speed max(|V|, sqrt(1 +
+   l0^2) |Omega|) times max(1, |l0|) above 2^450 or beyond DBL_MAX, or
+   the speed below 2^-400), 0 if not (also for a zero speed or non-finite
+   inputs). */
+int chp_far_speed_needed (double l0, double V, double Omega);
+
 /* m alone (the time-scaling, exact for any rho: also within the cap, k =
-   0): the speed max(|V|, sqrt(1 + l0^2) |Omega|) scaled into [1, 2), and
-   the scaled V, Omega.  CHAPLYGIN_ERANGE where a scaling is not exact. */
+   0): the speed max(|V|, sqrt(1 + l0^2) |Omega|) scaled into [1, 2) (also
+   where it overflows), and the scaled V, Omega.  CHAPLYGIN_ERANGE where a
+   scaling is not exact. */
 int chp_far_speed (chp_far *f, double l0, double V, double Omega,
                    double *Vs, double *Omegas);
 

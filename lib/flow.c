@@ -105,9 +105,7 @@ leg_scaling (double L0, double D0, double V0, double Omega0, double D,
       return CHAPLYGIN_SUCCESS;
     }
   CHP_TRY (chp_far_open_path (l0, l, f));       /* k = 0 */
-  const double sp = fmax (fabs (V0), hypot (1.0, l0) * fabs (Omega0));
-  const int m = sp > 0.0 && isfinite (sp) ? -ilogb (sp) : 0;
-  *scaled = m != 0 && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400);
+  *scaled = chp_far_speed_needed (l0, V0, Omega0);
   return CHAPLYGIN_SUCCESS;
 }
 

@@ -975,19 +975,6 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
   return CHAPLYGIN_SUCCESS;
 }
 
-/* Whether the speed of a phase state at l0, sp = max(|V|, sqrt(1 + l0^2)
-   |Omega|), is so large or small that E or H would overflow or underflow
-   (sp max(1, |l0|) > 2^450 or sp < 2^-400; the bounds of
-   chaplygin_discrete_heading's time-scaling). */
-static int
-speed_needs_scaling (double l0, double V, double Omega)
-{
-  const double sp = fmax (fabs (V), hypot (1.0, l0) * fabs (Omega));
-  /* once scaled, sp is in [1, 2): never a second time */
-  return sp > 0.0 && isfinite (sp) && ilogb (sp) != 0
-    && (sp * fmax (1.0, fabs (l0)) > 0x1p450 || sp < 0x1p-400);
-}
-
 /* chaplygin_discrete_poincare of an exactly scaled problem (lib/far.c):
    a far slot (FAR: D times 2^-k, V times 2^m, Omega times 2^(k+m)) or,
    within the cap, the time-scaling alone (V, Omega times 2^m, chp_far_speed:
@@ -1052,8 +1039,9 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
     return CHAPLYGIN_EDOM;
   const int far = fabs (sys->l_end[0]) > CHP_L_MAX
     || fabs (sys->l_end[1]) > CHP_L_MAX;
-  if (far || speed_needs_scaling (sys->L0 + qplus[CHAPLYGIN_D],
-                                  qplus[CHAPLYGIN_V], qplus[CHAPLYGIN_OMEGA]))
+  if (far || chp_far_speed_needed (sys->L0 + qplus[CHAPLYGIN_D],
+                                   qplus[CHAPLYGIN_V],
+                                   qplus[CHAPLYGIN_OMEGA]))
     return poincare_scaled (sys, far, qplus, opt, qnext, dtau);
   chaplygin_discrete_state st;
   chaplygin_discrete_event ev;

@@ -11,6 +11,7 @@
 
 #include "chaplygin.h"
 #include "eft.h"
+#include "far.h"
 
 static int
 check_scales (double rho, double v0)
@@ -196,5 +197,119 @@ chaplygin_momentum_nondimensionalize (double m, double rho, double v0,
   if (!isfinite (r))
     return CHAPLYGIN_ERANGE;
   *H = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* ------------------------------------------------------------------ */
+/* The velocity scaling: a change of v0 by a power of two              */
+/* ------------------------------------------------------------------ */
+
+/* The largest |m| accepted: every nonzero double times 2^(d m) with
+   |d m| > 2098 over- or underflows, and d m stays far inside int. */
+#define VELOCITY_M_MAX 4096
+
+/* The far mechanism's kind of quantity (lib/far.c) for a public kind:
+   within the cap (k = j = 0) its exponents are d m. */
+static int
+scale_quantity (chaplygin_scale_kind kind, chp_quantity *q)
+{
+  switch (kind)
+    {
+    case CHAPLYGIN_SCALE_NONE:
+      *q = CHP_Q_HEADING;       /* 2^j, j = 0 */
+      return CHAPLYGIN_SUCCESS;
+    case CHAPLYGIN_SCALE_SPEED:
+      *q = CHP_Q_SPEED;         /* 2^m (rates and H too, with k = j = 0) */
+      return CHAPLYGIN_SUCCESS;
+    case CHAPLYGIN_SCALE_ENERGY:
+      *q = CHP_Q_ENERGY;        /* 4^m */
+      return CHAPLYGIN_SUCCESS;
+    case CHAPLYGIN_SCALE_TIME:
+      *q = CHP_Q_TIME;          /* 2^-(k + m) */
+      return CHAPLYGIN_SUCCESS;
+    }
+  return CHAPLYGIN_EINVAL;
+}
+
+/* chaplygin_velocity_scaling: the exact time-scaling of a phase state.
+   Physics: (2.1), (3.1) and the massless skate's equations are
+   homogeneous of degree 2 in the velocities (V, Omega) and the rest of
+   the state (D or S, theta) is unchanged: with V, Omega times s, a
+   solution runs s times faster (tau times 1/s), E (3.3), (A.4) is times
+   s^2 and H (3.4), (A.4) times s.  Choosing s = 2^m is the change of the
+   speed unit v0 to 2^-m v0 in (2.2), (3.2), (B.17), exact in binary
+   floating point.
+   Method: the test and the scaling of lib/far.c (chp_far_speed_needed,
+   chp_far_speed), as chaplygin_discrete_poincare and
+   chaplygin_discrete_heading scale internally: m = 0 where the speed sp
+   = max(|V|, sqrt(1 + l0^2) |Omega|) is in [2^-400, 2^450/max(1, |l0|)]
+   (E in [2^-801, 2^900], |H| below 2^451: every routine works
+   unscaled, and the caller's results are bit for bit those of an unscaled
+   run); otherwise m = -ilogb(sp), so that 2^m sp is in [1, 2) (sp
+   beyond DBL_MAX too: its exponent without overflow, lib/far.c).
+   Domain: l0, V, Omega finite.  A zero speed (V = Omega = 0) is not
+   scaled (m = 0).
+   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite),
+   CHAPLYGIN_ERANGE where 2^m V or 2^m Omega is not exact (one of them is
+   below 2^-1074 of the other, within a factor sqrt(1 + l0^2)). */
+int
+chaplygin_velocity_scaling (double l0, double V, double Omega, int *m,
+                            double *Vs, double *Omegas)
+{
+  if (!m || !Vs || !Omegas)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (l0, V) || !isfinite (Omega))
+    return CHAPLYGIN_EDOM;
+  chp_far f = { .k = 0, .m = 0, .j = 0 };
+  double vs = V, os = Omega;
+  if (chp_far_speed_needed (l0, V, Omega))
+    CHP_TRY (chp_far_speed (&f, l0, V, Omega, &vs, &os));
+  *m = f.m;
+  *Vs = vs;
+  *Omegas = os;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_velocity_exponent: e = d m, d the degree of KIND (0, 1, 2,
+   -1), the exponent of lib/far.c's kind of quantity at k = j = 0.
+   Errors: CHAPLYGIN_EINVAL (NULL, unknown kind), CHAPLYGIN_EDOM
+   (|m| > 4096). */
+int
+chaplygin_velocity_exponent (int m, chaplygin_scale_kind kind, int *e)
+{
+  chp_quantity q;
+  if (!e)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (scale_quantity (kind, &q));
+  if (m < -VELOCITY_M_MAX || m > VELOCITY_M_MAX)
+    return CHAPLYGIN_EDOM;
+  const chp_far f = { .k = 0, .m = m, .j = 0 };
+  *e = chp_far_exponent (&f, q);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_velocity_scale: y = x 2^(d m), correctly rounded (ldexp):
+   exact unless the result is below DBL_MIN and bits of x fall off the
+   subnormal range (then *exact = 0, y the nearest double, 0 possibly).
+   A caller that must not lose bits tests *exact; the program prints such
+   a value from x and the exponent (chaplygin_velocity_exponent) instead.
+   Errors: CHAPLYGIN_EINVAL (NULL, unknown kind), CHAPLYGIN_EDOM (x not
+   finite, |m| > 4096), CHAPLYGIN_ERANGE (|x 2^(d m)| > DBL_MAX: no
+   output). */
+int
+chaplygin_velocity_scale (int m, chaplygin_scale_kind kind, double x,
+                          double *y, int *exact)
+{
+  int e;
+  if (!y || !exact)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chaplygin_velocity_exponent (m, kind, &e));
+  if (!isfinite (x))
+    return CHAPLYGIN_EDOM;
+  double r = ldexp (x, e);
+  if (!isfinite (r))
+    return CHAPLYGIN_ERANGE;
+  *exact = chp_exact_ldexp (x, e, &r);
+  *y = r;
   return CHAPLYGIN_SUCCESS;
 }

@@ -116,6 +116,10 @@ static const char usage_text[] =
   "elliptic integral, quadrature or integration).\n"
   "\n"
   "Output of run: CSV, a header line, numbers with %.17g (they round-trip).\n"
+  "A tiny or huge state (V = Omega = 1e-300) runs in the units of the\n"
+  "library's exact velocity scaling, printed in the scene's: a number beyond\n"
+  "the doubles (E = 1e-600) as its exact decimal, 17 digits, which readers\n"
+  "into doubles take as 0 or inf ('man chaplygin', OUTPUT).\n"
   "The fixed columns come first, then the requested outputs, always in the\n"
   "order E,H,theta,tau,peg,V,Omega,path,G, whatever the order in the scene.\n"
   "After the header line come '#' lines: the version, the command, the\n"
@@ -536,10 +540,17 @@ run_skate (int argc, char **argv)
       return EXIT_USAGE;
     }
 
-  const double q[4] = { args.V > 0.0 ? 0.0 : args.Delta, args.V, args.theta,
-                        args.Omega };
+  /* the state as the run forms it: in the units of its velocity scaling
+     where it is tiny or huge (run.c) */
+  double q[4] = { args.V > 0.0 ? 0.0 : args.Delta, args.V, args.theta,
+                  args.Omega };
   chaplygin_discrete_state st;
-  status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st);
+  int m;
+  status = chaplygin_velocity_scaling (args.L0 + q[CHAPLYGIN_D], args.V,
+                                       args.Omega, &m, &q[CHAPLYGIN_V],
+                                       &q[CHAPLYGIN_OMEGA]);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st);
   if (status != CHAPLYGIN_SUCCESS)
     {
       fprintf (stderr, "chaplygin: initial state --L0 %.17g --Delta %.17g "

@@ -37,7 +37,10 @@ EXTRA_DIST += tools/chaplygin.1.in
 
 # The scene parser's unit tests, and the fuzz target replaying its corpus
 # (the same source as the libFuzzer build of `make fuzz').
-check_PROGRAMS += tools/test-scene tools/fuzz-scene tools/test-number
+check_PROGRAMS += tools/test-scene tools/fuzz-scene tools/test-number \
+	tools/scaled-cmp
+tools_scaled_cmp_SOURCES = tools/scaled-cmp.c
+tools_scaled_cmp_LDADD = $(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
 tools_test_number_SOURCES = tools/test-number.c tools/number.c tools/number.h
 tools_test_number_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS)
 tools_test_number_LDADD = $(CHECK_LIBS) $(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
@@ -55,9 +58,11 @@ tools_fuzz_scene_LDADD = lib/libchaplygin-core.la $(INIH_LIBS) \
 CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
 	tools/test-scene tools/test-number tools/fuzz-replay.sh \
 	tools/test-scenes.sh tools/test-eq.sh tools/test-manpage.sh \
-	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh
+	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
+	tools/test-scaled.sh
 TESTS += $(CLI_TESTS)
 EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
+	tools/test-scaled.sh \
 	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
 	tools/fuzz-replay.sh tools/test-scenes.sh tools/test-eq.sh \
 	tools/test-manpage.sh tools/installcheck-examples.sh tools/fuzz-corpus tools/fuzz-scene.dict \

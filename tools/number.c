@@ -188,3 +188,25 @@ number_problem (int status)
       return "is not a number";
     }
 }
+
+int
+number_format (char *buf, size_t size, double x, long e)
+{
+  /* the widest exponent range: x 2^e is exact for any e of a double's
+     scaling (|e| <= 2^30); the caller's range is restored */
+  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
+  mpfr_t t;
+  int n = -1;
+  if (!isfinite (x) || size < NUMBER_TEXT_MAX)
+    return -1;
+  mpfr_set_emin (mpfr_get_emin_min ());
+  mpfr_set_emax (mpfr_get_emax_max ());
+  mpfr_init2 (t, 53);
+  if (mpfr_set_d (t, x, MPFR_RNDN) == 0
+      && mpfr_mul_2si (t, t, e, MPFR_RNDN) == 0)
+    n = mpfr_snprintf (buf, size, "%.17Rg", t);
+  mpfr_clear (t);
+  mpfr_set_emin (emin);
+  mpfr_set_emax (emax);
+  return n > 0 && (size_t) n < size ? 0 : -1;
+}

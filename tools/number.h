@@ -20,6 +20,8 @@
 #ifndef CHAPLYGIN_TOOLS_NUMBER_H
 #define CHAPLYGIN_TOOLS_NUMBER_H
 
+#include <stddef.h>
+
 enum number_status
 {
   NUMBER_OK = 0,
@@ -38,5 +40,18 @@ int number_integer (const char *text, long lo, long hi, long *x);
 
 /* A phrase for a number_status, for messages ("is not a number"). */
 const char *number_problem (int status);
+
+/* Bytes that hold any text of number_format (sign, 17 digits, point,
+   "e-", a 10-digit exponent, NUL). */
+#define NUMBER_TEXT_MAX 48
+
+/* The text of x 2^e as printf's "%.17g" prints a double (17 significant
+   digits, correctly rounded, trailing zeros dropped), of the exact value
+   x 2^e: also where it lies outside the doubles (E = 1e-600 of a run in
+   scaled units), which MPFR holds exactly (53 bits, its widest exponent
+   range).  Formatting only: x and e come from the library.  X finite;
+   BUF of at least NUMBER_TEXT_MAX bytes.  Returns 0, or -1 if BUF is too
+   short or MPFR fails. */
+int number_format (char *buf, size_t size, double x, long e);
 
 #endif /* CHAPLYGIN_TOOLS_NUMBER_H */

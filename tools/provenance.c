@@ -27,7 +27,7 @@ method_line (FILE *out, const scene *sc, int compare)
 
 void
 provenance_header (FILE *out, const char *command, const char *path,
-                   const scene *sc, int compare)
+                   const scene *sc, int compare, int m)
 {
   char buf[1024];
   fprintf (out, "# chaplygin %s: %s\n", PACKAGE_VERSION,
@@ -38,6 +38,12 @@ provenance_header (FILE *out, const char *command, const char *path,
   method_line (out, sc, compare);
   fputs ("# numbers: %.17g, read back exactly; lines from '#' on are "
          "comments\n", out);
+  if (m != 0)
+    fprintf (out, "# velocity scaling: computed with V, Omega times 2^%d "
+             "(E or H would leave the doubles), printed in the scene's "
+             "units; a number beyond the doubles is its exact decimal "
+             "(17 digits), which a reader into doubles takes as 0 or "
+             "inf\n", m);
   fputs ("# the effective scene (every key in use, defaults included; "
          "chaplygin run --print-scene):\n", out);
   scene_write (sc, out, "#   ");

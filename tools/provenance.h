@@ -12,9 +12,11 @@
 #include "scene.h"
 
 /* The provenance lines of the output of COMMAND (the command line) for the
-   scene SC read from PATH (COMPARE: its smooth companion). */
+   scene SC read from PATH (COMPARE: its smooth companion); M != 0: the run
+   is computed in the units of the velocity scaling 2^M (run.c), a line
+   says so. */
 void provenance_header (FILE *out, const char *command, const char *path,
-                        const scene *sc, int compare);
+                        const scene *sc, int compare, int m);
 
 /* The last line: "# end: " and FMT (printf). */
 void provenance_end (FILE *out, const char *fmt, ...)

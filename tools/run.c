@@ -16,7 +16,18 @@
                     [,Omega][,x,y][,G_x,G_y]
      smooth         S,tau[,E][,H][,theta][,V][,Omega][,x,y][,G_x,G_y]
    (tau is a fixed column of the dense and smooth sets.)  See the --help
-   text of tools/chaplygin.c and the manual page for their meaning. */
+   text of tools/chaplygin.c and the manual page for their meaning.
+
+   Tiny and huge states: a run whose initial speed would under- or overflow
+   E or H (chaplygin_velocity_scaling gives m != 0) runs in the scaled
+   units, V and Omega times 2^m (the motion is homogeneous in velocity),
+   and every row is written in the physical ones: V, Omega, H, E and tau
+   by chaplygin_velocity_scale with -m, exact; a value outside the doubles
+   (E = 1e-600 for V = 1e-300) as the exact decimal of the scaled value
+   times 2^e (chaplygin_velocity_exponent), 17 digits (number_format); D,
+   theta and the positions unchanged.  A time beyond DBL_MAX ends the run
+   with CHAPLYGIN_ERANGE: the one result that is then not representable
+   for a reader of the CSV or for stop_tau. */
 #include <config.h>
 
 #include <errno.h>
@@ -28,6 +39,7 @@
 
 #include "bounds.h"
 #include "chaplygin.h"
+#include "number.h"
 #include "progress.h"
 #include "provenance.h"
 #include "run.h"
@@ -62,6 +74,8 @@ typedef struct
   int failed;                   /* a write failed (message printed) */
   long rows, max_rows;          /* data rows written; the limit */
   int full;                     /* a row was refused: max_rows reached */
+  int m;                        /* the run's velocity scaling (0: none):
+                                   its numbers are scaled by 2^(d m) */
   const run_options *opt;       /* opt->command: provenance lines */
   const scene *sc;              /* for the provenance lines */
   const char *path;
@@ -100,6 +114,53 @@ static void
 row_num (sink *s, double x)
 {
   row_printf (s, "%.17g", x);
+}
+
+/* The text of the physical value of X, a quantity of KIND computed in the
+   units of the velocity scaling M (chaplygin_velocity_scaling): %.17g of
+   the library's exact unscaled value, or the exact decimal of X 2^e where
+   that is not a double (rounded, or beyond DBL_MAX).  BUF holds
+   NUMBER_TEXT_MAX bytes. */
+static void
+scaled_text (char *buf, int m, chaplygin_scale_kind kind, double x)
+{
+  double y;
+  int exact = 0, e = 0;
+  if (m == 0 || kind == CHAPLYGIN_SCALE_NONE)
+    {
+      snprintf (buf, NUMBER_TEXT_MAX, "%.17g", x);
+      return;
+    }
+  if (chaplygin_velocity_scale (-m, kind, x, &y, &exact) == CHAPLYGIN_SUCCESS
+      && exact)
+    snprintf (buf, NUMBER_TEXT_MAX, "%.17g", y);
+  else if (chaplygin_velocity_exponent (-m, kind, &e) != CHAPLYGIN_SUCCESS
+           || number_format (buf, NUMBER_TEXT_MAX, x, e) != 0)
+    snprintf (buf, NUMBER_TEXT_MAX, "nan");     /* |m| <= 1074: never */
+}
+
+/* Append the physical value of the scaled X of KIND (scaled_text). */
+static void
+row_scaled (sink *s, chaplygin_scale_kind kind, double x)
+{
+  char text[NUMBER_TEXT_MAX];
+  scaled_text (text, s->m, kind, x);
+  row_printf (s, "%s", text);
+}
+
+/* The physical time of the scaled time TAU of a run with scaling M:
+   CHAPLYGIN_ERANGE beyond DBL_MAX (rounded where below DBL_MIN). */
+static int
+physical_time (int m, double tau_s, double *tau)
+{
+  int exact;
+  if (m == 0)
+    {
+      *tau = tau_s;
+      return CHAPLYGIN_SUCCESS;
+    }
+  return chaplygin_velocity_scale (-m, CHAPLYGIN_SCALE_TIME, tau_s, tau,
+                                   &exact);
 }
 
 /* Write the row and a newline (DATA: a data row, counted against
@@ -143,7 +204,7 @@ header_end (sink *s)
     return -1;
   if (s->opt->command)
     provenance_header (s->out, s->opt->command, s->path, s->sc,
-                       s->opt->compare);
+                       s->opt->compare, s->m);
   return 0;
 }
 
@@ -208,27 +269,28 @@ typedef struct
   double G[2];                  /* mass centre */
 } point;
 
-/* Append the outputs of P in canonical order (see header_outputs). */
+/* Append the outputs of P in canonical order (see header_outputs), P in
+   the run's scaled units (s->m), written in the physical ones. */
 static void
 row_outputs (sink *s, unsigned outputs, int fixed_tau, const point *p)
 {
   if (outputs & SCENE_OUT_E)
-    row_num (s, p->E);
+    row_scaled (s, CHAPLYGIN_SCALE_ENERGY, p->E);
   if (outputs & SCENE_OUT_H)
-    row_num (s, p->H);
+    row_scaled (s, CHAPLYGIN_SCALE_SPEED, p->H);
   if (outputs & SCENE_OUT_THETA)
     row_num (s, p->theta);
   if ((outputs & SCENE_OUT_TAU) && !fixed_tau)
-    row_num (s, p->tau);
+    row_scaled (s, CHAPLYGIN_SCALE_TIME, p->tau);
   if (outputs & SCENE_OUT_PEG)
     {
       row_num (s, p->peg[0]);
       row_num (s, p->peg[1]);
     }
   if (outputs & SCENE_OUT_V)
-    row_num (s, p->V);
+    row_scaled (s, CHAPLYGIN_SCALE_SPEED, p->V);
   if (outputs & SCENE_OUT_OMEGA)
-    row_num (s, p->Omega);
+    row_scaled (s, CHAPLYGIN_SCALE_SPEED, p->Omega);
   if (outputs & SCENE_OUT_PATH)
     {
       row_num (s, p->path[0]);
@@ -263,9 +325,12 @@ typedef struct
   double stop_ratio;            /* stop where 2E/H^2 > stop_ratio
                                    (1/stop_H^2; NAN: no stop_H) */
   double stop_tau;              /* [run] stop_tau (NAN: none) */
+  int m;                        /* the velocity scaling: the run is in units
+                                   with V, Omega times 2^m (0: none) */
 } skate;
 
-/* Where a segment starts: the post-collision state and its phase. */
+/* Where a segment starts: the post-collision state and its phase (in the
+   run's scaled units). */
 typedef struct
 {
   chaplygin_discrete_state st;
@@ -340,6 +405,38 @@ collision_failure (const skate *k, sink *s, long n, int status)
   return RUN_FAILED;
 }
 
+/* The run's time at collision N, TAU in the scaled units, beyond DBL_MAX:
+   CHAPLYGIN_ERANGE, said with the time's exact value. */
+static int
+time_failure (const skate *k, sink *s, long n, double tau)
+{
+  char text[NUMBER_TEXT_MAX];
+  scaled_text (text, k->m, CHAPLYGIN_SCALE_TIME, tau);
+  if (s->opt->command && !s->failed)
+    provenance_end (s->out, "failed at collision %ld: the time tau = %s is "
+                    "beyond the largest double: %s", n, text,
+                    chaplygin_strerror (CHAPLYGIN_ERANGE));
+  sink_flush_quietly (s);
+  fprintf (stderr, "chaplygin: %s: collision %ld: the time tau = %s is "
+           "beyond the largest double: %s\n", k->path, n, text,
+           chaplygin_strerror (CHAPLYGIN_ERANGE));
+  return RUN_FAILED;
+}
+
+/* Whether the time of the state ST after collision N is representable
+   (only where the run computes it): 0, or -1 after time_failure. */
+static int
+time_check (const skate *k, sink *s, long n,
+            const chaplygin_discrete_state *st, int *rc)
+{
+  double tau;
+  if (!(k->request & CHAPLYGIN_WANT_TAU)
+      || physical_time (k->m, st->tau, &tau) == CHAPLYGIN_SUCCESS)
+    return 0;
+  *rc = time_failure (k, s, n, st->tau);
+  return -1;
+}
+
 #define WHY_MAX 256
 
 /* Whether a stop condition of the scene holds at the post-collision state
@@ -354,6 +451,7 @@ stop_reached (const skate *k, const chaplygin_discrete_state *st, char *why,
   static const char *const fates[] = { "backward (V* < 0)",
                                        "the spinning equilibrium (3.8)",
                                        "forward (V* > 0)" };
+  char a[NUMBER_TEXT_MAX], b[NUMBER_TEXT_MAX];
   if (k->stop_fate)
     {
       chaplygin_fate f;
@@ -362,20 +460,22 @@ stop_reached (const skate *k, const chaplygin_discrete_state *st, char *why,
         return -1;
       if (f.kind != CHAPLYGIN_FATE_UNDECIDED)
         {
+          scaled_text (a, k->m, CHAPLYGIN_SCALE_ENERGY, f.E_final);
+          scaled_text (b, k->m, CHAPLYGIN_SCALE_SPEED, f.V_final);
           snprintf (why, WHY_MAX, "stop_fate: the fate is certain: %s, "
-                    "E_final = %.17g, V_final = %.17g", fates[f.kind + 1],
-                    f.E_final, f.V_final);
+                    "E_final = %s, V_final = %s", fates[f.kind + 1], a, b);
           return 1;
         }
     }
   if (!isnan (k->stop_ratio))
     {
       double r;
+      /* 2E/H^2 is scale-free: the scaled state's */
       *status = chaplygin_discrete_spin_ratio (st->E, st->H, &r);
+      scaled_text (a, k->m, CHAPLYGIN_SCALE_SPEED, st->H);
       if (*status == CHAPLYGIN_ERANGE)
         {
-          snprintf (why, WHY_MAX, "stop_H: H = %.17g, 2E/H^2 is infinite",
-                    st->H);
+          snprintf (why, WHY_MAX, "stop_H: H = %s, 2E/H^2 is infinite", a);
           return 1;
         }
       if (*status != CHAPLYGIN_SUCCESS)
@@ -383,13 +483,17 @@ stop_reached (const skate *k, const chaplygin_discrete_state *st, char *why,
       if (r > k->stop_ratio)
         {
           snprintf (why, WHY_MAX, "stop_H: |H| < stop_H sqrt(2E) "
-                    "(H = %.17g, 2E/H^2 = %.17g)", st->H, r);
+                    "(H = %s, 2E/H^2 = %.17g)", a, r);
           return 1;
         }
     }
-  if (!isnan (k->stop_tau) && st->tau >= k->stop_tau)
+  double tau;
+  if (!isnan (k->stop_tau)
+      && physical_time (k->m, st->tau, &tau) == CHAPLYGIN_SUCCESS
+      && tau >= k->stop_tau)
     {
-      snprintf (why, WHY_MAX, "stop_tau: tau = %.17g", st->tau);
+      scaled_text (a, k->m, CHAPLYGIN_SCALE_TIME, st->tau);
+      snprintf (why, WHY_MAX, "stop_tau: tau = %s", a);
       return 1;
     }
   return 0;
@@ -404,8 +508,9 @@ collision_written (const skate *k, long n, int stop)
   return n % k->every == 0 || n == k->collisions || stop;
 }
 
-/* Set up K for the scene SC and the initial post-collision state *START.
-   Returns RUN_OK or RUN_REJECTED after a message. */
+/* Set up K for the scene SC and the initial post-collision state *START
+   (in the units of K's velocity scaling).  Returns RUN_OK or RUN_REJECTED
+   after a message. */
 static int
 skate_init (skate *k, const scene *sc, const char *path, run_stats *stats,
             segment_start *start)
@@ -450,11 +555,16 @@ skate_init (skate *k, const scene *sc, const char *path, run_stats *stats,
         }
     }
 
-  const double q[4] = { sc->V > 0.0 ? 0.0 : k->Delta, sc->V, sc->theta,
-                        sc->Omega };
+  /* the velocity scaling of a tiny or huge start (m = 0: none) */
+  const double D0 = sc->V > 0.0 ? 0.0 : k->Delta;
+  double q[4] = { D0, sc->V, sc->theta, sc->Omega };
   const double peg[2] = { 0.0, 0.0 };
   double qback[4];
-  if (k->massless)
+  status = chaplygin_velocity_scaling (k->L0 + D0, sc->V, sc->Omega, &k->m,
+                                       &q[CHAPLYGIN_V], &q[CHAPLYGIN_OMEGA]);
+  if (status != CHAPLYGIN_SUCCESS)
+    ;                           /* said below */
+  else if (k->massless)
     {
       status = chaplygin_massless_state_from_phase (k->L0, q, 0.0, peg,
                                                     &start->st);
@@ -485,8 +595,8 @@ skate_init (skate *k, const scene *sc, const char *path, run_stats *stats,
       return RUN_REJECTED;
     }
   start->D0 = q[CHAPLYGIN_D];
-  start->V0 = sc->V;
-  start->Omega0 = sc->Omega;
+  start->V0 = q[CHAPLYGIN_V];
+  start->Omega0 = q[CHAPLYGIN_OMEGA];
   return RUN_OK;
 }
 
@@ -557,6 +667,12 @@ skate_run_collisions (const skate *k, segment_start *cur, sink *s,
       status = skate_step (k, &cur->st, k->request, &next, &ev);
       if (status == CHAPLYGIN_SUCCESS)
         {
+          int rc;
+          if (time_check (k, s, n, &next, &rc) != 0)
+            {
+              progress_finish (&bar);
+              return rc;
+            }
           cur->st = next;
           stop = stop_reached (k, &next, why, &status);
         }
@@ -633,7 +749,7 @@ dense_row (const skate *k, sink *s, const segment_start *start, long n,
     }
   row_begin (s);
   row_printf (s, "%ld,%ld,%d", n, ki, reversal);
-  row_num (s, tau);
+  row_scaled (s, CHAPLYGIN_SCALE_TIME, tau);
   row_num (s, D);
   row_outputs (s, k->outputs, 1, &p);
   return row_end (s);
@@ -684,6 +800,8 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
       long ki = 0;
 
       status = skate_step (k, st, k->request, &next, &ev);
+      if (status == CHAPLYGIN_SUCCESS && time_check (k, s, n, &next, &rc) != 0)
+        break;
       if (status == CHAPLYGIN_SUCCESS
           && (stop = stop_reached (k, &next, why, &status)) < 0)
         stop = 0;
@@ -763,6 +881,7 @@ skate_run (const scene *sc, const char *path, run_stats *stats, sink *s)
   int rc = skate_init (&k, sc, path, stats, &cur);
   if (rc != RUN_OK)
     return rc;
+  s->m = k.m;                   /* rows in the physical units */
   if (sc->samples > 0)
     rc = skate_run_dense (&k, sc, &cur, s, &end_n, why);
   else
@@ -800,27 +919,42 @@ skate_run (const scene *sc, const char *path, run_stats *stats, sink *s)
 /* The smooth sleigh with L, from (V, Omega, theta) at S = 0, tau = 0, C at
    the origin, for DURATION, at SAMPLES + 1 times equally spaced: the state
    by chaplygin_smooth_at_time, C and G (only if requested) by
-   chaplygin_smooth_path_advance from the previous sample. */
+   chaplygin_smooth_path_advance from the previous sample.  A tiny or huge
+   start runs in the units of its velocity scaling (chaplygin_velocity_
+   scaling at l0 = L), the duration scaled by 2^-m; the rows are written
+   in the physical units (s->m). */
 static int
 smooth_run (double L, double V, double Omega, double theta, double duration,
             long samples, unsigned outputs, const char *path,
             run_stats *stats, sink *s)
 {
   chaplygin_smooth_motion m;
-  const double q0[4] = { 0.0, V, theta, Omega };
-  double E, H;
+  double q0[4] = { 0.0, V, theta, Omega };
+  double E, H, dur = duration;
+  int exact;
   const int need_path = (outputs & (SCENE_OUT_PATH | SCENE_OUT_G)) != 0;
 
-  int status = chaplygin_smooth_motion_init (L, q0, &m);
+  int status = chaplygin_velocity_scaling (L, V, Omega, &s->m,
+                                           &q0[CHAPLYGIN_V],
+                                           &q0[CHAPLYGIN_OMEGA]);
+  /* the duration in the scaled units: beyond DBL_MAX for a huge speed
+     whose path would leave the doubles (ERANGE); rounded where below
+     DBL_MIN (the tau column then says the time computed) */
+  if (status == CHAPLYGIN_SUCCESS && s->m != 0)
+    status = chaplygin_velocity_scale (s->m, CHAPLYGIN_SCALE_TIME, duration,
+                                       &dur, &exact);
   if (status == CHAPLYGIN_SUCCESS)
-    status = chaplygin_smooth_energy (L, V, Omega, &E);
+    status = chaplygin_smooth_motion_init (L, q0, &m);
   if (status == CHAPLYGIN_SUCCESS)
-    status = chaplygin_smooth_momentum (L, Omega, &H);
+    status = chaplygin_smooth_energy (L, q0[CHAPLYGIN_V],
+                                      q0[CHAPLYGIN_OMEGA], &E);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_smooth_momentum (L, q0[CHAPLYGIN_OMEGA], &H);
   if (status != CHAPLYGIN_SUCCESS)
     {
       fprintf (stderr, "chaplygin: %s: [initial] V = %.17g, Omega = %.17g "
-               "(with L = %.17g): %s\n", path, V, Omega, L,
-               chaplygin_strerror (status));
+               "(with L = %.17g, duration = %.17g): %s\n", path, V, Omega,
+               L, duration, chaplygin_strerror (status));
       return RUN_REJECTED;
     }
   if (samples < 1)
@@ -839,9 +973,9 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
   (void) chaplygin_smooth_path_init (0.0, NULL, &walk);
   for (long i = 0; rc == RUN_OK && i <= samples; i++)
     {
-      /* tau_i = duration i/samples, exactly duration at the end */
-      double T = i == samples ? duration
-        : duration * ((double) i / (double) samples);
+      /* tau_i = duration i/samples, exactly duration at the end (in the
+         scaled units) */
+      double T = i == samples ? dur : dur * ((double) i / (double) samples);
       double q[4];
       point p;
       memset (&p, 0, sizeof p);
@@ -859,11 +993,13 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
         }
       if (status != CHAPLYGIN_SUCCESS)
         {
+          char text[NUMBER_TEXT_MAX];
+          scaled_text (text, s->m, CHAPLYGIN_SCALE_TIME, T);
           if (s->opt->command && !s->failed)
-            provenance_end (s->out, "failed at tau = %.17g: %s", T,
+            provenance_end (s->out, "failed at tau = %s: %s", text,
                             chaplygin_strerror (status));
           sink_flush_quietly (s);
-          fprintf (stderr, "chaplygin: %s: tau = %.17g: %s\n", path, T,
+          fprintf (stderr, "chaplygin: %s: tau = %s: %s\n", path, text,
                    chaplygin_strerror (status));
           rc = RUN_FAILED;
           break;
@@ -876,7 +1012,7 @@ smooth_run (double L, double V, double Omega, double theta, double duration,
       p.path[1] = walk.C[1];
       row_begin (s);
       row_num (s, q[CHAPLYGIN_S]);
-      row_num (s, T);
+      row_scaled (s, CHAPLYGIN_SCALE_TIME, T);
       row_outputs (s, outputs & ~(unsigned) SCENE_OUT_PEG, 1, &p);
       if (row_end (s) != 0)
         rc = RUN_FAILED;

@@ -418,7 +418,7 @@ write_shard (const sweep_plan *plan, uint64_t shard, uint64_t nshards,
   if (!error && fputs (header_line (plan->sc->sweep), out) == EOF)
     error = errno ? errno : EIO;
   if (!error && plan->command)
-    provenance_header (out, plan->command, plan->path, plan->sc, 0);
+    provenance_header (out, plan->command, plan->path, plan->sc, 0, 0);
   const int show = bar->stream != NULL;
   uint64_t done = 0;            /* points finished, in this shard */
   for (uint64_t b = 0; b <= nblocks && !error; b++)

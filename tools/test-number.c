@@ -247,6 +247,52 @@ START_TEST (problems)
 }
 END_TEST
 
+/* number_format: x 2^e as %.17g prints it, exactly, also beyond the
+   doubles.  Route: the expected texts are Python's decimal module at 200
+   digits (Decimal(x) * Decimal(2)**e formatted to 17 significant digits);
+   within the doubles, snprintf's %.17g of ldexp(x, e) (exact there). */
+static void
+format_is (double x, long e, const char *want)
+{
+  char buf[NUMBER_TEXT_MAX];
+  ck_assert_int_eq (number_format (buf, sizeof buf, x, e), 0);
+  ck_assert_str_eq (buf, want);
+}
+
+START_TEST (formats)
+{
+  format_is (1.5, -2000, "1.3064714724325825e-602");
+  format_is (2.385, 2000, "2.7382917082290968e+602");
+  format_is (-0.61, -1100, "-4.4909126157039461e-332");
+  format_is (2.385e-300, -1992, "5.317861481389584e-900");
+  format_is (1.0, -1075, "2.4703282292062327e-324");
+  format_is (0x1.fffffffffffffp+1023, 1, "3.5953862697246314e+308");
+  format_is (0x1p-1074, -1, "2.4703282292062327e-324");
+  format_is (0.0, -5000, "0");
+  format_is (-0.0, 7, "-0");
+  format_is (1e-300, 0, "1e-300");
+  /* within the doubles: the text of %.17g */
+  static const double x[] = { 2.385, -0.1, 1e-310, 123456789.0, 1e20,
+                              -7.5e-5, 0x1p-1074, 1.7976931348623157e308 };
+  static const long es[] = { 0, 3, -3, 100, -100 };
+  for (size_t i = 0; i < sizeof x / sizeof x[0]; i++)
+    for (size_t j = 0; j < sizeof es / sizeof es[0]; j++)
+      {
+        double y = ldexp (x[i], (int) es[j]);
+        if (!isfinite (y) || ldexp (y, (int) -es[j]) != x[i])
+          continue;             /* not exact in double: above */
+        char want[64];
+        snprintf (want, sizeof want, "%.17g", y);
+        format_is (x[i], es[j], want);
+      }
+  char small[8];
+  ck_assert_int_eq (number_format (small, sizeof small, 1.0, 0), -1);
+  char buf[NUMBER_TEXT_MAX];
+  ck_assert_int_eq (number_format (buf, sizeof buf, INFINITY, 0), -1);
+  ck_assert_int_eq (number_format (buf, sizeof buf, NAN, 0), -1);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -260,6 +306,7 @@ main (void)
   tcase_add_test (tc, rationals);
   tcase_add_test (tc, integers);
   tcase_add_test (tc, problems);
+  tcase_add_test (tc, formats);
   suite_add_tcase (s, tc);
   sr = srunner_create (s);
   srunner_run_all (sr, CK_NORMAL);

@@ -526,14 +526,17 @@ V = 1
 Omega = 0.5
 [run]
 colisions = 3'
+# (V = 1e200 alone runs since issue 16, in the units of the velocity
+# scaling: tools/test-scaled.sh; V beside an Omega 2^1000 times larger
+# has no exact scaling and is still refused)
 bad huge '\[initial\] V = ' '[scene]
 model = discrete
 [parameters]
 L0 = 1
 Delta = 1
 [initial]
-V = 1e200
-Omega = 0.5
+V = 1e-300
+Omega = 1e300
 [run]
 collisions = 3'
 

@@ -21,6 +21,15 @@ float64; status is the library's status number (the program's CSV names
 it: SUCCESS, ERANGE, ...).  A column with empty fields (a sweep's point that failed: its
 status column says why) is a numpy.ma.MaskedArray, masked there.
 
+Tiny and huge states (V = Omega = 1e-300, 1e+200): the program runs them in
+the units of the library's exact velocity scaling and prints the physical
+values, a number beyond the doubles (E = 1.1249999999999999e-600) as its
+exact decimal.  In a float64 column such a number is what float() makes of
+it, 0.0 (or a subnormal) or +-inf, as numpy.loadtxt and other readers into
+doubles give it; run_scene then warns (RuntimeWarning, naming the columns).
+Run the scene with V and Omega scaled by a power of two
+(chaplygin.velocity_scaling) to keep those columns in range.
+
 Errors: a scene that does not parse or that the model rejects raises
 SceneError with the program's message; a library failure during the run
 raises the exception of its status (SpinError, ...) when the message names
@@ -28,6 +37,7 @@ one (ChaplyginError otherwise), with partial = the columns of the rows
 written before it.
 """
 import os
+import warnings
 from collections.abc import Mapping
 
 import numpy as np
@@ -92,6 +102,7 @@ def _columns(text):
     names = lines[0].split(',')
     rows = [l.split(',') for l in lines[1:]]
     out = {}
+    lost = []
     for j, name in enumerate(names):
         fields = [r[j] if j < len(r) else '' for r in rows]
         missing = [f == '' for f in fields]
@@ -106,9 +117,20 @@ def _columns(text):
         else:
             vals = np.array([float(f) if f else np.nan for f in fields],
                             dtype=np.float64)
+            # a number beyond the doubles (printed exactly by the program)
+            # read as 0 or inf
+            for i in np.flatnonzero((vals == 0) | np.isinf(vals)):
+                mant = fields[i].lower().partition('e')[0]
+                if np.isinf(vals[i]) or any(ch in mant for ch in '123456789'):
+                    lost.append(name)
+                    break
         if any(missing):
             vals = np.ma.masked_array(vals, mask=missing)
         out[name] = vals
+    if lost:
+        warnings.warn('run_scene: column(s) %s hold numbers beyond the '
+                      'doubles (a velocity-scaled run), read as 0 or inf'
+                      % ', '.join(lost), RuntimeWarning, stacklevel=3)
     return out
 
 

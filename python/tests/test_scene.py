@@ -182,3 +182,44 @@ def test_bounds():
     del sc['run']['stop_H']
     with pytest.raises(c.SceneError, match='max_rows'):
         c.run_scene(sc)
+
+
+@pytest.mark.parametrize('model,V,Omega,K', [
+    ('discrete', 1e-300, 1e-300, 996), ('discrete', 1e200, 1e200, -664),
+    ('massless', 1e-300, 1e-300, 996), ('smooth', 1e-300, 1e-300, 996)])
+def test_tiny_and_huge_states(model, V, Omega, K, program, tmp_path):
+    """Issue 16: a tiny or huge state runs; run_scene gives the program's
+    columns (a number beyond the doubles as float() reads it, with a
+    RuntimeWarning), and the columns that are in range agree within 4 eps
+    with those of the run with V, Omega times 2^K, scaled back exactly
+    (the program's own test, tools/test-scaled.sh, compares every column,
+    E too, with MPFR)."""
+    def scene(v, om, duration):
+        sc = {'scene': {'model': model},
+              'parameters': {'L': 1} if model == 'smooth'
+              else {'L0': -0.3, 'Delta': 1},
+              'initial': {'V': v, 'Omega': om},
+              'run': {'outputs': 'E,H,theta,tau,V,Omega'}}
+        if model == 'smooth':
+            sc['run']['duration'] = duration
+            sc['run']['samples'] = 4
+        else:
+            sc['run']['collisions'] = 6
+        if model == 'massless':
+            del sc['parameters']['Delta']
+        return sc
+    a = scene(V, Omega, 1e9)
+    path = tmp_path / 'a.ini'
+    path.write_text(c.scene.to_ini(a))
+    header, rows = program_csv(program, str(path))
+    with pytest.warns(RuntimeWarning, match='E'):
+        cols = c.run_scene(a)
+    check_same(cols, header, rows)
+    b = c.run_scene(scene(math.ldexp(V, K), math.ldexp(Omega, K),
+                          math.ldexp(1e9, -K)))
+    degree = {'V': 1, 'Omega': 1, 'H': 1, 'E': 2, 'tau': -1}
+    for name in ('H', 'theta', 'tau', 'V', 'Omega'):
+        want = np.ldexp(b[name], -degree.get(name, 0) * K)
+        # 4 eps, as tools/test-scaled.sh (the two runs round alike)
+        assert np.allclose(cols[name], want, rtol=4 * 2.0 ** -52, atol=0), \
+            name
