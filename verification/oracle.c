@@ -663,6 +663,7 @@ typedef struct
 {
   int reversal;
   arb_t E, H, dth, dta, Dc;     /* Dc: the turning point, if reversal */
+  arb_t Vm;                     /* V- just before the next collision */
 } sref;
 
 /* One step of the return map from the post-collision state (dir, E, H). */
@@ -755,7 +756,21 @@ step_oracle (double L0, double Delta, int dir, const arb_t E, const arb_t H,
     collide (lf, ls, E, H, Ep, Hp, hp);
   arb_set_round (r->E, Ep, prec);
   arb_set_round (r->H, Hp, prec);
-  if (!(accurate (r->E) && accurate (r->H))
+  /* V- at the end the peg leaves (the start end after a reversal), in the
+     direction of the motion there: V-^2 = (2E (1 + lm^2) - H^2)/(1 + lm^2),
+     whose numerator is formed as a difference of exact products (it is
+     V+^2 (1 + l0^2) exactly after a reversal) */
+  {
+    const arb_struct *lm = r->reversal ? ls : lf;
+    arb_sqr (m, lm, hp);
+    arb_add_ui (m, m, 1, hp);
+    arb_mul (t, m, E2, hp);
+    arb_submul (t, H, H, hp);
+    arb_div (t, t, m, hp);
+    arb_sqrt (t, t, hp);
+    arb_mul_si (r->Vm, t, r->reversal ? -dir : dir, prec);
+  }
+  if (!(accurate (r->E) && accurate (r->H) && accurate (r->Vm))
       || (r->reversal && !accurate (r->Dc)))
     rc = ORC_INACC;
 done:
@@ -853,7 +868,8 @@ ulp_err (double lib, const arb_t ref)
 }
 
 enum
-{ Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2, NQ };
+{ Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_VM, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2,
+  NQ };
 enum
 { S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, S_SMALL, S_XL, S_TINYH,
   S_ULPREV, S_ULPSPIN, NS };
@@ -867,6 +883,7 @@ static const char *const qname[NQ] = {
   "(B.3)/(B.4) next momentum H'",
   "(B.3)/(B.4) next heading theta'",
   "(B.3)/(B.4) next time tau'",
+  "(B.1)/(B.3)/(B.4) speed V- before the next collision",
   "(B.4)/(B.5) turning point Dc",
   "(3.10) sigma4",
   "(4.1) xi4",
@@ -881,6 +898,8 @@ static const char *const qtexi[NQ] = {
   "(B.3)/(B.4): next momentum @math{H'}, @code{chaplygin_discrete_step}",
   "(B.3)/(B.4): next heading @math{theta'}, @code{chaplygin_discrete_step}",
   "(B.3)/(B.4): next time @math{tau'}, @code{chaplygin_discrete_step}",
+  "(B.1)/(B.3)/(B.4): speed @math{V^-} before the next collision, "
+    "@code{chaplygin_discrete_step}",
   "(B.4)/(B.5): turning point @math{D_c} of a reversing segment, "
     "@code{chaplygin_discrete_step}",
   "(3.10): @math{sigma_4}, @code{chaplygin_discrete_sigma4}",
@@ -898,6 +917,7 @@ static const char *const qanchor[NQ] = {
   "Accuracy of the next momentum",
   "Accuracy of the next heading",
   "Accuracy of the next time",
+  "Accuracy of the speed before the collision",
   "Accuracy of the turning point",
   "Accuracy of sigma4",
   "Accuracy of xi4",
@@ -1686,14 +1706,14 @@ static void
 sref_init (sref *r)
 {
   arb_init (r->E), arb_init (r->H), arb_init (r->dth), arb_init (r->dta);
-  arb_init (r->Dc);
+  arb_init (r->Dc), arb_init (r->Vm);
 }
 
 static void
 sref_clear (sref *r)
 {
   arb_clear (r->E), arb_clear (r->H), arb_clear (r->dth), arb_clear (r->dta);
-  arb_clear (r->Dc);
+  arb_clear (r->Dc), arb_clear (r->Vm);
 }
 
 static int
@@ -1833,7 +1853,7 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                       "E %a, H %a, theta %a, tau %a)", L0, Delta, s->dir, s->E,
                       s->H, s->theta, s->tau);
             /* condition numbers with respect to E and H */
-            double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0;
+            double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0, kVm = 0;
             for (int j = 0; j < 2; j++)
               {
                 /* a step that changes the classification (a turning point
@@ -1862,6 +1882,7 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                 kH += kappa_fd (r1.H, r.H, d);
                 kth += kappa_fd (r1.dth, r.dth, d);
                 kta += kappa_fd (r1.dta, r.dta, d);
+                kVm += kappa_fd (r1.Vm, r.Vm, d);
                 if (r.reversal)
                   kDc += kappa_fd (r1.Dc, r.Dc, d);
               }
@@ -1872,6 +1893,8 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                     kq);
             kq = sum_ref (y, s->tau, r.dta, kta);
             record (me, Q_TAU, set, ulp_err (out.tau, y), tol_ulps (me, kq), kq);
+            record (me, Q_VM, set, ulp_err (ev.Vminus, r.Vm),
+                    tol_ulps (me, kVm), kVm);
             if (r.reversal)
               record (me, Q_DC, set, ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc),
                       kDc);
