@@ -1485,15 +1485,151 @@ expect_refusal (int me, int r, int untouched, const char *what, double L0,
 
 static const double SENTINEL = -0x1.5e17e1p-3;
 
+/* One leg of chaplygin_discrete_heading (L0, D0, V0, Om0, D), with
+   s (D - D0) > 0 for s = sgn V0, of data set SET (slot (L0, Delta)): the
+   oracle, the condition number and every method. */
+static void
+leg_point (int set, double L0, double Delta, double D0, double V0,
+           double Om0, double D)
+{
+  arb_ptr x = _arb_vec_init (5), y = _arb_vec_init (5);
+  arb_t th, ta, th1, ta1, E2, H, l0, t, v2, qrel;
+  arb_init (th), arb_init (ta), arb_init (th1), arb_init (ta1);
+  arb_init (E2), arb_init (H), arb_init (l0), arb_init (t);
+  arb_init (v2), arb_init (qrel);
+  const slong hp = HP (PREC_MAX);
+  /* l0, H = (1 + l0^2) Omega0 and 2E = V0^2 + (1 + l0^2) Omega0^2, exact */
+  arb_set_d (l0, L0);
+  arb_set_d (t, D0);
+  arb_add (l0, l0, t, hp);
+  arb_sqr (H, l0, hp);
+  arb_add_ui (H, H, 1, hp);
+  arb_set_d (t, Om0);
+  arb_mul (H, H, t, hp);
+  arb_mul (E2, H, t, hp);
+  arb_set_d (t, V0);
+  arb_addmul (E2, t, t, hp);
+  const int s0 = arf_sgn (arb_midref (l0));
+  int rc, crossing;
+  double kth = 0, kta = 0;
+  n_far_legs += fmax (fabs (L0 + D0), fabs (L0 + D)) > 0x1p500
+    && !beyond_cap (L0, D0, D);
+  if (beyond_cap (L0, D0, D))
+    {
+      for (int me = 0; me < NM; me++)
+        if (use_method[me])
+          {
+            double dth = SENTINEL, dta = SENTINEL;
+            int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D,
+                                                &opt_of[me], &dth, &dta);
+            expect_refusal (me, r, dth == SENTINEL && dta == SENTINEL,
+                            "leg", L0, Delta);
+          }
+      goto done;
+    }
+  arb_set_d (x + 0, L0), arb_set_d (x + 1, D0), arb_set_d (x + 2, V0);
+  arb_set_d (x + 3, Om0), arb_set_d (x + 4, D);
+  rc = leg_eval (x, th, ta, 1);
+  if (rc != ORC_OK)
+    {
+      n_oracle_fail++;
+      printf ("# oracle: leg failed (%d): L0=%a D0=%a V0=%a Omega0=%a "
+              "D=%a\n", rc, L0, D0, V0, Om0, D);
+      goto done;
+    }
+  n_legs++;
+  /* 1 - H^2/(2E): how close the motion is to the spinning condition,
+     for a leg through l = 0 (from l0 to l(D) = L0 + D) */
+  arb_add (t, x + 0, x + 4, hp);
+  crossing = s0 * arf_sgn (arb_midref (t)) <= 0;
+  arb_sqr (qrel, H, hp);
+  arb_div (qrel, qrel, E2, hp);
+  arb_sub_ui (qrel, qrel, 1, hp);
+  arb_neg (qrel, qrel);
+  /* V(D)^2/(2E), exactly: how close the end is to a turning point */
+  arb_add (t, x + 0, x + 4, hp);
+  arb_sqr (t, t, hp);
+  arb_add_ui (t, t, 1, hp);
+  arb_sqr (v2, H, hp);
+  arb_div (v2, v2, t, hp);
+  arb_sub (v2, E2, v2, hp);
+  arb_div (v2, v2, E2, hp);
+  /* condition number with respect to the five inputs */
+  for (int j = 0; j < 5; j++)
+    {
+      /* a step that crosses the turning point is retried the other
+         way, then smaller */
+      double d = FD_STEP;
+      int rk = ORC_BAD;
+      for (int tries = 0; tries < 4 && rk != ORC_OK; tries++)
+        {
+          d = tries == 0 ? FD_STEP : tries == 1 ? -FD_STEP
+            : tries == 2 ? FD_STEP * 0x1p-60 : -FD_STEP * 0x1p-60;
+          _arb_vec_set (y, x, 5);
+          perturbed (y + j, x + j, d);
+          rk = leg_eval (y, th1, ta1, 0);
+        }
+      if (rk == ORC_OK)
+        kth += kappa_fd (th1, th, d), kta += kappa_fd (ta1, ta, d);
+      else
+        {
+          n_oracle_fail++;
+          printf ("# oracle: perturbed leg (input %d) failed: L0=%a "
+                  "D0=%a V0=%a Omega0=%a D=%a\n", j, L0, D0, V0, Om0, D);
+        }
+    }
+  kappa_max[set] = fmax (kappa_max[set], fmax (kth, kta));
+  for (int me = 0; me < NM; me++)
+    {
+      double dth, dta;
+      if (!use_method[me])
+        continue;
+      snprintf (point, sizeof point, "heading (%a, %a, %a, %a, %a)", L0,
+                D0, V0, Om0, D);
+      int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D, &opt_of[me],
+                                          &dth, &dta);
+      if (r == CHAPLYGIN_ESTATE
+          && (mid_d (v2) < 16 * DBL_EPSILON
+              || (crossing && fabs (mid_d (qrel)) < 16 * DBL_EPSILON)))
+        {
+          /* D within rounding (16 eps in V^2/2E) of the turning point,
+             or a leg through l = 0 within rounding (16 eps in
+             1 - H^2/(2E)) of the spinning condition 2E = H^2:
+             rejecting it is the decision for inputs perturbed by a
+             few eps (backward stable); counted, not an error */
+          n_reject_rounding[me]++;
+          continue;
+        }
+      if (r == CHAPLYGIN_ENOCONV && me == M_ODE)
+        {
+          n_ode_declined++;   /* documented: see the ODE method */
+          continue;
+        }
+      if (r != CHAPLYGIN_SUCCESS)
+        {
+          n_lib_fail++;
+          printf ("# %s leg failed (%s): L0=%a Delta=%a D0=%a V0=%a "
+                  "Omega0=%a D=%a\n", mname[me], chaplygin_strerror (r),
+                  L0, Delta, D0, V0, Om0, D);
+          continue;
+        }
+      record (me, Q_LTH, set, ulp_err (dth, th), tol_ulps (me, kth), kth);
+      record (me, Q_LTAU, set, ulp_err (dta, ta), tol_ulps (me, kta), kta);
+    }
+done:
+  _arb_vec_clear (x, 5), _arb_vec_clear (y, 5);
+  arb_clear (th), arb_clear (ta), arb_clear (th1), arb_clear (ta1);
+  arb_clear (E2), arb_clear (H), arb_clear (l0), arb_clear (t);
+  arb_clear (v2), arb_clear (qrel);
+}
+
 /* Legs of (B.2) through chaplygin_discrete_heading. */
 static void
 run_legs (int set, int n, unsigned long long *seed)
 {
-  arb_ptr x = _arb_vec_init (5), y = _arb_vec_init (5);
-  arb_t th, ta, th1, ta1, E2, H, l0, lf, t, m, Dc, v2, qrel;
-  arb_init (th), arb_init (ta), arb_init (th1), arb_init (ta1);
+  arb_t E2, H, l0, lf, t, m, Dc;
   arb_init (E2), arb_init (H), arb_init (l0), arb_init (lf), arb_init (t);
-  arb_init (m), arb_init (Dc), arb_init (v2), arb_init (qrel);
+  arb_init (m), arb_init (Dc);
   const slong hp = HP (PREC_MAX);
   for (int i = 0; i < n; i++)
     {
@@ -1590,116 +1726,10 @@ run_legs (int set, int n, unsigned long long *seed)
         D = D0 + tap_uniform (seed, 0.05, turn ? 0.75 : 0.95) * (mid_d (Dc) - D0);
       if (!(s * (D - D0) > 0))
         continue;
-      n_far_legs += fmax (fabs (L0 + D0), fabs (L0 + D)) > 0x1p500
-        && !beyond_cap (L0, D0, D);
-      if (beyond_cap (L0, D0, D))
-        {
-          for (int me = 0; me < NM; me++)
-            if (use_method[me])
-              {
-                double dth = SENTINEL, dta = SENTINEL;
-                int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D,
-                                                    &opt_of[me], &dth, &dta);
-                expect_refusal (me, r, dth == SENTINEL && dta == SENTINEL,
-                                "leg", L0, Delta);
-              }
-          continue;
-        }
-      arb_set_d (x + 0, L0), arb_set_d (x + 1, D0), arb_set_d (x + 2, V0);
-      arb_set_d (x + 3, Om0), arb_set_d (x + 4, D);
-      int rc = leg_eval (x, th, ta, 1);
-      if (rc != ORC_OK)
-        {
-          n_oracle_fail++;
-          printf ("# oracle: leg failed (%d): L0=%a D0=%a V0=%a Omega0=%a "
-                  "D=%a\n", rc, L0, D0, V0, Om0, D);
-          continue;
-        }
-      n_legs++;
-      /* 1 - H^2/(2E): how close the motion is to the spinning condition,
-         for a leg through l = 0 (from l0 to l(D) = L0 + D) */
-      arb_add (t, x + 0, x + 4, hp);
-      int crossing = s0 * arf_sgn (arb_midref (t)) <= 0;
-      arb_sqr (qrel, H, hp);
-      arb_div (qrel, qrel, E2, hp);
-      arb_sub_ui (qrel, qrel, 1, hp);
-      arb_neg (qrel, qrel);
-      /* V(D)^2/(2E), exactly: how close the end is to a turning point */
-      arb_add (t, x + 0, x + 4, hp);
-      arb_sqr (t, t, hp);
-      arb_add_ui (t, t, 1, hp);
-      arb_sqr (v2, H, hp);
-      arb_div (v2, v2, t, hp);
-      arb_sub (v2, E2, v2, hp);
-      arb_div (v2, v2, E2, hp);
-      /* condition number with respect to the five inputs */
-      double kth = 0, kta = 0;
-      for (int j = 0; j < 5; j++)
-        {
-          /* a step that crosses the turning point is retried the other
-             way, then smaller */
-          double d = FD_STEP;
-          int rk = ORC_BAD;
-          for (int tries = 0; tries < 4 && rk != ORC_OK; tries++)
-            {
-              d = tries == 0 ? FD_STEP : tries == 1 ? -FD_STEP
-                : tries == 2 ? FD_STEP * 0x1p-60 : -FD_STEP * 0x1p-60;
-              _arb_vec_set (y, x, 5);
-              perturbed (y + j, x + j, d);
-              rk = leg_eval (y, th1, ta1, 0);
-            }
-          if (rk == ORC_OK)
-            kth += kappa_fd (th1, th, d), kta += kappa_fd (ta1, ta, d);
-          else
-            {
-              n_oracle_fail++;
-              printf ("# oracle: perturbed leg (input %d) failed: L0=%a "
-                      "D0=%a V0=%a Omega0=%a D=%a\n", j, L0, D0, V0, Om0, D);
-            }
-        }
-      kappa_max[set] = fmax (kappa_max[set], fmax (kth, kta));
-      for (int me = 0; me < NM; me++)
-        {
-          double dth, dta;
-          if (!use_method[me])
-            continue;
-          snprintf (point, sizeof point, "heading (%a, %a, %a, %a, %a)", L0,
-                    D0, V0, Om0, D);
-          int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D, &opt_of[me],
-                                              &dth, &dta);
-          if (r == CHAPLYGIN_ESTATE
-              && (mid_d (v2) < 16 * DBL_EPSILON
-                  || (crossing && fabs (mid_d (qrel)) < 16 * DBL_EPSILON)))
-            {
-              /* D within rounding (16 eps in V^2/2E) of the turning point,
-                 or a leg through l = 0 within rounding (16 eps in
-                 1 - H^2/(2E)) of the spinning condition 2E = H^2:
-                 rejecting it is the decision for inputs perturbed by a
-                 few eps (backward stable); counted, not an error */
-              n_reject_rounding[me]++;
-              continue;
-            }
-          if (r == CHAPLYGIN_ENOCONV && me == M_ODE)
-            {
-              n_ode_declined++;   /* documented: see the ODE method */
-              continue;
-            }
-          if (r != CHAPLYGIN_SUCCESS)
-            {
-              n_lib_fail++;
-              printf ("# %s leg failed (%s): L0=%a Delta=%a D0=%a V0=%a "
-                      "Omega0=%a D=%a\n", mname[me], chaplygin_strerror (r),
-                      L0, Delta, D0, V0, Om0, D);
-              continue;
-            }
-          record (me, Q_LTH, set, ulp_err (dth, th), tol_ulps (me, kth), kth);
-          record (me, Q_LTAU, set, ulp_err (dta, ta), tol_ulps (me, kta), kta);
-        }
+      leg_point (set, L0, Delta, D0, V0, Om0, D);
     }
-  _arb_vec_clear (x, 5), _arb_vec_clear (y, 5);
-  arb_clear (th), arb_clear (ta), arb_clear (th1), arb_clear (ta1);
   arb_clear (E2), arb_clear (H), arb_clear (l0), arb_clear (lf), arb_clear (t);
-  arb_clear (m), arb_clear (Dc), arb_clear (v2), arb_clear (qrel);
+  arb_clear (m), arb_clear (Dc);
 }
 
 static void
