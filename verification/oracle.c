@@ -872,7 +872,7 @@ enum
   NQ };
 enum
 { S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, S_SMALL, S_XL, S_TINYH,
-  S_ULPREV, S_ULPSPIN, NS };
+  S_ULPREV, S_ULPSPIN, S_SLOW, S_TINYV, S_SLOWNEAR, NS };
 enum
 { M_CF, M_QUAD, M_ODE, NM };
 
@@ -928,14 +928,16 @@ static const char *const qanchor[NQ] = {
 static const char *const sname[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny Delta", "huge Delta",
   "large |L0|", "tiny |L0|", "extreme |L0|", "tiny H", "reversal at an ulp",
-  "spinning at an ulp"
+  "spinning at an ulp", "slow start", "slow start, tiny V0",
+  "slow start near l = 0"
 };
 
 static const char *const stexi[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny @math{Delta}",
   "huge @math{Delta}", "large @math{|L_0|}", "tiny @math{|L_0|}",
   "extreme @math{|L_0|}", "tiny @math{H}", "reversal at an ulp",
-  "spinning at an ulp"
+  "spinning at an ulp", "slow start", "slow start, tiny @math{V_0}",
+  "slow start near @math{l = 0}"
 };
 
 static const char *const mname[NM] = {
@@ -951,13 +953,21 @@ ill (int set)
     || set == S_ULPSPIN;
 }
 
+/* The slow-start sets: the first step from a phase state (run_slow), not
+   from (E, H). */
+static int
+slow_set (int set)
+{
+  return set == S_SLOW || set == S_TINYV || set == S_SLOWNEAR;
+}
+
 /* The sets whose parameters (L0, Delta) are those of another set: only
    their states are new, and the parameter quantities (sigma4, xi4, C1,
    C2) are not run on them. */
 static int
 state_set (int set)
 {
-  return ill (set) || set == S_TINYH;
+  return ill (set) || set == S_TINYH || slow_set (set);
 }
 
 typedef struct
@@ -1937,6 +1947,284 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
   arb_clear (Ea), arb_clear (Ha), arb_clear (t), arb_clear (y);
 }
 
+/* ------------------------------------------------------------------ */
+/* Slow starts: the first segment from an exact phase state            */
+/* ------------------------------------------------------------------ */
+
+/* E and H of the post-collision phase state {D0, V0, Omega0} of the slot
+   (L0, Delta), x = {V0, Omega0} (balls, so that they can be perturbed),
+   l0 = L0 + D0:
+     2E = V0^2 + (1 + l0^2) Omega0^2   (3.3),
+      H = (1 + l0^2) Omega0            (3.4),
+   in exact arithmetic (ARF_PREC_EXACT: the operands are exact, and the
+   results need at most a few thousand bits, V0^2 = 2^-2044 beside
+   (1 + l0^2) Omega0^2 for V0 = DBL_MIN), where
+   chaplygin_discrete_state_from_phase must round them to doubles.  0, or
+   -1 if a result is not exact (never expected). */
+static int
+phase_EH (double L0, double D0, arb_srcptr x, arb_t E, arb_t H)
+{
+  arb_t l0, a, t;
+  arb_init (l0), arb_init (a), arb_init (t);
+  arb_set_d (l0, L0);
+  arb_set_d (t, D0);
+  arb_add (l0, l0, t, ARF_PREC_EXACT);
+  arb_sqr (a, l0, ARF_PREC_EXACT);
+  arb_add_ui (a, a, 1, ARF_PREC_EXACT);
+  arb_mul (H, a, x + 1, ARF_PREC_EXACT);
+  arb_sqr (t, x + 0, ARF_PREC_EXACT);
+  arb_addmul (t, H, x + 1, ARF_PREC_EXACT);
+  arb_mul_2exp_si (E, t, -1);
+  int ok = arb_is_exact (E) && arb_is_exact (H);
+  arb_clear (l0), arb_clear (a), arb_clear (t);
+  return ok ? 0 : -1;
+}
+
+/* The first step of the return map from the exact phase state: the
+   oracle's step (step_oracle: the reversal decided exactly, the legs
+   integrated after the substitution that removes the turning point's
+   singularity, the collision by conservation of angular momentum about
+   the new peg) applied to the exact E and H of phase_EH.  Nothing here
+   is rounded to a double before the integrals: the start's V+^2 =
+   (2E (1 + l0^2) - H^2)/(1 + l0^2) is V0^2 exactly, however small. */
+static int
+slow_eval (double L0, double Delta, int dir, arb_srcptr x, sref *r,
+           int with_legendre)
+{
+  arb_t E, H;
+  arb_init (E), arb_init (H);
+  int rc = phase_EH (L0, dir > 0 ? 0.0 : Delta, x, E, H) ? ORC_INACC
+    : step_eval (L0, Delta, dir, E, H, r, with_legendre);
+  arb_clear (E), arb_clear (H);
+  return rc;
+}
+
+static long n_slow, n_slow_reversals, n_slow_misclassified, n_slow_in[NS];
+static char slow_misclassified_first[240];
+
+/* One slow start {D0, V0, theta = 0, Omega0} (D0 = 0 for dir > 0, Delta
+   for dir < 0): the library's chaplygin_discrete_state_from_phase followed
+   by chaplygin_discrete_step (heading and time) by every method, against
+   slow_eval; then the leg of chaplygin_discrete_heading from the same
+   state to the far end (no reversal) or half way to the turning point (a
+   reversal, where a double lies between).
+   Condition numbers: theta', tau', V- and D_c with respect to V0 and
+   Omega0, the inputs they are determined by (the library forms the first
+   three from the state's V, as it documents; from (E, H) alone they would
+   be ill-conditioned); E' and H' with respect to E and H, from which the
+   library forms them by design (lib/map.c: "E' and H' from E and H as
+   ever"), as in the other step rows: the half-ulp rounding of E and H by
+   chaplygin_discrete_state_from_phase is within the rule's backward
+   error. */
+static void
+slow_point (int set, double L0, double Delta, int dir, double V0, double Om0)
+{
+  const double D0 = dir > 0 ? 0.0 : Delta;
+  arb_ptr x = _arb_vec_init (2), y = _arb_vec_init (2);
+  arb_t E, H, Ep, Hp;
+  sref r, r1;
+  chaplygin_discrete sys;
+  int rc;
+  double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0, kVm = 0, D;
+  arb_init (E), arb_init (H), arb_init (Ep), arb_init (Hp);
+  sref_init (&r), sref_init (&r1);
+  arb_set_d (x + 0, V0);
+  arb_set_d (x + 1, Om0);
+  snprintf (point, sizeof point, "slow start (L0 %a, Delta %a, dir %d, V0 %a, "
+            "Omega0 %a)", L0, Delta, dir, V0, Om0);
+  if (chaplygin_discrete_init (&sys, L0, Delta) != CHAPLYGIN_SUCCESS)
+    {
+      n_lib_fail++;
+      printf ("# chaplygin_discrete_init failed at %s\n", point);
+      goto done;
+    }
+  rc = slow_eval (L0, Delta, dir, x, &r, 1);
+  if (rc != ORC_OK || phase_EH (L0, D0, x, E, H))
+    {
+      n_oracle_fail++;
+      printf ("# oracle: slow start failed (%d) at %s\n", rc, point);
+      goto done;
+    }
+  n_slow++, n_slow_reversals += r.reversal, n_slow_in[set]++;
+  /* with respect to V0, Omega0 (j = 0, 1) and E, H (j = 2, 3); a step that
+     changes the classification is taken the other way */
+  for (int j = 0; j < 4; j++)
+    {
+      double d = FD_STEP;
+      int rk = ORC_BAD;
+      for (int tries = 0; tries < 2; tries++)
+        {
+          d = tries ? -FD_STEP : FD_STEP;
+          if (j < 2)
+            {
+              _arb_vec_set (y, x, 2);
+              perturbed (y + j, x + j, d);
+              rk = slow_eval (L0, Delta, dir, y, &r1, 0);
+            }
+          else
+            {
+              arb_set (Ep, E);
+              arb_set (Hp, H);
+              perturbed (j == 2 ? Ep : Hp, j == 2 ? E : H, d);
+              rk = step_eval (L0, Delta, dir, Ep, Hp, &r1, 0);
+            }
+          if (rk == ORC_OK && r1.reversal == r.reversal)
+            break;
+          rk = ORC_BAD;
+        }
+      if (rk != ORC_OK)
+        {
+          n_oracle_fail++;
+          printf ("# oracle: perturbed slow start (input %d) failed at %s\n",
+                  j, point);
+          continue;
+        }
+      if (j < 2)
+        {
+          kth += kappa_fd (r1.dth, r.dth, d);
+          kta += kappa_fd (r1.dta, r.dta, d);
+          kVm += kappa_fd (r1.Vm, r.Vm, d);
+          if (r.reversal)
+            kDc += kappa_fd (r1.Dc, r.Dc, d);
+        }
+      else
+        {
+          kE += kappa_fd (r1.E, r.E, d);
+          kH += kappa_fd (r1.H, r.H, d);
+        }
+    }
+  kappa_max[set] = fmax (kappa_max[set], fmax (fmax (kE, kH), fmax (kth, kta)));
+  for (int me = 0; me < NM; me++)
+    {
+      const double q[4] = { D0, V0, 0.0, Om0 };
+      chaplygin_discrete_state in, out;
+      chaplygin_discrete_event ev;
+      if (!use_method[me])
+        continue;
+      int rl = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &in);
+      if (rl == CHAPLYGIN_SUCCESS)
+        rl = chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_THETA
+                                      | CHAPLYGIN_WANT_TAU, &opt_of[me], &out,
+                                      &ev);
+      if (rl == CHAPLYGIN_ENOCONV && me == M_ODE)
+        {
+          n_ode_declined++;
+          continue;
+        }
+      if (rl != CHAPLYGIN_SUCCESS)
+        {
+          n_lib_fail++;
+          printf ("# %s slow start failed (%s) at %s\n", mname[me],
+                  chaplygin_strerror (rl), point);
+          continue;
+        }
+      if (ev.reversal != r.reversal
+          || out.dir != (r.reversal ? -dir : dir))
+        {
+          /* near l = 0 a known failure (the TODO check of main) */
+          if (set == S_SLOWNEAR)
+            {
+              if (n_slow_misclassified++ == 0)
+                snprintf (slow_misclassified_first,
+                          sizeof slow_misclassified_first, "%s, %s", mname[me],
+                          point);
+            }
+          else
+            n_mismatch++;
+          printf ("# %s slow start: reversal %d, oracle %d at %s\n", mname[me],
+                  ev.reversal, r.reversal, point);
+          continue;
+        }
+      record (me, Q_E, set, ulp_err (out.E, r.E), tol_ulps (me, kE), kE);
+      record (me, Q_H, set, ulp_err (out.H, r.H), tol_ulps (me, kH), kH);
+      record (me, Q_THETA, set, ulp_err (out.theta, r.dth), tol_ulps (me, kth),
+              kth);
+      record (me, Q_TAU, set, ulp_err (out.tau, r.dta), tol_ulps (me, kta), kta);
+      record (me, Q_VM, set, ulp_err (ev.Vminus, r.Vm), tol_ulps (me, kVm),
+              kVm);
+      if (r.reversal)
+        record (me, Q_DC, set, ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc), kDc);
+    }
+  /* the leg */
+  D = r.reversal ? D0 + 0.5 * (mid_d (r.Dc) - D0) : Delta - D0;
+  if (dir * (D - D0) > 0)
+    leg_point (set, L0, Delta, D0, V0, Om0, D);
+done:
+  _arb_vec_clear (x, 2), _arb_vec_clear (y, 2);
+  arb_clear (E), arb_clear (H), arb_clear (Ep), arb_clear (Hp);
+  sref_clear (&r), sref_clear (&r1);
+}
+
+/* The slow-start sets.  Slots (L0, Delta) and Omega0: fixed ones (the
+   mass centre inside the slot, where both directions reverse, once with
+   1 + L0 (L0 + Delta) = 0.01, where the collision after the reversal
+   takes all but 1e-4 of the energy; slots on either side of it, where one
+   direction reverses and the other moves away from l = 0; a large |l0|;
+   starts at |l0| = 3.3e-5, 1e-4, 0.3, 1e-12 and 2^-29), and at level 2 as
+   many again five times drawn as for ordinary and twice as for tiny |L0|
+   (Omega0 = +-w/sqrt(1 + l0^2), w in [0.05, 2]); both directions from
+   each, the start l0 = L0 + D0 deciding the set: |l0| >= 1/2 for slow
+   start and tiny V0, |l0| < 1/2 for near l = 0.  Speeds (signed dir):
+     slow start:   |V0| = r |l0 Omega0|, r = f 10^-k, k = 3 .. 12, f in
+                   [1, 10) (a draw per rung);
+     tiny V0:      |V0| = f 10^-k, k = 20, 50, 100, 200, 300, and DBL_MIN
+                   exactly and its successor;
+     near l = 0:   both ladders. */
+static void
+run_slow (int set, int level, unsigned long long *seed)
+{
+  static const struct
+  {
+    double L0, Delta, Om0;
+  } fixed[] = {
+    { -0.6180339887498949, 1.2345678901234567, 1.0471975511965976 },
+    { 0.7071067811865476, 0.41421356237309515, -0.8660254037844386 },
+    { -2.385, 0.917, 0.3183098861837907 },
+    { 1234.5678, 2.718281828459045, -0.000321 },
+    { -0.9, 2.0, 0.7071067811865476 },
+    { 3.3e-5, 0.5772156649015329, 1.618033988749895 },
+    { -1.0e-4, 0.6931471805599453, -2.302585092994046 },
+    { -0.3, 1.0, 1.1 },
+    { -1e-12, 0.7, 1.3 },
+    { -0.75, 0.75 - 0x1p-29, -0.45 }
+  };
+  static const int tiny_k[] = { 20, 50, 100, 200, 300 };
+  const int nfixed = (int) (sizeof fixed / sizeof fixed[0]);
+  const int ngeo = nfixed + (level == 2 ? 7 * nfixed : 0);
+  for (int g = 0; g < ngeo; g++)
+    {
+      double L0, Delta, Om0 = 0;
+      if (g < nfixed)
+        L0 = fixed[g].L0, Delta = fixed[g].Delta;
+      else
+        gen_params (g < 6 * nfixed ? S_ORD : S_SMALL, seed, &L0, &Delta);
+      for (int dir = 1; dir >= -1; dir -= 2)
+        {
+          const double l0 = L0 + (dir > 0 ? 0.0 : Delta);
+          Om0 = g < nfixed ? fixed[g].Om0
+            : rsign (seed) * tap_uniform (seed, 0.05, 2) / sqrt (1 + l0 * l0);
+          if ((fabs (l0) < 0.5) != (set == S_SLOWNEAR) || l0 == 0)
+            continue;
+          if (set != S_TINYV)
+            for (int k = 3; k <= 12; k++)
+              {
+                double V0 = dir * tap_uniform (seed, 1, 10) * pow (10.0, -k)
+                  * fabs (l0 * Om0);
+                slow_point (set, L0, Delta, dir, V0, Om0);
+              }
+          if (set != S_SLOW)
+            {
+              for (int i = 0; i < 5; i++)
+                slow_point (set, L0, Delta, dir, dir * tap_uniform (seed, 1, 10)
+                            * pow (10.0, -tiny_k[i]), Om0);
+              slow_point (set, L0, Delta, dir, dir * DBL_MIN, Om0);
+              slow_point (set, L0, Delta, dir, dir * nextafter (DBL_MIN, 1.0),
+                          Om0);
+            }
+        }
+    }
+}
+
 /* A parameter function failed at the point of the report: counted, and
    the first few printed. */
 static void
@@ -2051,6 +2339,76 @@ quantity_sets (int q, int set)
   return !(q >= Q_SIG && state_set (set));
 }
 
+/* Known failures of the library, found by the slow-start sets (issue 16):
+   their checks are TAP TODO items (automake: XFAIL), reported with the
+   reason, and a TODO item that passes (XPASS) fails the program, so that
+   the list is kept to what still fails.  Each fails on the fixed points
+   of run_slow (level 1 and 2 alike).  NULL: not a known failure. */
+static const char *const why_near
+  = "issue 16: the step forms 1 - h^2 from the rounded E and H (absolute "
+  "error ~eps) although the state knows V+: a slow start near l = 0 "
+  "(1 - h^2 ~ -l0^2) loses ~eps/l0^2 relative in theta' and tau', and "
+  "for |l0| below ~1e-8 even the reversal decision";
+static const char *const why_dc
+  = "issue 16: the event's D_c is formed from E and H "
+  "(sqrt(h^2 - 1) - L0), not from V+: a slow reversal from D+ = 0 turns "
+  "within ~(V+/(l0 Omega+))^2 |l0|/2 of the start, and its D_c is off by "
+  "~eps |l0| absolute (0 or -3e-16 where it is 1.5e-19)";
+static const char *const why_subnormal
+  = "issue 16: step_turn_at_start forms V+/(E l0), subnormal for V+ near "
+  "DBL_MIN when E |l0| > 1 (up to 7 bits lost at |l0| = 1237)";
+static const char *const why_ode
+  = "issue 16: CHAPLYGIN_ODE returns success with |V-| ~ 4e-34 and times "
+  "to match, whatever V+ below ~1e-33 (|l0 Omega+| of order 1), and "
+  "CHAPLYGIN_ENOCONV below ~1e-200";
+
+static const char *
+known_failure (int me, int q, int set)
+{
+  if (!slow_set (set))
+    return NULL;
+  if (q == Q_DC)
+    return why_dc;
+  if (me == M_ODE && set != S_SLOW
+      && (q == Q_THETA || q == Q_TAU || q == Q_VM))
+    return why_ode;
+  if (set == S_SLOWNEAR && me != M_ODE && (q == Q_THETA || q == Q_TAU))
+    return why_near;
+  if (set == S_TINYV && me == M_CF && (q == Q_THETA || q == Q_TAU))
+    return why_subnormal;
+  return NULL;
+}
+
+/* tap_check for a known failure (why != NULL): "# TODO why" after the
+   figures; a pass is reported and fails the program. */
+static void tap_check_todo (int ok, double worst, double tol, const char *why,
+                            const char *fmt, ...)
+  __attribute__ ((format (printf, 5, 6)));
+
+static void
+tap_check_todo (int ok, double worst, double tol, const char *why,
+                const char *fmt, ...)
+{
+  va_list ap;
+  tap_n++;
+  if (!ok && !why)
+    tap_failed = 1;
+  printf ("%s %d - ", ok ? "ok" : "not ok", tap_n);
+  va_start (ap, fmt);
+  vprintf (fmt, ap);
+  va_end (ap);
+  printf (": worst %.3g, tolerance %.3g", worst, tol);
+  if (why)
+    printf (" # TODO %s", why);
+  printf ("\n");
+  if (ok && why)
+    {
+      tap_failed = 1;
+      printf ("# a known failure passed (XPASS): remove it from "
+              "known_failure\n");
+    }
+}
+
 static void
 tap_report (int me)
 {
@@ -2062,9 +2420,10 @@ tap_report (int me)
           continue;
         /* every closed-form table entry must have points, except D_c where
            a set may happen to have no reversal */
-        tap_check ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio, 1.0,
+        tap_check_todo ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio,
+                   1.0, known_failure (me, q, s),
                    "%s, %s, %s: %ld points (%ld with kappa > 2, max kappa "
-                   "%.3g), max %.3g ulps, mean %.2f; error / %s ulps",
+                   "%.3g), max %.3g ulps, mean %.3g; error / %s ulps",
                    mname[me], qname[q], sname[s], x->n, x->nill, x->kmax,
                    x->max, x->n ? x->sum / x->n : 0.0,
                    me == M_CF ? "max(16, 8 kappa)" : "(20 tol/eps (1 + kappa))");
@@ -2428,11 +2787,20 @@ main (int argc, char **argv)
         continue;
       unsigned long long seed = 0x5eed0ac1eULL + 7919ULL * (unsigned) set;
       set_ran[set] = 1;
-      double a = now ();
-      run_legs (set, nl, &seed);
-      double b = now ();
-      run_steps (set, ill (set) ? 2 * no : no, ill (set) ? 1 : 4, &seed);
-      double c = now ();
+      double a = now (), b, c;
+      if (slow_set (set))
+        {
+          b = now ();
+          run_slow (set, level, &seed);
+          c = now ();
+        }
+      else
+        {
+          run_legs (set, nl, &seed);
+          b = now ();
+          run_steps (set, ill (set) ? 2 * no : no, ill (set) ? 1 : 4, &seed);
+          c = now ();
+        }
       if (!state_set (set))
         run_params (set, np, &seed);
       double d = now ();
@@ -2442,9 +2810,9 @@ main (int argc, char **argv)
     }
   double total = now () - t0;
   printf ("# level %d: %ld legs (%ld to turning points), %ld steps (%ld "
-          "reversals), %ld parameter points, %ld integrals, %.1f s\n", level,
-          n_legs, n_turning_legs, n_steps, n_reversals, n_params, n_integrals,
-          total);
+          "reversals), %ld slow starts (%ld reversals), %ld parameter points, "
+          "%ld integrals, %.1f s\n", level, n_legs, n_turning_legs, n_steps,
+          n_reversals, n_slow, n_slow_reversals, n_params, n_integrals, total);
 
   n_oracle_fail += n_fd_inaccurate;
   tap_check (n_oracle_fail == 0, n_oracle_fail, 0,
@@ -2474,6 +2842,14 @@ main (int argc, char **argv)
              "reversal flags and directions as the oracle decides them exactly; "
              "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
              n_spin_ok);
+  if (set_ran[S_SLOWNEAR])
+    tap_check_todo (n_slow_misclassified == 0, (double) n_slow_misclassified,
+                    0, why_near, "slow starts near l = 0: reversal flags as "
+                    "the oracle decides them exactly (%ld steps by the three "
+                    "methods from %ld starts misclassified%s%s)",
+                    n_slow_misclassified, n_slow_in[S_SLOWNEAR],
+                    n_slow_misclassified ? "; the first: " : "",
+                    slow_misclassified_first);
   if (use_method[M_ODE])
     {
       tap_check (n_f2 == 0, (double) n_f2, 0,
