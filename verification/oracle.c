@@ -988,11 +988,20 @@ static long n_f2;
 static char f2_first[300];
 static int set_ran[NS];         /* the sets run (all but with --set) */
 
-/* One comparison: error ERR (ulps) against its tolerance TOL (ulps). */
+/* Points of known failures of the library (found by the slow-start sets,
+   issue 16), kept out of the rows of st and checked as TAP TODO items
+   (see known_failure): D_c of a slow reversal; the closed form's theta'
+   and tau' of a slow start whose V+/(E |l0|) is below the normal
+   doubles. */
+enum
+{ KF_DC, KF_SUBNORMAL, NKF };
+static stat_t st_known[NKF];
+
+/* One comparison added to X: error ERR (ulps) against its tolerance TOL
+   (ulps). */
 static void
-record (int m, int q, int set, double err, double tol, double kappa)
+stat_add (stat_t *x, double err, double tol, double kappa)
 {
-  stat_t *x = &st[m][q][set];
   if (!(err >= 0))
     err = INFINITY;
   x->n++;
@@ -1006,6 +1015,12 @@ record (int m, int q, int set, double err, double tol, double kappa)
     }
   x->kmax = fmax (x->kmax, kappa);
   x->nill += kappa > 2;
+}
+
+static void
+record (int m, int q, int set, double err, double tol, double kappa)
+{
+  stat_add (&st[m][q][set], err, tol, kappa);
 }
 
 /* ------------------------------------------------------------------ */
@@ -2135,15 +2150,23 @@ slow_point (int set, double L0, double Delta, int dir, double V0, double Om0)
                   ev.reversal, r.reversal, point);
           continue;
         }
+      snprintf (point, sizeof point, "%s slow start (L0 %a, Delta %a, dir "
+                "%d, V0 %a, Omega0 %a)", mname[me], L0, Delta, dir, V0, Om0);
       record (me, Q_E, set, ulp_err (out.E, r.E), tol_ulps (me, kE), kE);
       record (me, Q_H, set, ulp_err (out.H, r.H), tol_ulps (me, kH), kH);
-      record (me, Q_THETA, set, ulp_err (out.theta, r.dth), tol_ulps (me, kth),
-              kth);
-      record (me, Q_TAU, set, ulp_err (out.tau, r.dta), tol_ulps (me, kta), kta);
+      /* the known failure KF_SUBNORMAL: V+/(E |l0|) (in.E: the library's
+         E) below the normal doubles */
+      stat_t *xth = &st[me][Q_THETA][set], *xta = &st[me][Q_TAU][set];
+      if (me == M_CF && fabs (V0) / (in.E * fabs (L0 + D0)) < DBL_MIN)
+        xth = xta = &st_known[KF_SUBNORMAL];
+      stat_add (xth, ulp_err (out.theta, r.dth), tol_ulps (me, kth), kth);
+      stat_add (xta, ulp_err (out.tau, r.dta), tol_ulps (me, kta), kta);
       record (me, Q_VM, set, ulp_err (ev.Vminus, r.Vm), tol_ulps (me, kVm),
               kVm);
+      /* the known failure KF_DC: D_c of a slow reversal */
       if (r.reversal)
-        record (me, Q_DC, set, ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc), kDc);
+        stat_add (&st_known[KF_DC], ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc),
+                  kDc);
     }
   /* the leg */
   D = r.reversal ? D0 + 0.5 * (mid_d (r.Dc) - D0) : Delta - D0;
@@ -2350,10 +2373,11 @@ static const char *const why_near
   "(1 - h^2 ~ -l0^2) loses ~eps/l0^2 relative in theta' and tau', and "
   "for |l0| below ~1e-8 even the reversal decision";
 static const char *const why_dc
-  = "issue 16: the event's D_c is formed from E and H "
-  "(sqrt(h^2 - 1) - L0), not from V+: a slow reversal from D+ = 0 turns "
-  "within ~(V+/(l0 Omega+))^2 |l0|/2 of the start, and its D_c is off by "
-  "~eps |l0| absolute (0 or -3e-16 where it is 1.5e-19)";
+  = "issue 16: the event's D_c is formed from E and H as "
+  "sgn(l0) sqrt(h^2 - 1) - L0, not from V+: a slow reversal turns within "
+  "~(V+/(l0 Omega+))^2 |l0|/2 of the start, and that form's absolute "
+  "error ~eps |l0| leaves no relative accuracy from D+ = 0 (0 or -3e-16 "
+  "where D_c = 1.5e-19) and ~|l0|/D_c ulps from D+ = Delta";
 static const char *const why_subnormal
   = "issue 16: step_turn_at_start forms V+/(E l0), subnormal for V+ near "
   "DBL_MIN when E |l0| > 1 (up to 7 bits lost at |l0| = 1237)";
@@ -2362,20 +2386,23 @@ static const char *const why_ode
   "to match, whatever V+ below ~1e-33 (|l0 Omega+| of order 1), and "
   "CHAPLYGIN_ENOCONV below ~1e-200";
 
+static const char *const why_known[NKF] = { why_dc, why_subnormal };
+static const char *const known_what[NKF] = {
+  "(B.4)/(B.5) turning point Dc of slow reversals (all slow sets, every "
+    "method)",
+  "(B.3)/(B.4) theta' and tau' of slow starts with V0/(E |l0|) below "
+    "DBL_MIN (closed form)"
+};
+
+/* The rows that are known failures as a whole. */
 static const char *
 known_failure (int me, int q, int set)
 {
-  if (!slow_set (set))
-    return NULL;
-  if (q == Q_DC)
-    return why_dc;
-  if (me == M_ODE && set != S_SLOW
+  if (me == M_ODE && (set == S_TINYV || set == S_SLOWNEAR)
       && (q == Q_THETA || q == Q_TAU || q == Q_VM))
     return why_ode;
   if (set == S_SLOWNEAR && me != M_ODE && (q == Q_THETA || q == Q_TAU))
     return why_near;
-  if (set == S_TINYV && me == M_CF && (q == Q_THETA || q == Q_TAU))
-    return why_subnormal;
   return NULL;
 }
 
@@ -2842,6 +2869,18 @@ main (int argc, char **argv)
              "reversal flags and directions as the oracle decides them exactly; "
              "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
              n_spin_ok);
+  for (int k = 0; k < NKF; k++)
+    if (st_known[k].n > 0)
+      {
+        const stat_t *x = &st_known[k];
+        tap_check_todo (x->ratio <= 1, x->ratio, 1.0, why_known[k],
+                        "known failure, kept out of the rows: %s: %ld "
+                        "points (max kappa %.3g), max %.3g ulps; error / "
+                        "tolerance of the method", known_what[k], x->n,
+                        x->kmax, x->max);
+        if (x->ratio > 1)
+          printf ("# worst: %s\n", x->worst);
+      }
   if (set_ran[S_SLOWNEAR])
     tap_check_todo (n_slow_misclassified == 0, (double) n_slow_misclassified,
                     0, why_near, "slow starts near l = 0: reversal flags as "
