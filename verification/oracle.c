@@ -2013,14 +2013,38 @@ phase_EH (double L0, double D0, arb_srcptr x, arb_t E, arb_t H)
    the new peg) applied to the exact E and H of phase_EH.  Nothing here
    is rounded to a double before the integrals: the start's V+^2 =
    (2E (1 + l0^2) - H^2)/(1 + l0^2) is V0^2 exactly, however small. */
+#define SLOW_BITS 110          /* accuracy demanded of the slow starts'
+                                   references: MIN_BITS would do for the
+                                   errors, but their finite differences of
+                                   relative size 2^-100 need 2^-107 (a slow
+                                   start's V+^2 cancels thousands of bits in
+                                   2E (1 + l0^2) - H^2, and a reference can
+                                   stop just above MIN_BITS) */
+
+static int
+slow_accurate (const arb_t x)
+{
+  return arb_is_zero (x) || arb_rel_accuracy_bits (x) >= SLOW_BITS;
+}
+
 static int
 slow_eval (double L0, double Delta, int dir, arb_srcptr x, sref *r,
            int with_legendre)
 {
   arb_t E, H;
+  int rc = ORC_INACC;
   arb_init (E), arb_init (H);
-  int rc = phase_EH (L0, dir > 0 ? 0.0 : Delta, x, E, H) ? ORC_INACC
-    : step_eval (L0, Delta, dir, E, H, r, with_legendre);
+  if (!phase_EH (L0, dir > 0 ? 0.0 : Delta, x, E, H))
+    for (slong prec = PREC0; prec <= PREC_MAX && rc == ORC_INACC; prec *= 2)
+      {
+        rc = step_oracle (L0, Delta, dir, E, H, r, with_legendre, prec);
+        if (rc == ORC_OK
+            && !(slow_accurate (r->E) && slow_accurate (r->H)
+                 && slow_accurate (r->dth) && slow_accurate (r->dta)
+                 && slow_accurate (r->Vm)
+                 && (!r->reversal || slow_accurate (r->Dc))))
+          rc = ORC_INACC;
+      }
   arb_clear (E), arb_clear (H);
   return rc;
 }
@@ -2180,8 +2204,15 @@ slow_point (int set, double L0, double Delta, int dir, double V0, double Om0)
         stat_add (&st_known[KF_DC], ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc),
                   kDc);
     }
-  /* the leg */
-  D = r.reversal ? D0 + 0.5 * (mid_d (r.Dc) - D0) : Delta - D0;
+  /* the leg: half way to the turning point, rounded, but not beyond it */
+  D = Delta - D0;
+  if (r.reversal)
+    {
+      const double Dlast = double_before (r.Dc, dir);
+      D = D0 + 0.5 * (mid_d (r.Dc) - D0);
+      if (dir * (D - Dlast) > 0)
+        D = Dlast;
+    }
   if (dir * (D - D0) > 0)
     leg_point (set, L0, Delta, D0, V0, Om0, D);
 done:
