@@ -2754,13 +2754,15 @@ write_table (const char *path, int level)
              "Not in the tables: %ld legs or steps that the ODE method\n"
              "declined with @code{CHAPLYGIN_ENOCONV} (legs ending within its\n"
              "integration error of a turning point, or needing more than\n"
-             "@math{10^5} steps), and %ld legs ending within rounding of a\n"
+             "@math{10^5} steps; and %ld slow starts, @pxref{Known\n"
+             "failures}), and %ld legs ending within rounding of a\n"
              "turning point (@math{V(D)^2 < 16 eps 2E}), or through\n"
              "@math{l = 0} within rounding of the spinning condition\n"
              "(@math{|1 - H^2/(2E)| < 16 eps}), that\n"
              "@code{chaplygin_discrete_heading} rejected with\n"
              "@code{CHAPLYGIN_ESTATE} (closed form; %ld with quadrature).\n\n",
-             n_ode_declined, n_reject_rounding[M_CF], n_reject_rounding[M_QUAD]);
+             n_ode_declined, n_ode_declined_slow, n_reject_rounding[M_CF],
+             n_reject_rounding[M_QUAD]);
   if (set_ran[S_SLOW] && set_ran[S_TINYV] && set_ran[S_SLOWNEAR])
     {
       const stat_t *kd = &st_known[KF_DC], *ks = &st_known[KF_SUBNORMAL];
@@ -2769,7 +2771,7 @@ write_table (const char *path, int level)
         snprintf (dc_max, sizeof dc_max, "%.3g ulps", kd->max);
       else
         snprintf (dc_max, sizeof dc_max, "beyond @math{10^308} ulps (a\n"
-                  "reference that is below the subnormals, returned as about\n"
+                  "reference below the subnormals, returned as about\n"
                   "@math{10^(-13)})");
       const double near_max
         = fmax (fmax (st[M_CF][Q_THETA][S_SLOWNEAR].max,
@@ -2804,8 +2806,8 @@ write_table (const char *path, int level)
 "and that form's absolute error of about @math{eps |l_0|} leaves no\n"
 "relative accuracy from @math{D^+ = 0} (0 or @math{-3 10^(-16)} where\n"
 "@math{D_c = 1.5 10^(-19)}) and about @math{|l_0|/D_c} ulps from\n"
-"@math{D^+ = Delta}: %ld points (every method), up to %s, kept out of\n"
-"the tables.\n"
+"@math{D^+ = Delta}: %ld points (every method), kept out of the tables;\n"
+"the largest error %s.\n"
 "@item\n"
 "Where @math{V_0/(E |l_0|)} is below @code{DBL_MIN}, the closed form's\n"
 "heading and time of a reversal at the start lose up to 7 bits (that\n"
