@@ -65,12 +65,20 @@
    CHAPLYGIN_ERANGE), tiny H (1e-300..1e-200, subnormal, +-0),
    reversal at an ulp (a turning point within a few ulps of the far end,
    or exactly on it) and spinning at an ulp (2E/H^2 = 1 +- k ulps,
-   k = 1..4).  Quantities: the heading and time of
+   k = 1..4); and the slow starts of issue 16 (run_slow): the first step
+   from a post-collision phase state {D0, V0, theta, Omega0} with
+   |V0| = 1e-3 .. 1e-12 times |l0 Omega0| (slow start), |V0| = 1e-20 down
+   to DBL_MIN (tiny V0), and both ladders from |l0| < 1/2 (near l = 0),
+   whose E and H the oracle forms exactly from the double inputs (phase_EH:
+   no rounding to doubles, which would lose V0) before the same integrals.
+   Quantities: the heading and time of
    a leg (chaplygin_discrete_heading), the next E, H, theta, tau of the
-   return map and the turning point D_c of a reversing segment
-   (chaplygin_discrete_step, 4 collisions per start, each compared from
-   the library's own input state), sigma4, xi4, C1, C2; the closed form,
-   and the quadrature and ODE methods on the legs and first steps.
+   return map, V- before the collision and the turning point D_c of a
+   reversing segment (chaplygin_discrete_step, 4 collisions per start,
+   each compared from the library's own input state; for the slow starts
+   chaplygin_discrete_state_from_phase then one step), sigma4, xi4, C1,
+   C2; the closed form, and the quadrature and ODE methods on the legs,
+   first steps and slow starts.
 
    Checks (TAP): the oracle reached its accuracy everywhere; its two
    routes agree; the library succeeded wherever the motion is defined
@@ -85,6 +93,9 @@
    check per method, quantity and data set: every error within its
    tolerance (the rule is stated above tol_ulps: max(16, 8 kappa) ulps
    for the closed form, kappa the condition number computed by the oracle).
+   Failures of the library that the slow starts found are TAP TODO items
+   (known_failure, st_known: automake's XFAIL; one that passes fails the
+   program), listed in the chapter's "Known failures".
    The errors are reported in ulps, |lib - ref|/ulp(ref), max and mean per
    quantity and data set; with --table FILE the program also writes them
    as the Texinfo chapter "Accuracy tables" (doc/accuracy.texi).  Level 1
@@ -663,6 +674,7 @@ typedef struct
 {
   int reversal;
   arb_t E, H, dth, dta, Dc;     /* Dc: the turning point, if reversal */
+  arb_t Vm;                     /* V- just before the next collision */
 } sref;
 
 /* One step of the return map from the post-collision state (dir, E, H). */
@@ -755,7 +767,21 @@ step_oracle (double L0, double Delta, int dir, const arb_t E, const arb_t H,
     collide (lf, ls, E, H, Ep, Hp, hp);
   arb_set_round (r->E, Ep, prec);
   arb_set_round (r->H, Hp, prec);
-  if (!(accurate (r->E) && accurate (r->H))
+  /* V- at the end the peg leaves (the start end after a reversal), in the
+     direction of the motion there: V-^2 = (2E (1 + lm^2) - H^2)/(1 + lm^2),
+     whose numerator is formed as a difference of exact products (it is
+     V+^2 (1 + l0^2) exactly after a reversal) */
+  {
+    const arb_struct *lm = r->reversal ? ls : lf;
+    arb_sqr (m, lm, hp);
+    arb_add_ui (m, m, 1, hp);
+    arb_mul (t, m, E2, hp);
+    arb_submul (t, H, H, hp);
+    arb_div (t, t, m, hp);
+    arb_sqrt (t, t, hp);
+    arb_mul_si (r->Vm, t, r->reversal ? -dir : dir, prec);
+  }
+  if (!(accurate (r->E) && accurate (r->H) && accurate (r->Vm))
       || (r->reversal && !accurate (r->Dc)))
     rc = ORC_INACC;
 done:
@@ -853,10 +879,11 @@ ulp_err (double lib, const arb_t ref)
 }
 
 enum
-{ Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2, NQ };
+{ Q_LTH, Q_LTAU, Q_E, Q_H, Q_THETA, Q_TAU, Q_VM, Q_DC, Q_SIG, Q_XI, Q_C1, Q_C2,
+  NQ };
 enum
 { S_ORD, S_REV, S_SPIN, S_TINY, S_HUGE, S_LARGE, S_SMALL, S_XL, S_TINYH,
-  S_ULPREV, S_ULPSPIN, NS };
+  S_ULPREV, S_ULPSPIN, S_SLOW, S_TINYV, S_SLOWNEAR, NS };
 enum
 { M_CF, M_QUAD, M_ODE, NM };
 
@@ -867,6 +894,7 @@ static const char *const qname[NQ] = {
   "(B.3)/(B.4) next momentum H'",
   "(B.3)/(B.4) next heading theta'",
   "(B.3)/(B.4) next time tau'",
+  "(B.1)/(B.3)/(B.4) speed V- before the next collision",
   "(B.4)/(B.5) turning point Dc",
   "(3.10) sigma4",
   "(4.1) xi4",
@@ -881,6 +909,8 @@ static const char *const qtexi[NQ] = {
   "(B.3)/(B.4): next momentum @math{H'}, @code{chaplygin_discrete_step}",
   "(B.3)/(B.4): next heading @math{theta'}, @code{chaplygin_discrete_step}",
   "(B.3)/(B.4): next time @math{tau'}, @code{chaplygin_discrete_step}",
+  "(B.1)/(B.3)/(B.4): speed @math{V^-} before the next collision, "
+    "@code{chaplygin_discrete_step}",
   "(B.4)/(B.5): turning point @math{D_c} of a reversing segment, "
     "@code{chaplygin_discrete_step}",
   "(3.10): @math{sigma_4}, @code{chaplygin_discrete_sigma4}",
@@ -898,6 +928,7 @@ static const char *const qanchor[NQ] = {
   "Accuracy of the next momentum",
   "Accuracy of the next heading",
   "Accuracy of the next time",
+  "Accuracy of the speed before the collision",
   "Accuracy of the turning point",
   "Accuracy of sigma4",
   "Accuracy of xi4",
@@ -908,14 +939,16 @@ static const char *const qanchor[NQ] = {
 static const char *const sname[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny Delta", "huge Delta",
   "large |L0|", "tiny |L0|", "extreme |L0|", "tiny H", "reversal at an ulp",
-  "spinning at an ulp"
+  "spinning at an ulp", "slow start", "slow start, tiny V0",
+  "slow start near l = 0"
 };
 
 static const char *const stexi[NS] = {
   "ordinary", "near-reversal", "near-spinning", "tiny @math{Delta}",
   "huge @math{Delta}", "large @math{|L_0|}", "tiny @math{|L_0|}",
   "extreme @math{|L_0|}", "tiny @math{H}", "reversal at an ulp",
-  "spinning at an ulp"
+  "spinning at an ulp", "slow start", "slow start, tiny @math{V_0}",
+  "slow start near @math{l = 0}"
 };
 
 static const char *const mname[NM] = {
@@ -931,13 +964,21 @@ ill (int set)
     || set == S_ULPSPIN;
 }
 
+/* The slow-start sets: the first step from a phase state (run_slow), not
+   from (E, H). */
+static int
+slow_set (int set)
+{
+  return set == S_SLOW || set == S_TINYV || set == S_SLOWNEAR;
+}
+
 /* The sets whose parameters (L0, Delta) are those of another set: only
    their states are new, and the parameter quantities (sigma4, xi4, C1,
    C2) are not run on them. */
 static int
 state_set (int set)
 {
-  return ill (set) || set == S_TINYH;
+  return ill (set) || set == S_TINYH || slow_set (set);
 }
 
 typedef struct
@@ -958,11 +999,20 @@ static long n_f2;
 static char f2_first[300];
 static int set_ran[NS];         /* the sets run (all but with --set) */
 
-/* One comparison: error ERR (ulps) against its tolerance TOL (ulps). */
+/* Points of known failures of the library (found by the slow-start sets,
+   issue 16), kept out of the rows of st and checked as TAP TODO items
+   (see known_failure): D_c of a slow reversal; the closed form's theta'
+   and tau' of a slow start whose V+/(E |l0|) is below the normal
+   doubles. */
+enum
+{ KF_DC, KF_SUBNORMAL, NKF };
+static stat_t st_known[NKF];
+
+/* One comparison added to X: error ERR (ulps) against its tolerance TOL
+   (ulps). */
 static void
-record (int m, int q, int set, double err, double tol, double kappa)
+stat_add (stat_t *x, double err, double tol, double kappa)
 {
-  stat_t *x = &st[m][q][set];
   if (!(err >= 0))
     err = INFINITY;
   x->n++;
@@ -976,6 +1026,12 @@ record (int m, int q, int set, double err, double tol, double kappa)
     }
   x->kmax = fmax (x->kmax, kappa);
   x->nill += kappa > 2;
+}
+
+static void
+record (int m, int q, int set, double err, double tol, double kappa)
+{
+  stat_add (&st[m][q][set], err, tol, kappa);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1465,15 +1521,151 @@ expect_refusal (int me, int r, int untouched, const char *what, double L0,
 
 static const double SENTINEL = -0x1.5e17e1p-3;
 
+/* One leg of chaplygin_discrete_heading (L0, D0, V0, Om0, D), with
+   s (D - D0) > 0 for s = sgn V0, of data set SET (slot (L0, Delta)): the
+   oracle, the condition number and every method. */
+static void
+leg_point (int set, double L0, double Delta, double D0, double V0,
+           double Om0, double D)
+{
+  arb_ptr x = _arb_vec_init (5), y = _arb_vec_init (5);
+  arb_t th, ta, th1, ta1, E2, H, l0, t, v2, qrel;
+  arb_init (th), arb_init (ta), arb_init (th1), arb_init (ta1);
+  arb_init (E2), arb_init (H), arb_init (l0), arb_init (t);
+  arb_init (v2), arb_init (qrel);
+  const slong hp = HP (PREC_MAX);
+  /* l0, H = (1 + l0^2) Omega0 and 2E = V0^2 + (1 + l0^2) Omega0^2, exact */
+  arb_set_d (l0, L0);
+  arb_set_d (t, D0);
+  arb_add (l0, l0, t, hp);
+  arb_sqr (H, l0, hp);
+  arb_add_ui (H, H, 1, hp);
+  arb_set_d (t, Om0);
+  arb_mul (H, H, t, hp);
+  arb_mul (E2, H, t, hp);
+  arb_set_d (t, V0);
+  arb_addmul (E2, t, t, hp);
+  const int s0 = arf_sgn (arb_midref (l0));
+  int rc, crossing;
+  double kth = 0, kta = 0;
+  n_far_legs += fmax (fabs (L0 + D0), fabs (L0 + D)) > 0x1p500
+    && !beyond_cap (L0, D0, D);
+  if (beyond_cap (L0, D0, D))
+    {
+      for (int me = 0; me < NM; me++)
+        if (use_method[me])
+          {
+            double dth = SENTINEL, dta = SENTINEL;
+            int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D,
+                                                &opt_of[me], &dth, &dta);
+            expect_refusal (me, r, dth == SENTINEL && dta == SENTINEL,
+                            "leg", L0, Delta);
+          }
+      goto done;
+    }
+  arb_set_d (x + 0, L0), arb_set_d (x + 1, D0), arb_set_d (x + 2, V0);
+  arb_set_d (x + 3, Om0), arb_set_d (x + 4, D);
+  rc = leg_eval (x, th, ta, 1);
+  if (rc != ORC_OK)
+    {
+      n_oracle_fail++;
+      printf ("# oracle: leg failed (%d): L0=%a D0=%a V0=%a Omega0=%a "
+              "D=%a\n", rc, L0, D0, V0, Om0, D);
+      goto done;
+    }
+  n_legs++;
+  /* 1 - H^2/(2E): how close the motion is to the spinning condition,
+     for a leg through l = 0 (from l0 to l(D) = L0 + D) */
+  arb_add (t, x + 0, x + 4, hp);
+  crossing = s0 * arf_sgn (arb_midref (t)) <= 0;
+  arb_sqr (qrel, H, hp);
+  arb_div (qrel, qrel, E2, hp);
+  arb_sub_ui (qrel, qrel, 1, hp);
+  arb_neg (qrel, qrel);
+  /* V(D)^2/(2E), exactly: how close the end is to a turning point */
+  arb_add (t, x + 0, x + 4, hp);
+  arb_sqr (t, t, hp);
+  arb_add_ui (t, t, 1, hp);
+  arb_sqr (v2, H, hp);
+  arb_div (v2, v2, t, hp);
+  arb_sub (v2, E2, v2, hp);
+  arb_div (v2, v2, E2, hp);
+  /* condition number with respect to the five inputs */
+  for (int j = 0; j < 5; j++)
+    {
+      /* a step that crosses the turning point is retried the other
+         way, then smaller */
+      double d = FD_STEP;
+      int rk = ORC_BAD;
+      for (int tries = 0; tries < 4 && rk != ORC_OK; tries++)
+        {
+          d = tries == 0 ? FD_STEP : tries == 1 ? -FD_STEP
+            : tries == 2 ? FD_STEP * 0x1p-60 : -FD_STEP * 0x1p-60;
+          _arb_vec_set (y, x, 5);
+          perturbed (y + j, x + j, d);
+          rk = leg_eval (y, th1, ta1, 0);
+        }
+      if (rk == ORC_OK)
+        kth += kappa_fd (th1, th, d), kta += kappa_fd (ta1, ta, d);
+      else
+        {
+          n_oracle_fail++;
+          printf ("# oracle: perturbed leg (input %d) failed: L0=%a "
+                  "D0=%a V0=%a Omega0=%a D=%a\n", j, L0, D0, V0, Om0, D);
+        }
+    }
+  kappa_max[set] = fmax (kappa_max[set], fmax (kth, kta));
+  for (int me = 0; me < NM; me++)
+    {
+      double dth, dta;
+      if (!use_method[me])
+        continue;
+      snprintf (point, sizeof point, "heading (%a, %a, %a, %a, %a)", L0,
+                D0, V0, Om0, D);
+      int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D, &opt_of[me],
+                                          &dth, &dta);
+      if (r == CHAPLYGIN_ESTATE
+          && (mid_d (v2) < 16 * DBL_EPSILON
+              || (crossing && fabs (mid_d (qrel)) < 16 * DBL_EPSILON)))
+        {
+          /* D within rounding (16 eps in V^2/2E) of the turning point,
+             or a leg through l = 0 within rounding (16 eps in
+             1 - H^2/(2E)) of the spinning condition 2E = H^2:
+             rejecting it is the decision for inputs perturbed by a
+             few eps (backward stable); counted, not an error */
+          n_reject_rounding[me]++;
+          continue;
+        }
+      if (r == CHAPLYGIN_ENOCONV && me == M_ODE)
+        {
+          n_ode_declined++;   /* documented: see the ODE method */
+          continue;
+        }
+      if (r != CHAPLYGIN_SUCCESS)
+        {
+          n_lib_fail++;
+          printf ("# %s leg failed (%s): L0=%a Delta=%a D0=%a V0=%a "
+                  "Omega0=%a D=%a\n", mname[me], chaplygin_strerror (r),
+                  L0, Delta, D0, V0, Om0, D);
+          continue;
+        }
+      record (me, Q_LTH, set, ulp_err (dth, th), tol_ulps (me, kth), kth);
+      record (me, Q_LTAU, set, ulp_err (dta, ta), tol_ulps (me, kta), kta);
+    }
+done:
+  _arb_vec_clear (x, 5), _arb_vec_clear (y, 5);
+  arb_clear (th), arb_clear (ta), arb_clear (th1), arb_clear (ta1);
+  arb_clear (E2), arb_clear (H), arb_clear (l0), arb_clear (t);
+  arb_clear (v2), arb_clear (qrel);
+}
+
 /* Legs of (B.2) through chaplygin_discrete_heading. */
 static void
 run_legs (int set, int n, unsigned long long *seed)
 {
-  arb_ptr x = _arb_vec_init (5), y = _arb_vec_init (5);
-  arb_t th, ta, th1, ta1, E2, H, l0, lf, t, m, Dc, v2, qrel;
-  arb_init (th), arb_init (ta), arb_init (th1), arb_init (ta1);
+  arb_t E2, H, l0, lf, t, m, Dc;
   arb_init (E2), arb_init (H), arb_init (l0), arb_init (lf), arb_init (t);
-  arb_init (m), arb_init (Dc), arb_init (v2), arb_init (qrel);
+  arb_init (m), arb_init (Dc);
   const slong hp = HP (PREC_MAX);
   for (int i = 0; i < n; i++)
     {
@@ -1570,130 +1762,24 @@ run_legs (int set, int n, unsigned long long *seed)
         D = D0 + tap_uniform (seed, 0.05, turn ? 0.75 : 0.95) * (mid_d (Dc) - D0);
       if (!(s * (D - D0) > 0))
         continue;
-      n_far_legs += fmax (fabs (L0 + D0), fabs (L0 + D)) > 0x1p500
-        && !beyond_cap (L0, D0, D);
-      if (beyond_cap (L0, D0, D))
-        {
-          for (int me = 0; me < NM; me++)
-            if (use_method[me])
-              {
-                double dth = SENTINEL, dta = SENTINEL;
-                int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D,
-                                                    &opt_of[me], &dth, &dta);
-                expect_refusal (me, r, dth == SENTINEL && dta == SENTINEL,
-                                "leg", L0, Delta);
-              }
-          continue;
-        }
-      arb_set_d (x + 0, L0), arb_set_d (x + 1, D0), arb_set_d (x + 2, V0);
-      arb_set_d (x + 3, Om0), arb_set_d (x + 4, D);
-      int rc = leg_eval (x, th, ta, 1);
-      if (rc != ORC_OK)
-        {
-          n_oracle_fail++;
-          printf ("# oracle: leg failed (%d): L0=%a D0=%a V0=%a Omega0=%a "
-                  "D=%a\n", rc, L0, D0, V0, Om0, D);
-          continue;
-        }
-      n_legs++;
-      /* 1 - H^2/(2E): how close the motion is to the spinning condition,
-         for a leg through l = 0 (from l0 to l(D) = L0 + D) */
-      arb_add (t, x + 0, x + 4, hp);
-      int crossing = s0 * arf_sgn (arb_midref (t)) <= 0;
-      arb_sqr (qrel, H, hp);
-      arb_div (qrel, qrel, E2, hp);
-      arb_sub_ui (qrel, qrel, 1, hp);
-      arb_neg (qrel, qrel);
-      /* V(D)^2/(2E), exactly: how close the end is to a turning point */
-      arb_add (t, x + 0, x + 4, hp);
-      arb_sqr (t, t, hp);
-      arb_add_ui (t, t, 1, hp);
-      arb_sqr (v2, H, hp);
-      arb_div (v2, v2, t, hp);
-      arb_sub (v2, E2, v2, hp);
-      arb_div (v2, v2, E2, hp);
-      /* condition number with respect to the five inputs */
-      double kth = 0, kta = 0;
-      for (int j = 0; j < 5; j++)
-        {
-          /* a step that crosses the turning point is retried the other
-             way, then smaller */
-          double d = FD_STEP;
-          int rk = ORC_BAD;
-          for (int tries = 0; tries < 4 && rk != ORC_OK; tries++)
-            {
-              d = tries == 0 ? FD_STEP : tries == 1 ? -FD_STEP
-                : tries == 2 ? FD_STEP * 0x1p-60 : -FD_STEP * 0x1p-60;
-              _arb_vec_set (y, x, 5);
-              perturbed (y + j, x + j, d);
-              rk = leg_eval (y, th1, ta1, 0);
-            }
-          if (rk == ORC_OK)
-            kth += kappa_fd (th1, th, d), kta += kappa_fd (ta1, ta, d);
-          else
-            {
-              n_oracle_fail++;
-              printf ("# oracle: perturbed leg (input %d) failed: L0=%a "
-                      "D0=%a V0=%a Omega0=%a D=%a\n", j, L0, D0, V0, Om0, D);
-            }
-        }
-      kappa_max[set] = fmax (kappa_max[set], fmax (kth, kta));
-      for (int me = 0; me < NM; me++)
-        {
-          double dth, dta;
-          if (!use_method[me])
-            continue;
-          snprintf (point, sizeof point, "heading (%a, %a, %a, %a, %a)", L0,
-                    D0, V0, Om0, D);
-          int r = chaplygin_discrete_heading (L0, D0, V0, Om0, D, &opt_of[me],
-                                              &dth, &dta);
-          if (r == CHAPLYGIN_ESTATE
-              && (mid_d (v2) < 16 * DBL_EPSILON
-                  || (crossing && fabs (mid_d (qrel)) < 16 * DBL_EPSILON)))
-            {
-              /* D within rounding (16 eps in V^2/2E) of the turning point,
-                 or a leg through l = 0 within rounding (16 eps in
-                 1 - H^2/(2E)) of the spinning condition 2E = H^2:
-                 rejecting it is the decision for inputs perturbed by a
-                 few eps (backward stable); counted, not an error */
-              n_reject_rounding[me]++;
-              continue;
-            }
-          if (r == CHAPLYGIN_ENOCONV && me == M_ODE)
-            {
-              n_ode_declined++;   /* documented: see the ODE method */
-              continue;
-            }
-          if (r != CHAPLYGIN_SUCCESS)
-            {
-              n_lib_fail++;
-              printf ("# %s leg failed (%s): L0=%a Delta=%a D0=%a V0=%a "
-                      "Omega0=%a D=%a\n", mname[me], chaplygin_strerror (r),
-                      L0, Delta, D0, V0, Om0, D);
-              continue;
-            }
-          record (me, Q_LTH, set, ulp_err (dth, th), tol_ulps (me, kth), kth);
-          record (me, Q_LTAU, set, ulp_err (dta, ta), tol_ulps (me, kta), kta);
-        }
+      leg_point (set, L0, Delta, D0, V0, Om0, D);
     }
-  _arb_vec_clear (x, 5), _arb_vec_clear (y, 5);
-  arb_clear (th), arb_clear (ta), arb_clear (th1), arb_clear (ta1);
   arb_clear (E2), arb_clear (H), arb_clear (l0), arb_clear (lf), arb_clear (t);
-  arb_clear (m), arb_clear (Dc), arb_clear (v2), arb_clear (qrel);
+  arb_clear (m), arb_clear (Dc);
 }
 
 static void
 sref_init (sref *r)
 {
   arb_init (r->E), arb_init (r->H), arb_init (r->dth), arb_init (r->dta);
-  arb_init (r->Dc);
+  arb_init (r->Dc), arb_init (r->Vm);
 }
 
 static void
 sref_clear (sref *r)
 {
   arb_clear (r->E), arb_clear (r->H), arb_clear (r->dth), arb_clear (r->dta);
-  arb_clear (r->Dc);
+  arb_clear (r->Dc), arb_clear (r->Vm);
 }
 
 static int
@@ -1833,7 +1919,7 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                       "E %a, H %a, theta %a, tau %a)", L0, Delta, s->dir, s->E,
                       s->H, s->theta, s->tau);
             /* condition numbers with respect to E and H */
-            double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0;
+            double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0, kVm = 0;
             for (int j = 0; j < 2; j++)
               {
                 /* a step that changes the classification (a turning point
@@ -1862,6 +1948,7 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                 kH += kappa_fd (r1.H, r.H, d);
                 kth += kappa_fd (r1.dth, r.dth, d);
                 kta += kappa_fd (r1.dta, r.dta, d);
+                kVm += kappa_fd (r1.Vm, r.Vm, d);
                 if (r.reversal)
                   kDc += kappa_fd (r1.Dc, r.Dc, d);
               }
@@ -1872,6 +1959,8 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
                     kq);
             kq = sum_ref (y, s->tau, r.dta, kta);
             record (me, Q_TAU, set, ulp_err (out.tau, y), tol_ulps (me, kq), kq);
+            record (me, Q_VM, set, ulp_err (ev.Vminus, r.Vm),
+                    tol_ulps (me, kVm), kVm);
             if (r.reversal)
               record (me, Q_DC, set, ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc),
                       kDc);
@@ -1882,6 +1971,324 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
     }
   sref_clear (&r), sref_clear (&r1);
   arb_clear (Ea), arb_clear (Ha), arb_clear (t), arb_clear (y);
+}
+
+/* ------------------------------------------------------------------ */
+/* Slow starts: the first segment from an exact phase state            */
+/* ------------------------------------------------------------------ */
+
+/* E and H of the post-collision phase state {D0, V0, Omega0} of the slot
+   (L0, Delta), x = {V0, Omega0} (balls, so that they can be perturbed),
+   l0 = L0 + D0:
+     2E = V0^2 + (1 + l0^2) Omega0^2   (3.3),
+      H = (1 + l0^2) Omega0            (3.4),
+   in exact arithmetic (ARF_PREC_EXACT: the operands are exact, and the
+   results need at most a few thousand bits, V0^2 = 2^-2044 beside
+   (1 + l0^2) Omega0^2 for V0 = DBL_MIN), where
+   chaplygin_discrete_state_from_phase must round them to doubles.  0, or
+   -1 if a result is not exact (never expected). */
+static int
+phase_EH (double L0, double D0, arb_srcptr x, arb_t E, arb_t H)
+{
+  arb_t l0, a, t;
+  arb_init (l0), arb_init (a), arb_init (t);
+  arb_set_d (l0, L0);
+  arb_set_d (t, D0);
+  arb_add (l0, l0, t, ARF_PREC_EXACT);
+  arb_sqr (a, l0, ARF_PREC_EXACT);
+  arb_add_ui (a, a, 1, ARF_PREC_EXACT);
+  arb_mul (H, a, x + 1, ARF_PREC_EXACT);
+  arb_sqr (t, x + 0, ARF_PREC_EXACT);
+  arb_addmul (t, H, x + 1, ARF_PREC_EXACT);
+  arb_mul_2exp_si (E, t, -1);
+  int ok = arb_is_exact (E) && arb_is_exact (H);
+  arb_clear (l0), arb_clear (a), arb_clear (t);
+  return ok ? 0 : -1;
+}
+
+/* The first step of the return map from the exact phase state: the
+   oracle's step (step_oracle: the reversal decided exactly, the legs
+   integrated after the substitution that removes the turning point's
+   singularity, the collision by conservation of angular momentum about
+   the new peg) applied to the exact E and H of phase_EH.  Nothing here
+   is rounded to a double before the integrals: the start's V+^2 =
+   (2E (1 + l0^2) - H^2)/(1 + l0^2) is V0^2 exactly, however small. */
+#define SLOW_BITS 110          /* accuracy demanded of the slow starts'
+                                   references: MIN_BITS would do for the
+                                   errors, but their finite differences of
+                                   relative size 2^-100 need 2^-107 (a slow
+                                   start's V+^2 cancels thousands of bits in
+                                   2E (1 + l0^2) - H^2, and a reference can
+                                   stop just above MIN_BITS) */
+
+static int
+slow_accurate (const arb_t x)
+{
+  return arb_is_zero (x) || arb_rel_accuracy_bits (x) >= SLOW_BITS;
+}
+
+static int
+slow_eval (double L0, double Delta, int dir, arb_srcptr x, sref *r,
+           int with_legendre)
+{
+  arb_t E, H;
+  int rc = ORC_INACC;
+  arb_init (E), arb_init (H);
+  if (!phase_EH (L0, dir > 0 ? 0.0 : Delta, x, E, H))
+    for (slong prec = PREC0; prec <= PREC_MAX && rc == ORC_INACC; prec *= 2)
+      {
+        rc = step_oracle (L0, Delta, dir, E, H, r, with_legendre, prec);
+        if (rc == ORC_OK
+            && !(slow_accurate (r->E) && slow_accurate (r->H)
+                 && slow_accurate (r->dth) && slow_accurate (r->dta)
+                 && slow_accurate (r->Vm)
+                 && (!r->reversal || slow_accurate (r->Dc))))
+          rc = ORC_INACC;
+      }
+  arb_clear (E), arb_clear (H);
+  return rc;
+}
+
+static long n_slow, n_slow_reversals, n_slow_misclassified, n_slow_in[NS];
+static long n_ode_declined_slow;
+static char slow_misclassified_first[240];
+
+/* One slow start {D0, V0, theta = 0, Omega0} (D0 = 0 for dir > 0, Delta
+   for dir < 0): the library's chaplygin_discrete_state_from_phase followed
+   by chaplygin_discrete_step (heading and time) by every method, against
+   slow_eval; then the leg of chaplygin_discrete_heading from the same
+   state to the far end (no reversal) or half way to the turning point (a
+   reversal, where a double lies between).
+   Condition numbers: theta', tau', V- and D_c with respect to V0 and
+   Omega0, the inputs they are determined by (the library forms the first
+   three from the state's V, as it documents; from (E, H) alone they would
+   be ill-conditioned); E' and H' with respect to E and H, from which the
+   library forms them by design (lib/map.c: "E' and H' from E and H as
+   ever"), as in the other step rows: the half-ulp rounding of E and H by
+   chaplygin_discrete_state_from_phase is within the rule's backward
+   error. */
+static void
+slow_point (int set, double L0, double Delta, int dir, double V0, double Om0)
+{
+  const double D0 = dir > 0 ? 0.0 : Delta;
+  arb_ptr x = _arb_vec_init (2), y = _arb_vec_init (2);
+  arb_t E, H, Ep, Hp;
+  sref r, r1;
+  chaplygin_discrete sys;
+  int rc;
+  double kE = 0, kH = 0, kth = 0, kta = 0, kDc = 0, kVm = 0, D;
+  arb_init (E), arb_init (H), arb_init (Ep), arb_init (Hp);
+  sref_init (&r), sref_init (&r1);
+  arb_set_d (x + 0, V0);
+  arb_set_d (x + 1, Om0);
+  snprintf (point, sizeof point, "slow start (L0 %a, Delta %a, dir %d, V0 %a, "
+            "Omega0 %a)", L0, Delta, dir, V0, Om0);
+  if (chaplygin_discrete_init (&sys, L0, Delta) != CHAPLYGIN_SUCCESS)
+    {
+      n_lib_fail++;
+      printf ("# chaplygin_discrete_init failed at %s\n", point);
+      goto done;
+    }
+  rc = slow_eval (L0, Delta, dir, x, &r, 1);
+  if (rc != ORC_OK || phase_EH (L0, D0, x, E, H))
+    {
+      n_oracle_fail++;
+      printf ("# oracle: slow start failed (%d) at %s\n", rc, point);
+      goto done;
+    }
+  n_slow++, n_slow_reversals += r.reversal, n_slow_in[set]++;
+  /* with respect to V0, Omega0 (j = 0, 1) and E, H (j = 2, 3); a step that
+     changes the classification is taken the other way */
+  for (int j = 0; j < 4; j++)
+    {
+      double d = FD_STEP;
+      int rk = ORC_BAD;
+      for (int tries = 0; tries < 2; tries++)
+        {
+          d = tries ? -FD_STEP : FD_STEP;
+          if (j < 2)
+            {
+              _arb_vec_set (y, x, 2);
+              perturbed (y + j, x + j, d);
+              rk = slow_eval (L0, Delta, dir, y, &r1, 0);
+            }
+          else
+            {
+              arb_set (Ep, E);
+              arb_set (Hp, H);
+              perturbed (j == 2 ? Ep : Hp, j == 2 ? E : H, d);
+              rk = step_eval (L0, Delta, dir, Ep, Hp, &r1, 0);
+            }
+          if (rk == ORC_OK && r1.reversal == r.reversal)
+            break;
+          rk = ORC_BAD;
+        }
+      if (rk != ORC_OK)
+        {
+          n_oracle_fail++;
+          printf ("# oracle: perturbed slow start (input %d) failed at %s\n",
+                  j, point);
+          continue;
+        }
+      if (j < 2)
+        {
+          kth += kappa_fd (r1.dth, r.dth, d);
+          kta += kappa_fd (r1.dta, r.dta, d);
+          kVm += kappa_fd (r1.Vm, r.Vm, d);
+          if (r.reversal)
+            kDc += kappa_fd (r1.Dc, r.Dc, d);
+        }
+      else
+        {
+          kE += kappa_fd (r1.E, r.E, d);
+          kH += kappa_fd (r1.H, r.H, d);
+        }
+    }
+  kappa_max[set] = fmax (kappa_max[set], fmax (fmax (kE, kH), fmax (kth, kta)));
+  for (int me = 0; me < NM; me++)
+    {
+      const double q[4] = { D0, V0, 0.0, Om0 };
+      chaplygin_discrete_state in, out;
+      chaplygin_discrete_event ev;
+      if (!use_method[me])
+        continue;
+      int rl = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &in);
+      if (rl == CHAPLYGIN_SUCCESS)
+        rl = chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_THETA
+                                      | CHAPLYGIN_WANT_TAU, &opt_of[me], &out,
+                                      &ev);
+      if (rl == CHAPLYGIN_ENOCONV && me == M_ODE)
+        {
+          n_ode_declined++, n_ode_declined_slow++;
+          continue;
+        }
+      if (rl != CHAPLYGIN_SUCCESS)
+        {
+          n_lib_fail++;
+          printf ("# %s slow start failed (%s) at %s\n", mname[me],
+                  chaplygin_strerror (rl), point);
+          continue;
+        }
+      if (ev.reversal != r.reversal
+          || out.dir != (r.reversal ? -dir : dir))
+        {
+          /* near l = 0 a known failure (the TODO check of main) */
+          if (set == S_SLOWNEAR)
+            {
+              if (n_slow_misclassified++ == 0)
+                snprintf (slow_misclassified_first,
+                          sizeof slow_misclassified_first, "%s, %s", mname[me],
+                          point);
+            }
+          else
+            n_mismatch++;
+          printf ("# %s slow start: reversal %d, oracle %d at %s\n", mname[me],
+                  ev.reversal, r.reversal, point);
+          continue;
+        }
+      snprintf (point, sizeof point, "%s slow start (L0 %a, Delta %a, dir "
+                "%d, V0 %a, Omega0 %a)", mname[me], L0, Delta, dir, V0, Om0);
+      record (me, Q_E, set, ulp_err (out.E, r.E), tol_ulps (me, kE), kE);
+      record (me, Q_H, set, ulp_err (out.H, r.H), tol_ulps (me, kH), kH);
+      /* the known failure KF_SUBNORMAL: V+/(E |l0|) (in.E: the library's
+         E) below the normal doubles */
+      stat_t *xth = &st[me][Q_THETA][set], *xta = &st[me][Q_TAU][set];
+      if (me == M_CF && fabs (V0) / (in.E * fabs (L0 + D0)) < DBL_MIN)
+        xth = xta = &st_known[KF_SUBNORMAL];
+      stat_add (xth, ulp_err (out.theta, r.dth), tol_ulps (me, kth), kth);
+      stat_add (xta, ulp_err (out.tau, r.dta), tol_ulps (me, kta), kta);
+      record (me, Q_VM, set, ulp_err (ev.Vminus, r.Vm), tol_ulps (me, kVm),
+              kVm);
+      /* the known failure KF_DC: D_c of a slow reversal */
+      if (r.reversal)
+        stat_add (&st_known[KF_DC], ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc),
+                  kDc);
+    }
+  /* the leg: half way to the turning point, rounded, but not beyond it */
+  D = Delta - D0;
+  if (r.reversal)
+    {
+      const double Dlast = double_before (r.Dc, dir);
+      D = D0 + 0.5 * (mid_d (r.Dc) - D0);
+      if (dir * (D - Dlast) > 0)
+        D = Dlast;
+    }
+  if (dir * (D - D0) > 0)
+    leg_point (set, L0, Delta, D0, V0, Om0, D);
+done:
+  _arb_vec_clear (x, 2), _arb_vec_clear (y, 2);
+  arb_clear (E), arb_clear (H), arb_clear (Ep), arb_clear (Hp);
+  sref_clear (&r), sref_clear (&r1);
+}
+
+/* The slow-start sets.  Slots (L0, Delta) and Omega0: fixed ones (the
+   mass centre inside the slot, where both directions reverse, once with
+   1 + L0 (L0 + Delta) = 0.01, where the collision after the reversal
+   takes all but 1e-4 of the energy; slots on either side of it, where one
+   direction reverses and the other moves away from l = 0; a large |l0|;
+   starts at |l0| = 3.3e-5, 1e-4, 0.3, 1e-12 and 2^-29), and at level 2 as
+   many again five times drawn as for ordinary and twice as for tiny |L0|
+   (Omega0 = +-w/sqrt(1 + l0^2), w in [0.05, 2]); both directions from
+   each, the start l0 = L0 + D0 deciding the set: |l0| >= 1/2 for slow
+   start and tiny V0, |l0| < 1/2 for near l = 0.  Speeds (signed dir):
+     slow start:   |V0| = r |l0 Omega0|, r = f 10^-k, k = 3 .. 12, f in
+                   [1, 10) (a draw per rung);
+     tiny V0:      |V0| = f 10^-k, k = 20, 50, 100, 200, 300, and DBL_MIN
+                   exactly and its successor;
+     near l = 0:   both ladders. */
+static void
+run_slow (int set, int level, unsigned long long *seed)
+{
+  static const struct
+  {
+    double L0, Delta, Om0;
+  } fixed[] = {
+    { -0.6180339887498949, 1.2345678901234567, 1.0471975511965976 },
+    { 0.7071067811865476, 0.41421356237309515, -0.8660254037844386 },
+    { -2.385, 0.917, 0.3183098861837907 },
+    { 1234.5678, 2.718281828459045, -0.000321 },
+    { -0.9, 2.0, 0.7071067811865476 },
+    { 3.3e-5, 0.5772156649015329, 1.618033988749895 },
+    { -1.0e-4, 0.6931471805599453, -2.302585092994046 },
+    { -0.3, 1.0, 1.1 },
+    { -1e-12, 0.7, 1.3 },
+    { -0.75, 0.75 - 0x1p-29, -0.45 }
+  };
+  static const int tiny_k[] = { 20, 50, 100, 200, 300 };
+  const int nfixed = (int) (sizeof fixed / sizeof fixed[0]);
+  const int ngeo = nfixed + (level == 2 ? 7 * nfixed : 0);
+  for (int g = 0; g < ngeo; g++)
+    {
+      double L0, Delta, Om0 = 0;
+      if (g < nfixed)
+        L0 = fixed[g].L0, Delta = fixed[g].Delta;
+      else
+        gen_params (g < 6 * nfixed ? S_ORD : S_SMALL, seed, &L0, &Delta);
+      for (int dir = 1; dir >= -1; dir -= 2)
+        {
+          const double l0 = L0 + (dir > 0 ? 0.0 : Delta);
+          Om0 = g < nfixed ? fixed[g].Om0
+            : rsign (seed) * tap_uniform (seed, 0.05, 2) / sqrt (1 + l0 * l0);
+          if ((fabs (l0) < 0.5) != (set == S_SLOWNEAR) || l0 == 0)
+            continue;
+          if (set != S_TINYV)
+            for (int k = 3; k <= 12; k++)
+              {
+                double V0 = dir * tap_uniform (seed, 1, 10) * pow (10.0, -k)
+                  * fabs (l0 * Om0);
+                slow_point (set, L0, Delta, dir, V0, Om0);
+              }
+          if (set != S_SLOW)
+            {
+              for (int i = 0; i < 5; i++)
+                slow_point (set, L0, Delta, dir, dir * tap_uniform (seed, 1, 10)
+                            * pow (10.0, -tiny_k[i]), Om0);
+              slow_point (set, L0, Delta, dir, dir * DBL_MIN, Om0);
+              slow_point (set, L0, Delta, dir, dir * nextafter (DBL_MIN, 1.0),
+                          Om0);
+            }
+        }
+    }
 }
 
 /* A parameter function failed at the point of the report: counted, and
@@ -1998,6 +2405,80 @@ quantity_sets (int q, int set)
   return !(q >= Q_SIG && state_set (set));
 }
 
+/* Known failures of the library, found by the slow-start sets (issue 16):
+   their checks are TAP TODO items (automake: XFAIL), reported with the
+   reason, and a TODO item that passes (XPASS) fails the program, so that
+   the list is kept to what still fails.  Each fails on the fixed points
+   of run_slow (level 1 and 2 alike).  NULL: not a known failure. */
+static const char *const why_near
+  = "issue 16: the step forms 1 - h^2 from the rounded E and H (absolute "
+  "error ~eps) although the state knows V+: a slow start near l = 0 "
+  "(1 - h^2 ~ -l0^2) loses ~eps/l0^2 relative in theta' and tau', and "
+  "for |l0| below ~1e-8 even the reversal decision";
+static const char *const why_dc
+  = "issue 16: the event's D_c is formed from E and H as "
+  "sgn(l0) sqrt(h^2 - 1) - L0, not from V+: a slow reversal turns within "
+  "~(V+/(l0 Omega+))^2 |l0|/2 of the start, and that form's absolute "
+  "error ~eps |l0| leaves no relative accuracy from D+ = 0 (0 or -3e-16 "
+  "where D_c = 1.5e-19) and ~|l0|/D_c ulps from D+ = Delta";
+static const char *const why_subnormal
+  = "issue 16: step_turn_at_start forms V+/(E l0), subnormal for V+ near "
+  "DBL_MIN when E |l0| > 1 (up to 7 bits lost at |l0| = 1237)";
+static const char *const why_ode
+  = "issue 16: CHAPLYGIN_ODE returns success with |V-| ~ 4e-34 and times "
+  "to match, whatever V+ below ~1e-33 (|l0 Omega+| of order 1), and "
+  "CHAPLYGIN_ENOCONV below ~1e-200";
+
+static const char *const why_known[NKF] = { why_dc, why_subnormal };
+static const char *const known_what[NKF] = {
+  "(B.4)/(B.5) turning point Dc of slow reversals (all slow sets, every "
+    "method)",
+  "(B.3)/(B.4) theta' and tau' of slow starts with V0/(E |l0|) below "
+    "DBL_MIN (closed form)"
+};
+
+/* The rows that are known failures as a whole. */
+static const char *
+known_failure (int me, int q, int set)
+{
+  if (me == M_ODE && (set == S_TINYV || set == S_SLOWNEAR)
+      && (q == Q_THETA || q == Q_TAU || q == Q_VM))
+    return why_ode;
+  if (set == S_SLOWNEAR && me != M_ODE && (q == Q_THETA || q == Q_TAU))
+    return why_near;
+  return NULL;
+}
+
+/* tap_check for a known failure (why != NULL): "# TODO why" after the
+   figures; a pass is reported and fails the program. */
+static void tap_check_todo (int ok, double worst, double tol, const char *why,
+                            const char *fmt, ...)
+  __attribute__ ((format (printf, 5, 6)));
+
+static void
+tap_check_todo (int ok, double worst, double tol, const char *why,
+                const char *fmt, ...)
+{
+  va_list ap;
+  tap_n++;
+  if (!ok && !why)
+    tap_failed = 1;
+  printf ("%s %d - ", ok ? "ok" : "not ok", tap_n);
+  va_start (ap, fmt);
+  vprintf (fmt, ap);
+  va_end (ap);
+  printf (": worst %.3g, tolerance %.3g", worst, tol);
+  if (why)
+    printf (" # TODO %s", why);
+  printf ("\n");
+  if (ok && why)
+    {
+      tap_failed = 1;
+      printf ("# a known failure passed (XPASS): remove it from "
+              "known_failure\n");
+    }
+}
+
 static void
 tap_report (int me)
 {
@@ -2009,9 +2490,10 @@ tap_report (int me)
           continue;
         /* every closed-form table entry must have points, except D_c where
            a set may happen to have no reversal */
-        tap_check ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio, 1.0,
+        tap_check_todo ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio,
+                   1.0, known_failure (me, q, s),
                    "%s, %s, %s: %ld points (%ld with kappa > 2, max kappa "
-                   "%.3g), max %.3g ulps, mean %.2f; error / %s ulps",
+                   "%.3g), max %.3g ulps, mean %.3g; error / %s ulps",
                    mname[me], qname[q], sname[s], x->n, x->nill, x->kmax,
                    x->max, x->n ? x->sum / x->n : 0.0,
                    me == M_CF ? "max(16, 8 kappa)" : "(20 tol/eps (1 + kappa))");
@@ -2020,11 +2502,14 @@ tap_report (int me)
       }
 }
 
+/* A row; a known failure (known_failure) says so. */
 static void
-texi_row (FILE *f, const char *what, const stat_t *x)
+texi_row (FILE *f, int me, int q, int set, const stat_t *x)
 {
-  fprintf (f, "@item %s @tab %ld @tab %.3g @tab %.3g @tab %.3g\n", what, x->n,
-           x->max, x->sum / x->n, x->kmax);
+  fprintf (f, "@item %s%s @tab %ld @tab %.3g @tab %.3g @tab %.3g\n",
+           stexi[set], known_failure (me, q, set)
+           ? " (known failure, @pxref{Known failures})" : "", x->n, x->max,
+           x->sum / x->n, x->kmax);
 }
 
 static int
@@ -2062,7 +2547,9 @@ write_table (const char *path, int level)
 "(@code{acb_calc_integrate}) after a substitution that removes the\n"
 "inverse-square-root singularity at a turning point, and checked against\n"
 "Legendre's integrals in Arb; the collisions by conservation of angular\n"
-"momentum about the new peg; @math{sigma_4} as @math{dH'/dH} of the\n"
+"momentum about the new peg, and the speed @math{V^-} before one from\n"
+"@math{E} and @math{H} at the end the peg leaves; @math{sigma_4} as\n"
+"@math{dH'/dH} of the\n"
 "collision at a fixed point, and @math{xi_4 = log(sigma_4)/tau^*} with\n"
 "@math{tau^* = Delta/|V^*|}.  Every reference value carries at least 64\n"
 "correct bits.\n"
@@ -2074,7 +2561,8 @@ write_table (const char *path, int level)
 "respect to those inputs (@math{E} and @math{H} for the return map;\n"
 "@math{L_0}, @math{D_0}, @math{V_0}, @math{Omega_0} and @math{D} for a\n"
 "leg; @math{theta} or @math{tau} as well for @math{theta'} and\n"
-"@math{tau'}), computed by the oracle: where it is large the exact result\n"
+"@math{tau'}; for the slow starts, see their data sets), computed by the\n"
+"oracle: where it is large the exact result\n"
 "for the double inputs moves by @math{kappa eps} relative when they move\n"
 "by an ulp, and no double-precision algorithm can be expected to do much\n"
 "better than that.  The checks of the program require an error of at most\n"
@@ -2084,10 +2572,12 @@ write_table (const char *path, int level)
 "followed for 4 collisions from each start on the sets other than\n"
 "near-reversal, near-spinning, reversal at an ulp and spinning at an ulp,\n"
 "each step compared from the library's own input state; for one\n"
-"collision on those four.  The parameter quantities (@math{sigma_4},\n"
-"@math{xi_4}, @math{C_1}, @math{C_2}) have no state, and the five sets\n"
-"that differ from others only in their states (those four and tiny\n"
-"@math{H}) do not apply to them.  The data sets (fixed seeds):\n"
+"collision on those four; the three slow-start sets compare the first\n"
+"collision from a phase state instead.  The parameter quantities\n"
+"(@math{sigma_4}, @math{xi_4}, @math{C_1}, @math{C_2}) have no state, and\n"
+"the eight sets that differ from others only in their states (those\n"
+"four, tiny @math{H} and the slow starts) do not apply to them.  The data\n"
+"sets (fixed seeds):\n"
 "\n"
 "@table @asis\n"
 "@item ordinary\n"
@@ -2163,6 +2653,48 @@ write_table (const char *path, int level)
 "@math{u = ulp(E)/E} (@math{2^(-53)} to @math{2^(-52)}): @math{E} is\n"
 "@math{H^2/2} moved by @math{k} ulps (@math{H^2/2} exact for half of the\n"
 "states, whose @math{H} has a 25-bit significand).\n"
+"@item slow start\n"
+"the first collision from a post-collision phase state\n"
+"@math{(D_0, V_0, theta = 0, Omega_0)} (@math{D_0 = 0} for\n"
+"@math{V_0 > 0}, @math{Delta} for @math{V_0 < 0}) through\n"
+"@code{chaplygin_discrete_state_from_phase} and\n"
+"@code{chaplygin_discrete_step} (heading and time), with\n"
+"@math{|V_0| = r |l_0 Omega_0|}, @math{r = f 10^(-k)},\n"
+"@math{k = 3 ... 12}, @math{f} in @math{[1, 10)}: slow starts, where\n"
+"@math{E} and @math{H} alone do not hold @math{V_0} (the state's\n"
+"@code{V} does).  Starts with @math{|l_0| >= 1/2}\n"
+"(@math{l_0 = L_0 + D_0}), both directions: fixed slots (the mass centre\n"
+"inside the slot, where both directions reverse, once with\n"
+"@math{1 + L_0 (L_0 + Delta) = 0.01}, so that the collision after the\n"
+"reversal takes all but @math{10^(-4)} of the energy; slots on either side\n"
+"of it, where one direction reverses and the other moves away from\n"
+"@math{l = 0}; @math{|l_0|} near 1237), and at level 2 seventy more\n"
+"drawn as for ordinary and tiny @math{|L_0|}, with\n"
+"@math{|Omega_0| sqrt(1 + l_0^2)} in @math{[0.05, 2]}.  The oracle forms\n"
+"@math{E} and @math{H} exactly from the double inputs by (3.3) and\n"
+"(3.4), not rounded to doubles, and integrates from there as for the\n"
+"other sets: the reference is that of the phase state.\n"
+"@math{theta'} and @math{tau'} (the increments: @math{theta = tau = 0}),\n"
+"@math{V^-} and @math{D_c} have @math{kappa} with respect to @math{V_0}\n"
+"and @math{Omega_0}, which determine them and from which the library\n"
+"forms the first three (the state's @code{V}); @math{E'} and @math{H'}\n"
+"with respect to @math{E} and @math{H}, from which the library forms\n"
+"them by design (@pxref{Reduction between collisions}), as in the other\n"
+"sets (the half-ulp rounding of @math{E} and @math{H} by\n"
+"@code{chaplygin_discrete_state_from_phase} is within the rule's\n"
+"backward error).  The leg tables have the leg of\n"
+"@code{chaplygin_discrete_heading} from the same phase state to the far\n"
+"end, or half way to the turning point where a double lies between.\n"
+"@item slow start, tiny @math{V_0}\n"
+"as slow start, with @math{|V_0| = f 10^(-k)}, @math{k = 20}, 50, 100,\n"
+"200, 300, and @code{DBL_MIN} (@math{2^(-1022)}) exactly and its\n"
+"successor.\n"
+"@item slow start near @math{l = 0}\n"
+"both ladders, from starts with @math{|l_0| < 1/2}: fixed\n"
+"@math{|l_0| = 3.3 10^(-5)}, @math{10^(-4)}, 0.3, @math{10^(-12)} and\n"
+"@math{2^(-29)}, toward @math{l = 0} and away from it, and at level 2 the\n"
+"random slots' starts with @math{|l_0| < 1/2}.  Known failures of the\n"
+"library: below.\n"
 "@end table\n"
 "\n", level, level == 2 ? "CHAPLYGIN_VERIFY_LEVEL=2 " : "");
   for (int q = 0; q < NQ; q++)
@@ -2173,7 +2705,7 @@ write_table (const char *path, int level)
                "@tab Max @math{kappa}\n");
       for (int s = 0; s < NS; s++)
         if (quantity_sets (q, s) && st[M_CF][q][s].n > 0)
-          texi_row (f, stexi[s], &st[M_CF][q][s]);
+          texi_row (f, M_CF, q, s, &st[M_CF][q][s]);
       fprintf (f, "@end multitable\n\n");
     }
   for (int me = 1; me < NM; me++)
@@ -2185,7 +2717,8 @@ write_table (const char *path, int level)
       if (!any)
         continue;
       fprintf (f, "@subheading Method @code{%s}\n\n"
-               "The same legs, and the first step of each orbit, with the\n"
+               "The same legs, the first step of each orbit and the slow\n"
+               "starts, with the\n"
                "method @code{%s} at @math{tol = 10^(-13)} (the checks allow\n"
                "@math{20 (tol/eps)(1 + kappa)} ulps).\n\n",
                me == M_QUAD ? "CHAPLYGIN_QUADRATURE" : "CHAPLYGIN_ODE",
@@ -2203,7 +2736,7 @@ write_table (const char *path, int level)
                    "ulps @tab Max @math{kappa}\n", qtexi[q]);
           for (int s = 0; s < NS; s++)
             if (st[me][q][s].n > 0)
-              texi_row (f, stexi[s], &st[me][q][s]);
+              texi_row (f, me, q, s, &st[me][q][s]);
           fprintf (f, "@end multitable\n\n");
         }
     }
@@ -2221,13 +2754,77 @@ write_table (const char *path, int level)
              "Not in the tables: %ld legs or steps that the ODE method\n"
              "declined with @code{CHAPLYGIN_ENOCONV} (legs ending within its\n"
              "integration error of a turning point, or needing more than\n"
-             "@math{10^5} steps), and %ld legs ending within rounding of a\n"
+             "@math{10^5} steps; and %ld slow starts, @pxref{Known\n"
+             "failures}), and %ld legs ending within rounding of a\n"
              "turning point (@math{V(D)^2 < 16 eps 2E}), or through\n"
              "@math{l = 0} within rounding of the spinning condition\n"
              "(@math{|1 - H^2/(2E)| < 16 eps}), that\n"
              "@code{chaplygin_discrete_heading} rejected with\n"
-             "@code{CHAPLYGIN_ESTATE} (closed form; %ld with quadrature).\n",
-             n_ode_declined, n_reject_rounding[M_CF], n_reject_rounding[M_QUAD]);
+             "@code{CHAPLYGIN_ESTATE} (closed form; %ld with quadrature).\n\n",
+             n_ode_declined, n_ode_declined_slow, n_reject_rounding[M_CF],
+             n_reject_rounding[M_QUAD]);
+  if (set_ran[S_SLOW] && set_ran[S_TINYV] && set_ran[S_SLOWNEAR])
+    {
+      const stat_t *kd = &st_known[KF_DC], *ks = &st_known[KF_SUBNORMAL];
+      char dc_max[160];
+      if (isfinite (kd->max))
+        snprintf (dc_max, sizeof dc_max, "%.3g ulps", kd->max);
+      else
+        snprintf (dc_max, sizeof dc_max, "beyond @math{10^308} ulps (a\n"
+                  "reference below the subnormals, returned as about\n"
+                  "@math{10^(-13)})");
+      const double near_max
+        = fmax (fmax (st[M_CF][Q_THETA][S_SLOWNEAR].max,
+                      st[M_CF][Q_TAU][S_SLOWNEAR].max),
+                fmax (st[M_QUAD][Q_THETA][S_SLOWNEAR].max,
+                      st[M_QUAD][Q_TAU][S_SLOWNEAR].max));
+      fprintf (f,
+"@anchor{Known failures}\n"
+"@subheading Known failures\n"
+"@cindex known failures\n"
+"@cindex slow start, known failures\n"
+"\n"
+"The slow-start sets found failures of the library (issue 16).  The\n"
+"program checks them like the rest, as TAP TODO items: automake counts\n"
+"them as expected failures (@code{XFAIL}), and one that starts to pass\n"
+"(@code{XPASS}) fails the program, so that this list stays current.\n"
+"\n"
+"@itemize @bullet\n"
+"@item\n"
+"Near @math{l = 0} the step forms @math{1 - h^2} from the rounded\n"
+"@math{E} and @math{H}, although the state knows @math{V^+}: for a slow\n"
+"start @math{1 - h^2 = g(l_0) - l_0^2 ~ -l_0^2}, so @math{theta'} and\n"
+"@math{tau'} lose about @math{eps/l_0^2} relative (the rows ``slow start\n"
+"near @math{l = 0}'' of the closed form and quadrature: up to %.3g ulps),\n"
+"and at @math{|l_0| = 10^(-12)} the reversal is missed: %ld of the\n"
+"library's steps (closed form and quadrature) went on to the far end\n"
+"where the motion turns back (not in the tables).\n"
+"@item\n"
+"@math{D_c} of a slow reversal is formed from @math{E} and @math{H} as\n"
+"@math{sgn(l_0) sqrt(h^2 - 1) - L_0}, not from @math{V^+}: the motion\n"
+"turns within about @math{(V_0/(l_0 Omega_0))^2 |l_0|/2} of the start,\n"
+"and that form's absolute error of about @math{eps |l_0|} leaves no\n"
+"relative accuracy from @math{D^+ = 0} (0 or @math{-3 10^(-16)} where\n"
+"@math{D_c = 1.5 10^(-19)}) and about @math{|l_0|/D_c} ulps from\n"
+"@math{D^+ = Delta}: %ld points (every method), kept out of the tables;\n"
+"the largest error %s.\n"
+"@item\n"
+"Where @math{V_0/(E |l_0|)} is below @code{DBL_MIN}, the closed form's\n"
+"heading and time of a reversal at the start lose up to 7 bits (that\n"
+"quotient, an intermediate, is subnormal): %ld points, up to %.3g ulps\n"
+"(@math{|l_0| = 1237}, @math{V_0} the successor of @code{DBL_MIN}), kept\n"
+"out of the rows of ``slow start, tiny @math{V_0}''.\n"
+"@item\n"
+"The ODE method returns @math{|V^-|} of about @math{4 10^(-34)}, with\n"
+"heading and time to match and status success, whatever @math{V_0} below\n"
+"about @math{10^(-33)} (@math{|l_0 Omega_0|} of order 1), and\n"
+"@code{CHAPLYGIN_ENOCONV} below about @math{10^(-200)} (%ld slow\n"
+"starts): its rows ``slow start, tiny @math{V_0}'' and ``slow start near\n"
+"@math{l = 0}''.\n"
+"@end itemize\n",
+               near_max, n_slow_misclassified, kd->n, dc_max, ks->n, ks->max,
+               n_ode_declined_slow);
+    }
   return fclose (f) != 0;
 }
 
@@ -2375,11 +2972,20 @@ main (int argc, char **argv)
         continue;
       unsigned long long seed = 0x5eed0ac1eULL + 7919ULL * (unsigned) set;
       set_ran[set] = 1;
-      double a = now ();
-      run_legs (set, nl, &seed);
-      double b = now ();
-      run_steps (set, ill (set) ? 2 * no : no, ill (set) ? 1 : 4, &seed);
-      double c = now ();
+      double a = now (), b, c;
+      if (slow_set (set))
+        {
+          b = now ();
+          run_slow (set, level, &seed);
+          c = now ();
+        }
+      else
+        {
+          run_legs (set, nl, &seed);
+          b = now ();
+          run_steps (set, ill (set) ? 2 * no : no, ill (set) ? 1 : 4, &seed);
+          c = now ();
+        }
       if (!state_set (set))
         run_params (set, np, &seed);
       double d = now ();
@@ -2389,9 +2995,9 @@ main (int argc, char **argv)
     }
   double total = now () - t0;
   printf ("# level %d: %ld legs (%ld to turning points), %ld steps (%ld "
-          "reversals), %ld parameter points, %ld integrals, %.1f s\n", level,
-          n_legs, n_turning_legs, n_steps, n_reversals, n_params, n_integrals,
-          total);
+          "reversals), %ld slow starts (%ld reversals), %ld parameter points, "
+          "%ld integrals, %.1f s\n", level, n_legs, n_turning_legs, n_steps,
+          n_reversals, n_slow, n_slow_reversals, n_params, n_integrals, total);
 
   n_oracle_fail += n_fd_inaccurate;
   tap_check (n_oracle_fail == 0, n_oracle_fail, 0,
@@ -2421,6 +3027,26 @@ main (int argc, char **argv)
              "reversal flags and directions as the oracle decides them exactly; "
              "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
              n_spin_ok);
+  for (int k = 0; k < NKF; k++)
+    if (st_known[k].n > 0)
+      {
+        const stat_t *x = &st_known[k];
+        tap_check_todo (x->ratio <= 1, x->ratio, 1.0, why_known[k],
+                        "known failure, kept out of the rows: %s: %ld "
+                        "points (max kappa %.3g), max %.3g ulps; error / "
+                        "tolerance of the method", known_what[k], x->n,
+                        x->kmax, x->max);
+        if (x->ratio > 1)
+          printf ("# worst: %s\n", x->worst);
+      }
+  if (set_ran[S_SLOWNEAR])
+    tap_check_todo (n_slow_misclassified == 0, (double) n_slow_misclassified,
+                    0, why_near, "slow starts near l = 0: reversal flags as "
+                    "the oracle decides them exactly (%ld steps by the three "
+                    "methods from %ld starts misclassified%s%s)",
+                    n_slow_misclassified, n_slow_in[S_SLOWNEAR],
+                    n_slow_misclassified ? "; the first: " : "",
+                    slow_misclassified_first);
   if (use_method[M_ODE])
     {
       tap_check (n_f2 == 0, (double) n_f2, 0,
