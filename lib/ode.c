@@ -1,42 +1,54 @@
 /* ode.c -- integration of (3.1) with event location (the ODE method).
 
    The stepper is GSL's odeiv2 Runge-Kutta-Prince-Dormand 8(9) (rk8pd),
-   called step by step (gsl_odeiv2_step_apply); the loop around it is this
-   file's, not gsl_odeiv2_evolve_apply, for three measured costs of that
-   driver (the profile is in the manual, "ODE integration"): it evaluates
-   the field afresh at the start of every step although rk8pd's last
-   evaluation is exact there (one of every 14 evaluations); its error test
-   weighs each component against its value at the end of the step, so a
-   step that ends where d = D - D0 is back near 0 (every return to the
-   starting end) is rejected over and over; and it leaves the first step to
-   the caller.  The loop keeps GSL's scaled-control rule otherwise (S = 0.9,
-   a step rejected when the error ratio exceeds 1.1 and shrunk at most 5x,
-   grown at most 4.9x when below 0.5), weighs the error against the larger
+   called one step at a time (gsl_odeiv2_step_apply); the loop around it is
+   this file's rather than gsl_odeiv2_evolve_apply, whose design cost the
+   method most of its time (measured; the manual, "ODE integration"):
+   - evolve_apply (GSL 2.7) takes the derivative at the start of a step
+     from the end of its previous call (first same as last).  One evolve
+     object serving both the integration and the re-integrations of the
+     event location started the step after every located event from a
+     stale derivative: an error estimate of order h, 20 or more rejections
+     down to a step of ~1e-10, ten steps to grow back, and accepted steps
+     carrying errors up to tol;
+   - its error test weighs each component against its value at the end of
+     the step alone, so a re-integration ending where d = D - D0 is back
+     at 0 (every return to the starting end) is rejected over and over;
+   - the first step is the caller's (1e-3 of the span here before): four
+     or five steps of growth before the step the tolerance allows.
+   The loop keeps GSL's scaled-control rule (S = 0.9; a step rejected when
+   the error ratio exceeds 1.1 and shrunk at most 5x; grown at most 4.9x
+   when the ratio is below 0.5), weighs the error against the larger
    magnitude of each component at the two ends of the step (as Hairer's
-   codes do), reuses the last evaluation, and chooses the first step by the
-   starting-step algorithm of Hairer, Norsett and Wanner.
+   codes do), carries the exact derivative from one step to the next, and
+   chooses the first step by the starting-step algorithm of Hairer,
+   Norsett and Wanner.
 
    Events: GSL's odeiv2 has no event location.  Once a step crosses an
    event surface (D at a bound, or V = 0), the event time is found by
    Newton's method on the event function, safeguarded by the bracket of
    the step, each iterate obtained by re-integrating from the start of the
    step (the derivatives of the event functions are known: dD/dtau = V,
-   dV/dtau = (L0 + D) Omega^2).  The first iterate is the root of the cubic
-   Hermite interpolant of the event function over the step (its values and
-   derivatives at the ends: no evaluation); each re-integration is one
-   rk8pd step, shorter than the accepted step it lies in, whose error
-   estimate must pass the same test (else the controlled loop integrates
-   to it).  Unlike Henon's trick (the event coordinate as independent
-   variable), this stays accurate when V is small all along the last
-   stretch, as it is near a turning point.
+   dV/dtau = (L0 + D) Omega^2).  The first iterate is the root of the
+   quintic Hermite interpolant of the event function over the step (its
+   value and first two derivatives at both ends, from the states and the
+   field there: no evaluation); each re-integration is one rk8pd step,
+   shorter than the accepted step it lies in, whose error estimate must
+   pass the same test (else the controlled loop integrates to it); the
+   last Newton correction, once its second-order term is below 2^-60 of
+   the state, is applied as a first-order Taylor step (one evaluation).
+   Unlike Henon's trick (the event coordinate as independent variable),
+   this stays accurate when V is small all along the last stretch, as it
+   is near a turning point.
 
    Velocity scaling (a symmetry of (3.1): V, Omega -> lambda V, lambda Omega,
    tau -> tau/lambda) brings every problem to energy 1/2 before integrating,
    so that one absolute tolerance fits all.
 
-   Allocation: the rk8pd stepper is allocated per call.  GSL's allocators
-   report failure through its error handler; this is the one place where the
-   library cannot pre-empt the handler (see the manual, "Errors").  */
+   Allocation: the rk8pd stepper is allocated per call (16 blocks, GSL's
+   design).  GSL's allocators report failure through its error handler;
+   this is the one place where the library cannot pre-empt the handler
+   (see the manual, "Errors").  */
 #include <config.h>
 
 #include <float.h>
