@@ -4,9 +4,10 @@
 ## Arb oracle (verification/oracle --refs) and writes the committed results:
 ## bench/work-precision.csv, doc/bench-table.texi (the manual's table) and
 ## doc/figures/work-precision.png (gnuplot).  Where a Python 3 with SciPy is
-## found (PYTHON, python3, /usr/bin/python3: the first that imports
-## scipy.integrate), bench/scipy-ivp.py adds the rows of SciPy's solve_ivp
-## (DOP853) on the same states; without it they are skipped, and said so.
+## found (BENCH_PYTHONS: PYTHON, python3, /usr/bin/python3, the first
+## that imports scipy.integrate), bench/scipy-ivp.py adds the rows of
+## SciPy's solve_ivp (DOP853) on the same states; without it they are
+## skipped, and said so.
 ## Not part of `make check'.
 noinst_PROGRAMS += bench/work-precision
 bench_work_precision_SOURCES = bench/work-precision.c verification/tap.h
@@ -26,6 +27,9 @@ GNUPLOT = gnuplot
 BENCH_STATES = bench/work-precision-states.txt
 BENCH_REFS = bench/work-precision-refs.txt
 BENCH_SCIPY = bench/work-precision-scipy.txt
+# the interpreters tried for the SciPy rows, in order (BENCH_PYTHONS=none:
+# skip them)
+BENCH_PYTHONS = $(PYTHON) python3 /usr/bin/python3
 CLEANFILES += $(BENCH_STATES) $(BENCH_REFS) $(BENCH_SCIPY)
 
 bench: bench/work-precision
@@ -39,7 +43,7 @@ bench: bench/work-precision
 	./bench/work-precision --states $(BENCH_STATES)
 	./verification/oracle --refs $(BENCH_STATES) $(BENCH_REFS)
 	@rm -f $(BENCH_SCIPY); py=; \
-	for p in $(PYTHON) python3 /usr/bin/python3; do \
+	for p in $(BENCH_PYTHONS); do \
 	  if "$$p" -c 'import scipy.integrate' >/dev/null 2>&1; then \
 	    py=$$p; break; fi; \
 	done; \

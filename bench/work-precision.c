@@ -1130,7 +1130,7 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
     }
   else
     fprintf (f, "  No scipy-dop853 rows in this run: no Python 3 with SciPy "
-             "was found (@pxref{Measured figures}).");
+             "was found (@pxref{What is timed}).");
   size_t mm = 0, cf = 0;
   for (int i = 0; i < n; i++)
     {
