@@ -3,14 +3,20 @@
 ## every method and setting of the library, measures the errors against the
 ## Arb oracle (verification/oracle --refs) and writes the committed results:
 ## bench/work-precision.csv, doc/bench-table.texi (the manual's table) and
-## doc/figures/work-precision.png (gnuplot).  Not part of `make check'.
+## doc/figures/work-precision.png (gnuplot).  Where a Python 3 with SciPy is
+## found (BENCH_PYTHONS: PYTHON, python3, /usr/bin/python3, the first
+## that imports scipy.integrate), bench/scipy-ivp.py adds the rows of
+## SciPy's solve_ivp (DOP853) on the same states; without it they are
+## skipped, and said so.
+## Not part of `make check'.
 noinst_PROGRAMS += bench/work-precision
 bench_work_precision_SOURCES = bench/work-precision.c verification/tap.h
 bench_work_precision_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/verification \
 	-DBENCH_CFLAGS='"$(CFLAGS)"'
 bench_work_precision_LDADD = lib/libchaplygin.la $(CODE_COVERAGE_LIBS) -lm
 
-EXTRA_DIST += bench/work-precision.gp bench/work-precision.csv
+EXTRA_DIST += bench/work-precision.gp bench/work-precision.csv \
+	bench/scipy-ivp.py
 
 if HAVE_ARB
 BENCH_HAVE_ARB = yes
@@ -20,7 +26,11 @@ endif
 GNUPLOT = gnuplot
 BENCH_STATES = bench/work-precision-states.txt
 BENCH_REFS = bench/work-precision-refs.txt
-CLEANFILES += $(BENCH_STATES) $(BENCH_REFS)
+BENCH_SCIPY = bench/work-precision-scipy.txt
+# the interpreters tried for the SciPy rows, in order (BENCH_PYTHONS=none:
+# skip them)
+BENCH_PYTHONS = $(PYTHON) python3 /usr/bin/python3
+CLEANFILES += $(BENCH_STATES) $(BENCH_REFS) $(BENCH_SCIPY)
 
 bench: bench/work-precision
 	@if test $(BENCH_HAVE_ARB) != yes; then \
@@ -32,9 +42,25 @@ bench: bench/work-precision
 	$(MAKE) $(AM_MAKEFLAGS) verification/oracle
 	./bench/work-precision --states $(BENCH_STATES)
 	./verification/oracle --refs $(BENCH_STATES) $(BENCH_REFS)
+	@rm -f $(BENCH_SCIPY); py=; \
+	for p in $(BENCH_PYTHONS); do \
+	  if "$$p" -c 'import scipy.integrate' >/dev/null 2>&1; then \
+	    py=$$p; break; fi; \
+	done; \
+	if test -n "$$py"; then \
+	  echo "$$py $(srcdir)/bench/scipy-ivp.py $(BENCH_STATES) $(BENCH_REFS)" \
+	    "$(BENCH_SCIPY)"; \
+	  "$$py" $(srcdir)/bench/scipy-ivp.py $(BENCH_STATES) $(BENCH_REFS) \
+	    $(BENCH_SCIPY) || exit 1; \
+	else \
+	  echo "make bench: no Python 3 with SciPy found (Debian:" \
+	    "apt-get install python3-scipy): the SciPy solve_ivp rows are" \
+	    "skipped"; \
+	fi
 	./bench/work-precision --states-in $(BENCH_STATES) --refs $(BENCH_REFS) \
 	  --csv $(srcdir)/bench/work-precision.csv \
-	  --texi $(srcdir)/doc/bench-table.texi
+	  --texi $(srcdir)/doc/bench-table.texi \
+	  `test -s $(BENCH_SCIPY) && echo --scipy $(BENCH_SCIPY)`
 	$(GNUPLOT) -e "csv = '$(srcdir)/bench/work-precision.csv'" \
 	  -e "png = '$(srcdir)/doc/figures/work-precision.png'" \
 	  $(srcdir)/doc/figures/style.gp $(srcdir)/bench/work-precision.gp

@@ -316,7 +316,8 @@ typedef enum
   ROW_BASELINE,
   ROW_EH,
   ROW_EHN,                      /* chaplygin_discrete_step_eh_n */
-  ROW_FULL
+  ROW_FULL,
+  ROW_SCIPY                     /* measured by bench/scipy-ivp.py */
 } row_kind;
 
 /* The collisions of a long orbit (diagnostic rows): from each scene's
@@ -546,9 +547,10 @@ typedef struct
   double kappa_at_max;          /* kappa of the worst theta/tau error */
   size_t over16;                /* theta/tau errors above 16 eps */
   size_t failures, mismatches;
+  size_t ext_states;            /* ROW_SCIPY: the states it timed */
 } row_t;
 
-#define MAX_ROWS 32
+#define MAX_ROWS 48
 
 static row_t *
 add_row (row_t *rows, int *n, const char *method, const char *setting,
@@ -565,8 +567,65 @@ add_row (row_t *rows, int *n, const char *method, const char *setting,
   return r;
 }
 
-/* The rows of the table, then the diagnostic rows: baseline and eh-only
-   timed on independent states. */
+/* The SciPy rows (bench/scipy-ivp.py's output, see there): one line per
+   rtol after comment lines, the first of which (versions and settings) is
+   kept for the manual in note.  Appended to rows; -1 on a malformed file. */
+static int
+read_scipy (const char *path, row_t *rows, int n, bench *b, char *note,
+            size_t note_size)
+{
+  FILE *f = open_file (path, "r");
+  if (!f)
+    return -1;
+  char line[512];
+  int bad = 0;
+  while (!bad && fgets (line, sizeof line, f))
+    {
+      line[strcspn (line, "\n")] = '\0';
+      if (line[0] == '#')
+        {
+          if (!note[0])
+            snprintf (note, note_size, "%s", line + 1 + (line[1] == ' '));
+          continue;
+        }
+      double rtol, nmin, nmed, emax, emed, ekap, nfev;
+      long fails, mism, states, reps;
+      if (sscanf (line, "%lf %lf %lf %lf %lf %lf %ld %ld %ld %ld %lf", &rtol,
+                  &nmin, &nmed, &emax, &emed, &ekap, &fails, &mism, &states,
+                  &reps, &nfev) != 11 || n == MAX_ROWS || reps < 1
+          || reps > REPS || states < 1)
+        {
+          bad = 1;
+          break;
+        }
+      row_t *r = &rows[n++];
+      memset (r, 0, sizeof *r);
+      r->method = "scipy-dop853";
+      snprintf (r->setting, sizeof r->setting, "%.0e", rtol);
+      r->kind = ROW_SCIPY;
+      r->b = b;
+      r->ns_min = nmin;
+      r->ns_med = nmed;
+      r->max_err = r->max_tt = emax;
+      r->med_err = emed;
+      r->max_eh = NAN;
+      r->max_kappa_eps = ekap;
+      r->failures = (size_t) fails;
+      r->mismatches = (size_t) mism;
+      r->ext_states = (size_t) states;
+      r->passes = 1;
+      r->reps = reps;
+    }
+  if (ferror (f))
+    bad = 1;
+  fclose (f);
+  if (bad)
+    fprintf (stderr, "work-precision: %s: malformed SciPy results\n", path);
+  return bad ? -1 : n;
+}
+
+/* The rows of the table (make_diag_rows adds the diagnostic rows:
+   baseline and eh-only timed on independent states). */
 static int
 make_rows (row_t *rows, bench *b)
 {
@@ -594,6 +653,13 @@ make_rows (row_t *rows, bench *b)
       r->opt.method = CHAPLYGIN_ODE;
       r->opt.tol = to[j];
     }
+  return n;
+}
+
+/* The diagnostic rows, after the n rows of the table. */
+static int
+make_diag_rows (row_t *rows, int n, bench *b)
+{
   add_row (rows, &n, "baseline", "indep.", ROW_BASELINE, b)->diag = 1;
   add_row (rows, &n, "eh-only", "indep.", ROW_EH, b)->diag = 1;
   add_row (rows, &n, "baseline", "orbit", ROW_BASELINE, b)->diag = 2;
@@ -711,6 +777,8 @@ timed_pass_of (const row_t *r)
 static void
 prepare_row (row_t *r, double *scratch)
 {
+  if (r->kind == ROW_SCIPY)
+    return;                     /* measured by bench/scipy-ivp.py */
   bench *b = r->b;
   pass_fn pass = pass_of (r);
   memset (b->rc, 0, b->n * sizeof *b->rc);
@@ -734,6 +802,8 @@ prepare_row (row_t *r, double *scratch)
 static void
 time_rep (row_t *r, long k)
 {
+  if (r->kind == ROW_SCIPY)
+    return;
   pass_fn pass = timed_pass_of (r);
   double t0 = now ();
   for (long j = 0; j < r->passes; j++)
@@ -748,6 +818,8 @@ time_rep (row_t *r, long k)
 static void
 summarize_row (row_t *r)
 {
+  if (r->kind == ROW_SCIPY)
+    return;
   double t[REPS];
   memcpy (t, r->ns, r->reps * sizeof *t);
   r->ns_med = median (t, r->reps);
@@ -786,6 +858,7 @@ typedef struct
   const row_t *ibase, *ieh;     /* diagnostic rows: independent states */
   const row_t *ehn;             /* eh-only in n steps per call */
   const row_t *lbase, *leh, *lehn;      /* diagnostic rows: long orbits */
+  const row_t *scipy;           /* SciPy's DOP853 at rtol 1e-12, or NULL */
 } targets_t;
 
 static targets_t
@@ -816,6 +889,11 @@ find_targets (const row_t *rows, int n)
       t.eh = &rows[i];
     else if (rows[i].kind == ROW_EHN)
       t.ehn = &rows[i];
+    else if (rows[i].kind == ROW_SCIPY)
+      {
+        if (!strcmp (rows[i].setting, "1e-12"))
+          t.scipy = &rows[i];
+      }
     else if (!strcmp (rows[i].method, "closed-form")
              && rows[i].opt.precision == CHAPLYGIN_PREC_DOUBLE)
       t.cf = &rows[i];
@@ -884,6 +962,24 @@ print_targets (FILE *f, const targets_t *t, int texi)
                q >= 100 && t->ode_reaches ? "met" : "NOT met",
                t->cf->max_err, t->ode->max_err);
     }
+  if (t->cf && t->scipy)
+    {
+      double q = t->scipy->ns_min / t->cf->ns_min;
+      int better = t->cf->max_tt < t->scipy->max_err;
+      fprintf (f, "%sclosed-form (double) against SciPy solve_ivp (DOP853, "
+               "rtol 1e-12; one segment from each of %zu of the states, timed "
+               "by bench/scipy-ivp.py): %.3g ns against %.3g ns per "
+               "collision, %.0f times faster, heading and time error %.2g "
+               "against %.2g (target %s 10000 times faster at better error: "
+               "%s)\n", item, t->scipy->ext_states, t->cf->ns_min,
+               t->scipy->ns_min, q, t->cf->max_tt, t->scipy->max_err, ge,
+               q >= 10000 && better ? "met" : "NOT met");
+    }
+  else if (t->cf)
+    fprintf (f, "%sclosed-form (double) against SciPy solve_ivp (DOP853, "
+             "rtol 1e-12): not measured, no Python 3 with SciPy in this run "
+             "(target %s 10000 times faster at better error: not checked)\n",
+             item, ge);
   if (t->cf)
     fprintf (f, "%sclosed-form (double) heading and time increments: max "
              "error %.3g eps (kappa %.3g there), %zu of the states above 16 "
@@ -908,15 +1004,20 @@ write_csv (const char *path, const row_t *rows, int n)
       const row_t *r = &rows[i];
       if (r->diag)
         continue;
-      fprintf (f, "%s,%s,%.4g,%.3g,%.3g,%.3g,", r->method, r->setting,
-               r->ns_min, r->max_err, r->med_err, r->max_eh);
-      if (r->kind == ROW_FULL)
+      fprintf (f, "%s,%s,%.4g,%.3g,%.3g,", r->method, r->setting,
+               r->ns_min, r->max_err, r->med_err);
+      if (r->kind == ROW_SCIPY)
+        fprintf (f, "-,");      /* heading and time only */
+      else
+        fprintf (f, "%.3g,", r->max_eh);
+      if (r->kind == ROW_FULL || r->kind == ROW_SCIPY)
         fprintf (f, "%.3g,%.3g,", r->max_tt, r->max_kappa_eps);
       else
         fprintf (f, "-,-,");
+      const size_t states = r->kind == ROW_SCIPY ? r->ext_states : r->b->n;
       fprintf (f, "%.4g,%.3g,%zu,%zu,%zu,%ld,%ld,min of %ld\n", r->ns_med,
                r->ns_min / rows[0].ns_min, r->failures, r->mismatches,
-               r->b->n, r->passes * (long) r->b->n, r->reps, r->reps);
+               states, r->passes * (long) states, r->reps, r->reps);
     }
   int bad = ferror (f);
   return fclose (f) != 0 || bad ? 2 : 0;
@@ -943,7 +1044,7 @@ texi_ns (FILE *f, double x)
 
 static int
 write_texi (const char *path, const bench *b, const row_t *rows, int n,
-            const targets_t *t)
+            const targets_t *t, const char *scipy_note)
 {
   FILE *f = open_file (path, "w");
   if (!f)
@@ -968,7 +1069,7 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
              "%zu spinning, %zu invalid, %zu inaccurate)", b->lines - b->n,
              b->n_spin, b->n_bad, b->n_fail);
   fprintf (f, ".\n\n");
-  fprintf (f, "@multitable {closed-form} {double} {ns/coll.} {median} "
+  fprintf (f, "@multitable {scipy-dop853} {double} {ns/coll.} {median} "
            "{15600} {max.@: error} {median error} {err./(kappa eps)} "
            "{fail.}\n");
   fprintf (f, "@headitem method @tab setting @tab ns/coll. @tab median "
@@ -986,7 +1087,7 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
       fprintf (f, " @tab ");
       texi_ns (f, r->ns_min / rows[0].ns_min);
       fprintf (f, " @tab %.2g @tab %.2g @tab ", r->max_err, r->med_err);
-      if (r->kind == ROW_FULL)
+      if (r->kind == ROW_FULL || r->kind == ROW_SCIPY)
         fprintf (f, "%.3g", r->max_kappa_eps);
       else
         fprintf (f, "-");
@@ -1002,8 +1103,11 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
            "error in units of @math{eps max(1, kappa)}; fail.: steps that "
            "returned an error status.  Collisions per repetition (passes over "
            "all the scenes' collisions):", rows[0].reps);
+  const row_t *sp = NULL;
   for (int i = 0, first = 1; i < n; i++)
-    if (!rows[i].diag)
+    if (rows[i].kind == ROW_SCIPY)
+      sp = sp ? sp : &rows[i];
+    else if (!rows[i].diag)
       {
         fprintf (f, "%s %s%s%s %ld", first ? "" : ",", rows[i].method,
                  rows[i].kind == ROW_FULL ? " " : "",
@@ -1012,6 +1116,21 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
         first = 0;
       }
   fprintf (f, ".");
+  if (sp)
+    {
+      fprintf (f, "  The scipy-dop853 rows (setting: rtol) come from "
+               "@file{bench/scipy-ivp.py} (");
+      texi_puts (f, scipy_note);
+      fprintf (f, "): SciPy's @code{solve_ivp} integrating (3.1) over one "
+               "segment from each of %zu of the states, in its own process "
+               "before this program's rounds; ns/coll.@: is the time per "
+               "segment, minimum and median over %ld rounds; the errors are "
+               "those of the heading and time increments only.",
+               sp->ext_states, sp->reps);
+    }
+  else
+    fprintf (f, "  No scipy-dop853 rows in this run: no Python 3 with SciPy "
+             "was found (@pxref{What is timed}).");
   size_t mm = 0, cf = 0;
   for (int i = 0; i < n; i++)
     {
@@ -1059,16 +1178,23 @@ print_table (const bench *b, const row_t *rows, int n)
         printf ("diagnostic rows (not in the CSV): orbits of %d collisions "
                 "from each scene's first state (timing only; errors: one "
                 "step from each state)\n", LONG_ORBIT);
-      printf ("%-11s %-7s %9.4g %9.4g %7.3g %9.2e %9.2e %9.2e ", r->method,
-              r->setting, r->ns_min, r->ns_med, r->ns_min / rows[0].ns_min,
-              r->max_err, r->med_err, r->max_eh);
-      if (r->kind == ROW_FULL)
+      printf ("%-11s %-7s %9.4g %9.4g %7.3g %9.2e %9.2e ",
+              r->kind == ROW_SCIPY ? "scipy" : r->method, r->setting,
+              r->ns_min, r->ns_med, r->ns_min / rows[0].ns_min, r->max_err,
+              r->med_err);
+      if (r->kind == ROW_SCIPY)
+        printf ("%9s ", "-");
+      else
+        printf ("%9.2e ", r->max_eh);
+      if (r->kind == ROW_FULL || r->kind == ROW_SCIPY)
         printf ("%9.2e %10.3g ", r->max_tt, r->max_kappa_eps);
       else
         printf ("%9s %10s ", "-", "-");
-      printf ("%5zu %5zu %ld x %ld\n", r->failures, r->mismatches, r->reps,
-              r->passes * (r->diag == 2 ? (long) r->b->nscenes * LONG_ORBIT
-                           : (long) r->b->n));
+      printf ("%5zu %5zu %ld x %ld%s\n", r->failures, r->mismatches, r->reps,
+              r->kind == ROW_SCIPY ? (long) r->ext_states
+              : r->passes * (r->diag == 2 ? (long) r->b->nscenes * LONG_ORBIT
+                             : (long) r->b->n),
+              r->kind == ROW_SCIPY ? " segments (bench/scipy-ivp.py)" : "");
     }
 }
 
@@ -1076,8 +1202,8 @@ static int
 usage (const char *p)
 {
   fprintf (stderr, "usage: %s --states OUT [--scenes S] [--collisions K]\n"
-           "       %s --states-in IN --refs REFS --csv OUT [--texi OUT]\n",
-           p, p);
+           "       %s --states-in IN --refs REFS --csv OUT [--texi OUT] "
+           "[--scipy RESULTS]\n", p, p);
   return 2;
 }
 
@@ -1085,7 +1211,7 @@ int
 main (int argc, char **argv)
 {
   const char *states = NULL, *states_in = NULL, *refs = NULL, *csv = NULL;
-  const char *texi = NULL;
+  const char *texi = NULL, *scipy = NULL;
   int scenes = SCENES, collisions = COLLISIONS;
   for (int i = 1; i < argc; i++)
     {
@@ -1103,6 +1229,8 @@ main (int argc, char **argv)
         csv = v;
       else if (!strcmp (a, "--texi"))
         texi = v;
+      else if (!strcmp (a, "--scipy"))
+        scipy = v;
       else if (!strcmp (a, "--scenes") && atoi (v) > 0)
         scenes = atoi (v);
       else if (!strcmp (a, "--collisions") && atoi (v) > 0)
@@ -1129,7 +1257,12 @@ main (int argc, char **argv)
   if (!scratch)
     return 2;
   row_t rows[MAX_ROWS];
+  char scipy_note[400] = "";
   int n = make_rows (rows, &b);
+  if (scipy && (n = read_scipy (scipy, rows, n, &b, scipy_note,
+                                sizeof scipy_note)) < 0)
+    return 1;
+  n = make_diag_rows (rows, n, &b);
   for (int i = 0; i < n; i++)
     prepare_row (&rows[i], scratch);
   /* in rounds over all rows, so that a disturbance of the machine weighs
@@ -1149,7 +1282,7 @@ main (int argc, char **argv)
       fprintf (stderr, "work-precision: error writing %s\n", csv);
       return 2;
     }
-  if (texi && write_texi (texi, &b, rows, n, &t))
+  if (texi && write_texi (texi, &b, rows, n, &t, scipy_note))
     {
       fprintf (stderr, "work-precision: error writing %s\n", texi);
       return 2;

@@ -2,7 +2,8 @@
 # doc/figures/style.gp): max relative error (x) against ns per collision
 # (y), log-log, one curve per method swept over its tolerance or precision
 # (labelled; labels of points of a method at the same error are stacked
-# below the first), the baseline and eh-only rows as points.
+# below the first), the baseline and eh-only rows as points; SciPy's
+# solve_ivp rows (bench/scipy-ivp.py) where the CSV has them.
 #   gnuplot -e "csv = 'bench/work-precision.csv'" \
 #     -e "png = 'doc/figures/work-precision.png'" \
 #     doc/figures/style.gp bench/work-precision.gp
@@ -19,6 +20,10 @@ eps = 2.0**-52
 set arrow from eps, graph 0 to eps, graph 1 nohead dt 3 lc rgb '#888888'
 set label 'eps' at eps, graph 0.97 offset 0.5, 0 tc rgb '#888888'
 sel(m) = strcol('method') eq m ? column('max_rel_error') : NaN
+# the SciPy rows are there only where make bench found SciPy: their key
+# entry only then
+stats csv using (strcol('method') eq 'scipy-dop853' ? 1 : 0) name 'SCIPY' nooutput
+scipy_title = SCIPY_sum > 0 ? 'SciPy solve_ivp DOP853 (one segment), rtol' : ''
 # the y of a label: that of the point, or below the first point of a run
 # of points with the same error
 px = NaN; py = 0; j = 0; pm = ''
@@ -33,5 +38,7 @@ plot csv using (sel('ode')):'ns_per_collision' with linespoints pt 7 ps 1 lw 1.5
      csv using (sel('quadrature')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#1f3b73' notitle, \
      csv using (sel('closed-form')):'ns_per_collision' with linespoints pt 9 ps 1.6 lw 1.5 lc rgb '#27ae60' title 'closed-form (Carlson), precision', \
      csv using (sel('closed-form')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#27ae60' notitle, \
+     csv using (sel('scipy-dop853')):'ns_per_collision' with linespoints pt 11 ps 1 lw 1.5 dt 2 lc rgb '#d35400' title scipy_title noenhanced, \
+     csv using (sel('scipy-dop853')):(ylab(column('ns_per_collision'))):'setting' with labels @labels tc rgb '#d35400' notitle, \
      csv using (sel('eh-only')):'ns_per_collision' with points pt 13 ps 1.6 lc rgb '#8e44ad' title 'eh-only (E, H only; lower: n steps per call)', \
      csv using (sel('baseline')):'ns_per_collision' with points pt 3 ps 1.6 lc rgb 'black' title 'baseline (bare (E, H) arithmetic)'

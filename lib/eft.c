@@ -6,17 +6,6 @@
 
 #include "eft.h"
 
-/* chp_L_over_one_plus_sq: L/(1 + L^2), computed as 1/(L + 1/L) for |L| > 1
-   so that it neither overflows nor loses the leading digits; error within
-   2 ulps (two roundings in either branch plus the fma). */
-double
-chp_L_over_one_plus_sq (double L)
-{
-  if (fabs (L) <= 1.0)
-    return L / chp_one_plus_sq (L);
-  return 1.0 / (L + 1.0 / L);
-}
-
 /* chp_one_plus_L0_L0D: 1 + L0 (L0 + Delta).
    Method: (s, e) = TwoSum(L0, Delta) gives L0 + Delta = s + e exactly; then
    1 + L0 s + L0 e = fma(L0, s, 1) + L0 e.  The only errors are the two final

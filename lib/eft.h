@@ -104,8 +104,17 @@ chp_hypot (double a, double b)
   return hypot (a, b);
 }
 
-/* L/(1 + L^2) without overflow (eft.c). */
-double chp_L_over_one_plus_sq (double L);
+/* L/(1 + L^2), computed as 1/(L + 1/L) for |L| > 1 so that it neither
+   overflows nor loses the leading digits; error within 2 ulps (two
+   roundings in either branch plus the fma).  Inline: the ODE method
+   evaluates it in every evaluation of the field (3.1). */
+static inline double
+chp_L_over_one_plus_sq (double L)
+{
+  if (fabs (L) <= 1.0)
+    return L / chp_one_plus_sq (L);
+  return 1.0 / (L + 1.0 / L);
+}
 
 /* 1 + L0 (L0 + Delta), accurate to ~1 ulp of the result (eft.c). */
 double chp_one_plus_L0_L0D (double L0, double Delta);

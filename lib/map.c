@@ -167,12 +167,15 @@ lean_state_ok (const chaplygin_discrete *sys,
 }
 
 /* The ODE route for one step: integrate (3.1) from the post-collision phase
-   state to the slot end it leaves, then apply (3.6) and (3.3), (3.4). */
+   state to the slot end it leaves, then apply (3.6) and (3.3), (3.4).
+   *drift: the relative change of h^2 = H^2/(2E) over the integrated segment
+   (E and H are exact invariants of (3.1): the integration's own error in
+   them, at the end the peg leaves). */
 static int
 step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
           const chp_motion *m, double l0, double g0, double tol, int *iminus,
           double *Vminus, double *E1, double *H1, double *dtheta,
-          double *dtau)
+          double *dtau, double *drift)
 {
   double L0 = sys->L0, Delta = sys->Delta;
   double n0 = chp_one_plus_sq (l0);
@@ -190,6 +193,13 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   double q1[4], qp[4], t;
   int turned;
   CHP_TRY (chp_ode_until (L0, q0, k, 0.0, Delta, 0, tol, q1, &t, &turned));
+  double Em, Hm, Hs = ldexp (m->H, k);
+  CHP_TRY (chaplygin_discrete_energy (L0, q1[CHAPLYGIN_D], q1[CHAPLYGIN_V],
+                                      ldexp (q1[CHAPLYGIN_OMEGA], -k), &Em));
+  CHP_TRY (chaplygin_discrete_momentum (L0, q1[CHAPLYGIN_D],
+                                        q1[CHAPLYGIN_OMEGA], &Hm));
+  *drift = Hs != 0.0 && Em > 0.0
+    ? fabs ((Hm / Hs) * (Hm / Hs) * (m->E / Em) - 1.0) : 0.0;
   /* the integrated state at the end the peg leaves is one the collision
      rule refuses (V- = 0 or V-^2 < 0 by the integration's error: a
      turning point within that error of the end): the integration cannot
@@ -645,15 +655,22 @@ step_by_integrals (step_work *w)
 /* Phase 4, ODE: every output from the integration (step_ode); where the
    end it reaches contradicts the exact classification, the motion passes
    within the integration error of a turning point or of the spinning
-   state and the integration cannot be trusted. */
+   state and the integration cannot be trusted.  So too, on a segment
+   through l = 0, where the integration's own drift of h^2 (step_ode)
+   reaches the distance |1 - h^2| to the spinning state (3.8): it may then
+   have passed where the motion turns or turned where it passes, and it
+   resolves neither that nor the time, which grows like
+   log(1/|1 - h^2|). */
 static int
 step_by_ode (step_work *w)
 {
   int iminus;
+  double drift;
   CHP_TRY (step_ode (w->sys, w->in, &w->m, w->seg.l0, w->gv0, w->o.tol,
                      &iminus, &w->Vminus, &w->E1, &w->H1, &w->dtheta,
-                     &w->dtau));
-  if ((iminus == w->seg.start) != w->reversal)
+                     &w->dtau, &drift));
+  if ((iminus == w->seg.start) != w->reversal
+      || (w->seg.crosses && drift >= fabs (w->m.one_minus_h2)))
     return CHAPLYGIN_ENOCONV;
   w->iminus = iminus;
   return CHAPLYGIN_SUCCESS;

@@ -11,6 +11,7 @@
 #define CHAPLYGIN_MOTION_H
 
 #include "chaplygin.h"
+#include "eft.h"
 
 /* The invariants of a motion between collisions, reduced to the constants
    of chp_quartic_interval.  l = L0 + D is the distance from peg to mass
@@ -75,9 +76,32 @@ double chp_g_exact (double E, double H, double l, double el);
 int chp_flow_eval (double L0, double D0, double V0, double Omega0, double D,
                    double *V2, double *Omega);
 
-/* (3.1) without the NULL check (chaplygin_discrete_field): CHAPLYGIN_EDOM,
-   CHAPLYGIN_ERANGE; dq written only on success. */
-int chp_field (double L0, const double q[4], double dq[4]);
+/* chp_field: the right side of (3.1) (chaplygin_discrete_field without
+   its NULL check; the integrand of ode.c, inline there: the ODE method's
+   cost is mostly evaluations of it):
+       dD/dtau = V,  dV/dtau = l Omega^2,  dtheta/dtau = Omega,
+       dOmega/dtau = -2 l V Omega/(1 + l^2),  l = L0 + D,
+   2l/(1 + l^2) as 2/(l + 1/l) for |l| > 1 (no overflow).
+   CHAPLYGIN_EDOM (non-finite input), CHAPLYGIN_ERANGE (overflow); dq is
+   written only on success. */
+static inline int
+chp_field (double L0, const double q[4], double dq[4])
+{
+  if (!isfinite (L0) || !chp_finite4 (q[0], q[1], q[2], q[3]))
+    return CHAPLYGIN_EDOM;
+  double l = L0 + q[CHAPLYGIN_D];
+  double V = q[CHAPLYGIN_V], Om = q[CHAPLYGIN_OMEGA];
+  double r[4];
+  r[CHAPLYGIN_D] = V;
+  r[CHAPLYGIN_V] = l * Om * Om;
+  r[CHAPLYGIN_THETA] = Om;
+  r[CHAPLYGIN_OMEGA] = -2.0 * chp_L_over_one_plus_sq (l) * V * Om;
+  if (!chp_finite4 (r[0], r[1], r[2], r[3]))
+    return CHAPLYGIN_ERANGE;
+  for (int i = 0; i < 4; i++)
+    dq[i] = r[i];
+  return CHAPLYGIN_SUCCESS;
+}
 
 /* ---- segments: the classification of a motion --------------------------
 
