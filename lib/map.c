@@ -545,8 +545,10 @@ step_classify (step_work *w, const double *g0_phase)
 {
   const chp_segment *seg = &w->seg;
   CHP_TRY (chp_motion_init_eh (w->in->E, w->in->H, &w->m));
-  if ((w->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU))
-      || w->o.method == CHAPLYGIN_ODE)
+  const int complete = (w->request & (CHAPLYGIN_WANT_THETA
+                                      | CHAPLYGIN_WANT_TAU))
+    || w->o.method == CHAPLYGIN_ODE;
+  if (complete)
     chp_motion_complete (&w->m);
   /* g at the start: with error-free arithmetic from (E, H), accurate for
      them even when V+ is small beside Omega+, or as given from V+ */
@@ -571,23 +573,58 @@ step_classify (step_work *w, const double *g0_phase)
     return CHAPLYGIN_ESPIN;
   w->reversal = outcome == CHP_SEGMENT_REVERSE;
   w->iminus = w->reversal ? seg->start : seg->far;
+  /* the integrals of a known V+: 1 - h^2 = g0 - l0^2 from it, whose
+     absolute error ~eps (g0 + l0^2) is below E and H's ~eps (1 + l0^2)
+     (near l = 0 it places the turning point c = sqrt(h^2 - 1)), where
+     the classification does not depend on its sign (moving away from
+     l = 0) or it has the sign of E and H's (where they differ, the phase
+     state is within their rounding of a boundary, and the step stays the
+     motion of E and H) */
+  if (w->v_known)
+    {
+      const double omh2 = w->gv0 - chp_sq_exact (seg->l0, seg->l0_err);
+      if (omh2 != 0.0
+          && (!seg->toward || (omh2 < 0.0) == (w->m.one_minus_h2 < 0.0)))
+        {
+          if (complete)                 /* and the fields derived from it */
+            chp_motion_set_one_minus_h2 (&w->m, omh2);
+          else
+            w->m.one_minus_h2 = omh2;
+        }
+    }
   return CHAPLYGIN_SUCCESS;
 }
 
 /* A reversal within a hair of the start (the known V+ so slow that g0 <=
-   2^-100 l0^2, down to V+ = DBL_MIN where g0 underflows): the motion to
+   2^-60 l0^2, down to V+ = DBL_MIN where g0 underflows): the motion to
    the turning point is uniformly decelerated to relative O(g0/l0^2),
-   below 2^-100: with V^2 = (2E/n0)(g0 - 2 |l0| s) to that order, s =
+   below 2^-60 (the s^2 of g and the change of 1 + l^2 over the
+   distance s_c = g0/(2 |l0|) to it: g0/(4 l0^2) and g0/n0 <= g0/l0^2):
+   with V^2 = (2E/n0)(g0 - 2 |l0| s) to that order, s =
    |l0| - |l| (n0 = 1 + l0^2), the time out and back is
    2 sqrt(n0/(2E)) sqrt(g0)/|l0| = n0 |V+|/(E |l0|) and the heading
-   Omega+ times it, Omega+ = H/n0. */
+   Omega+ times it, Omega+ = H/n0.  Every method takes it: an integration
+   over that distance does not resolve it (the ODE method was 3e-10
+   relative off at |V+|/|l0 Omega+| = 1e-12, and returned |V-| ~ 4e-34
+   whatever V+ below ~1e-33). */
+static int
+turns_at_start (const step_work *w)
+{
+  return w->reversal && w->v_known
+    && w->gv0 <= 0x1p-60 * w->seg.l0 * w->seg.l0;
+}
+
 static int
 step_turn_at_start (step_work *w)
 {
   const double l0 = fabs (w->seg.l0), E = w->in->E;
   const double n0 = chp_one_plus_sq (l0), V = fabs (w->in->V);
-  w->dtau = n0 * (V / (E * l0));
-  w->dtheta = w->in->H * (V / (E * l0));
+  /* V/(E l0) on V 2^k ~ E (exact), so that no intermediate leaves the
+     normal doubles; each result rounds once more at the end */
+  const int k = ilogb (E) - ilogb (V);
+  const double r = (ldexp (V, k) / E) / l0;
+  w->dtau = ldexp (n0 * r, -k);
+  w->dtheta = ldexp (w->in->H * r, -k);
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -640,7 +677,7 @@ step_by_integrals (step_work *w)
       return chp_leg (&w->m, seg->l0, w->gv0, seg->l1, g1, sys->Delta, &w->o,
                       pth, pta);
     }
-  if (w->v_known && w->gv0 <= 0x1p-100 * seg->l0 * seg->l0)
+  if (turns_at_start (w))
     return step_turn_at_start (w);
   /* Out to the turning point and back: twice one leg.  |l0| - c =
      g0/(|l0| + c) without cancellation. */
@@ -674,6 +711,18 @@ step_by_ode (step_work *w)
     return CHAPLYGIN_ENOCONV;
   w->iminus = iminus;
   return CHAPLYGIN_SUCCESS;
+}
+
+/* D_c of a reversal: D0 + dir (|l0| - c), c = sqrt(h^2 - 1) (B.5), with
+   |l0| - c = g0/(|l0| + c) (g0 = l0^2 - c^2) free of cancellation, so
+   that a turning point near the start keeps its relative distance from
+   it (sgn(l0) c - L0 lost it: D_c = 0 for a true 3e-19). */
+static double
+step_turning_point (const step_work *w)
+{
+  const double c = sqrt (-w->m.one_minus_h2), l0 = fabs (w->seg.l0);
+  const double D0 = w->in->dir > 0 ? 0.0 : w->sys->Delta;
+  return D0 + w->in->dir * (w->gv0 / (l0 + c));
 }
 
 /* Phase 5: the state after the collision and the event.  The direction
@@ -714,8 +763,7 @@ step_finish (step_work *w, chaplygin_discrete_state *out,
   if (ev)
     {
       ev->reversal = w->reversal;
-      ev->Dc = w->reversal
-        ? copysign (sqrt (-w->m.one_minus_h2), w->seg.l0) - w->sys->L0 : 0.0;
+      ev->Dc = w->reversal ? step_turning_point (w) : 0.0;
       ev->Dminus = Dminus;
       ev->Dplus = Delta - Dminus;
       ev->Vminus = w->Vminus;
@@ -758,7 +806,9 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
     }
   chp_segment_init (sys, in->dir, &w.seg);
   CHP_TRY (step_classify (&w, g0_phase));
-  if (w.o.method == CHAPLYGIN_ODE)
+  /* a reversal within 2^-100 l0^2 of the start: its closed form, exact to
+     that order, also for the ODE method (no integration resolves it) */
+  if (w.o.method == CHAPLYGIN_ODE && !turns_at_start (&w))
     CHP_TRY (step_by_ode (&w));
   else
     CHP_TRY (step_by_integrals (&w));

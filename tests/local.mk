@@ -56,7 +56,7 @@ tests_test_flow_LDADD = $(TEST_LDADD)
 tests_test_map_SOURCES = tests/test_map.c tests/ref_map.h tests/ref_poincare.h \
 	tests/ref_slow.h
 tests_test_map_CFLAGS = $(TEST_CFLAGS)
-tests_test_map_LDADD = $(TEST_LDADD)
+tests_test_map_LDADD = $(TEST_LDADD) -lquadmath
 tests_test_ellint_SOURCES = tests/test_ellint.c tests/ref_ellint.h
 tests_test_ellint_CFLAGS = $(TEST_CFLAGS)
 tests_test_ellint_LDADD = $(TEST_LDADD)

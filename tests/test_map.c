@@ -2,6 +2,7 @@
    (B.4) and the turning points (B.5). */
 #include <config.h>
 
+#include <quadmath.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -935,6 +936,38 @@ START_TEST (test_slow_start)
                                          &quad, &out, &ev));
   ck_assert_rel (ev.dtheta, ref_slow[i].dtheta, 1e-13);
   ck_assert_rel (ev.dtau, ref_slow[i].dtau, 1e-13);
+  /* the ODE method: its rule, 20 tol (1 + kappa), kappa <= 3 here (the
+     oracle's slow-start rows); a reversal within 2^-100 l0^2 of the
+     start in its closed form (no integration resolves it: V+ = DBL_MIN
+     returned |V-| ~ 4e-34 before) */
+  const chaplygin_options ode = { CHAPLYGIN_ODE, 1e-12, CHAPLYGIN_PREC_DOUBLE };
+  ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU,
+                                         &ode, &out, &ev));
+  ck_assert_int_eq (ev.reversal, ref_slow[i].reversal);
+  ck_assert_rel (ev.dtheta, ref_slow[i].dtheta, 80 * 1e-12);
+  ck_assert_rel (ev.dtau, ref_slow[i].dtau, 80 * 1e-12);
+  if (ev.reversal)
+    {
+      ck_assert_rel (ev.Vminus, -V, 80 * 1e-12);
+      /* D_c against (B.5) in binary128 from the phase state: D+ + dir
+         (|l0| - c), c^2 = h^2 - 1, |l0| - c = g0/(|l0| + c), g0 =
+         (1 + l0^2) V+^2/(2E): relative to its distance from the start
+         (the route sgn(l0) c - L0 lost it, D_c = 0 for a true 1e-19) */
+      const q128 l0 = (q128) sys.L0 + D0, n0 = 1 + l0 * l0;
+      const q128 Om = ref_slow[i].Omega, E2 = (q128) V * V + n0 * Om * Om;
+      const q128 H = n0 * Om, c = sqrtq (H * H / E2 - 1);
+      const q128 g0 = n0 * (q128) V * V / E2, al0 = fabsq (l0);
+      const q128 dc = g0 / (al0 + c);
+      chaplygin_discrete_event e2;
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, NULL, &out, &e2));
+      const double want = (double) ((q128) D0 + ref_slow[i].dir * dc);
+      const double dist = (double) dc;
+      if (D0 == 0.0 && dist > 0.0)
+        ck_assert_rel (e2.Dc, want, 4 * DBL_EPSILON);
+      else
+        ck_assert_msg (fabs (e2.Dc - want) <= 2 * DBL_EPSILON * sys.Delta,
+                       "D_c %a vs %a", e2.Dc, want);
+    }
 }
 END_TEST
 
