@@ -94,8 +94,8 @@
    tolerance (the rule is stated above tol_ulps: max(16, 8 kappa) ulps
    for the closed form, kappa the condition number computed by the oracle).
    Failures of the library that the slow starts found are TAP TODO items
-   (known_failure and the near-l = 0 reversal flags: automake's XFAIL;
-   one that passes fails the program), listed in the chapter's "Known
+   (the near-l = 0 reversal flags, why_near: automake's XFAIL; one that
+   passes fails the program), listed in the chapter's "Known
    failures".
    The errors are reported in ulps, |lib - ref|/ulp(ref), max and mean per
    quantity and data set; with --table FILE the program also writes them
@@ -2395,27 +2395,15 @@ quantity_sets (int q, int set)
 /* Known failures of the library, found by the slow-start sets (issue 16):
    their checks are TAP TODO items (automake: XFAIL), reported with the
    reason, and a TODO item that passes (XPASS) fails the program, so that
-   the list is kept to what still fails.  Each fails on the fixed points
-   of run_slow (level 1 and 2 alike).  NULL: not a known failure. */
+   the list is kept to what still fails (the fixed points of run_slow,
+   level 1 and 2 alike).  One remains: the reversal decision near l = 0
+   (checked in tap_report's summary; no row of the tables is one). */
 static const char *const why_near
   = "issue 16: the reversal decision is E and H's (the step's E' and H' "
   "come from them, as the fates' and the reversal counts'): a slow start "
   "near l = 0 whose 1 - h^2 ~ -l0^2 is within the rounding of E and H "
   "(|l0| below ~1e-8) may reach the far end where the phase state turns "
   "back, or the other way";
-static const char *const why_ode
-  = "issue 16: CHAPLYGIN_ODE's V- after a slow start near l = 0 (the "
-  "motion leaves l0 from near rest and passes close to l = 0) exceeds "
-  "its rule by up to 1.6 times";
-
-/* The rows that are known failures as a whole. */
-static const char *
-known_failure (int me, int q, int set)
-{
-  if (me == M_ODE && set == S_SLOWNEAR && q == Q_VM)
-    return why_ode;
-  return NULL;
-}
 
 /* tap_check for a known failure (why != NULL): "# TODO why" after the
    figures; a pass is reported and fails the program. */
@@ -2442,8 +2430,8 @@ tap_check_todo (int ok, double worst, double tol, const char *why,
   if (ok && why)
     {
       tap_failed = 1;
-      printf ("# a known failure passed (XPASS): remove it from "
-              "known_failure\n");
+      printf ("# a known failure passed (XPASS): remove it from the "
+              "list (why_near)\n");
     }
 }
 
@@ -2459,7 +2447,7 @@ tap_report (int me)
         /* every closed-form table entry must have points, except D_c where
            a set may happen to have no reversal */
         tap_check_todo ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio,
-                   1.0, known_failure (me, q, s),
+                   1.0, NULL,
                    "%s, %s, %s: %ld points (%ld with kappa > 2, max kappa "
                    "%.3g), max %.3g ulps, mean %.3g; error / %s ulps",
                    mname[me], qname[q], sname[s], x->n, x->nill, x->kmax,
@@ -2470,14 +2458,12 @@ tap_report (int me)
       }
 }
 
-/* A row; a known failure (known_failure) says so. */
+/* A row. */
 static void
-texi_row (FILE *f, int me, int q, int set, const stat_t *x)
+texi_row (FILE *f, const stat_t *x, int set)
 {
-  fprintf (f, "@item %s%s @tab %ld @tab %.3g @tab %.3g @tab %.3g\n",
-           stexi[set], known_failure (me, q, set)
-           ? " (known failure, @pxref{Known failures})" : "", x->n, x->max,
-           x->sum / x->n, x->kmax);
+  fprintf (f, "@item %s @tab %ld @tab %.3g @tab %.3g @tab %.3g\n",
+           stexi[set], x->n, x->max, x->sum / x->n, x->kmax);
 }
 
 static int
@@ -2673,7 +2659,7 @@ write_table (const char *path, int level)
                "@tab Max @math{kappa}\n");
       for (int s = 0; s < NS; s++)
         if (quantity_sets (q, s) && st[M_CF][q][s].n > 0)
-          texi_row (f, M_CF, q, s, &st[M_CF][q][s]);
+          texi_row (f, &st[M_CF][q][s], s);
       fprintf (f, "@end multitable\n\n");
     }
   for (int me = 1; me < NM; me++)
@@ -2704,7 +2690,7 @@ write_table (const char *path, int level)
                    "ulps @tab Max @math{kappa}\n", qtexi[q]);
           for (int s = 0; s < NS; s++)
             if (st[me][q][s].n > 0)
-              texi_row (f, me, q, s, &st[me][q][s]);
+              texi_row (f, &st[me][q][s], s);
           fprintf (f, "@end multitable\n\n");
         }
     }
@@ -2764,14 +2750,12 @@ write_table (const char *path, int level)
 "end where the phase state turns back, or the other way: %ld of the\n"
 "library's steps (closed form and quadrature; not in the tables).\n"
 "@item\n"
-"The ODE method's @math{V^-} after a slow start near @math{l = 0} (the\n"
-"motion leaves @math{l_0} from near rest and passes close to\n"
-"@math{l = 0}) exceeds its rule by up to 1.6 times (the row ``slow start\n"
-"near @math{l = 0}'' of @math{V^-}); %ld slow starts it declined with\n"
-"@code{CHAPLYGIN_ENOCONV} are not in the tables.  (Fixed since found: it\n"
-"returned @math{|V^-|} of about @math{4 10^(-34)} whatever @math{V_0}\n"
-"below about @math{10^(-33)}; a reversal within @math{2^(-100) l_0^2} of\n"
-"the start is now solved in its closed form by every method.)\n"
+"The ODE method declined %ld slow starts with @code{CHAPLYGIN_ENOCONV}\n"
+"(not in the tables).  (Fixed since found: it returned @math{|V^-|} of\n"
+"about @math{4 10^(-34)} whatever @math{V_0} below about\n"
+"@math{10^(-33)}, and its @math{V^-} near @math{l = 0} exceeded its rule;\n"
+"a reversal within @math{2^(-60) l_0^2} of the start is now solved in its\n"
+"closed form by every method.)\n"
 "@end itemize\n",
                n_slow_misclassified, n_ode_declined_slow);
     }
