@@ -2405,36 +2405,6 @@ static const char *const why_near
   "(|l0| below ~1e-8) may reach the far end where the phase state turns "
   "back, or the other way";
 
-/* tap_check for a known failure (why != NULL): "# TODO why" after the
-   figures; a pass is reported and fails the program. */
-static void tap_check_todo (int ok, double worst, double tol, const char *why,
-                            const char *fmt, ...)
-  __attribute__ ((format (printf, 5, 6)));
-
-static void
-tap_check_todo (int ok, double worst, double tol, const char *why,
-                const char *fmt, ...)
-{
-  va_list ap;
-  tap_n++;
-  if (!ok && !why)
-    tap_failed = 1;
-  printf ("%s %d - ", ok ? "ok" : "not ok", tap_n);
-  va_start (ap, fmt);
-  vprintf (fmt, ap);
-  va_end (ap);
-  printf (": worst %.3g, tolerance %.3g", worst, tol);
-  if (why)
-    printf (" # TODO %s", why);
-  printf ("\n");
-  if (ok && why)
-    {
-      tap_failed = 1;
-      printf ("# a known failure passed (XPASS): remove it from the "
-              "list (why_near)\n");
-    }
-}
-
 static void
 tap_report (int me)
 {
@@ -2446,8 +2416,7 @@ tap_report (int me)
           continue;
         /* every closed-form table entry must have points, except D_c where
            a set may happen to have no reversal */
-        tap_check_todo ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio,
-                   1.0, NULL,
+        tap_check ((x->n > 0 || q == Q_DC) && x->ratio <= 1, x->ratio, 1.0,
                    "%s, %s, %s: %ld points (%ld with kappa > 2, max kappa "
                    "%.3g), max %.3g ulps, mean %.3g; error / %s ulps",
                    mname[me], qname[q], sname[s], x->n, x->nill, x->kmax,
