@@ -279,9 +279,9 @@ eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
   const int start = dir > 0 ? 0 : 1;
   const double H2 = H * H;
   /* the sign of the least V^2 on the segment, where it is certain: the
-     input of the segment rule (motion.h), whose outcome for a certain
-     sign is: pass (> 0), reverse (< 0) */
-  int rev = 0;
+     input of the segment rule (motion.h) */
+  double least = 1.0;
+  int crosses = 0;
   if (!(H2 <= E))
     {
       const double l0 = sys->l_end[start], l1 = sys->l_end[1 - start];
@@ -289,19 +289,20 @@ eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
       if (!(E >= 0x1p-900
             && H2 < twoE * fma (l0, l0, 1.0) * (1.0 - EH_MARGIN)))
         return 0;
+      crosses = chp_crosses (l0, l1);
       if (dir * l0 < 0.0)
         {
           /* towards l = 0: V^2 least at l = 0 (2E - H^2) or at l1 */
-          const double b = chp_crosses (l0, l1) ? twoE
-            : twoE * fma (l1, l1, 1.0);
+          const double b = crosses ? twoE : twoE * fma (l1, l1, 1.0);
           if (H2 > b * (1.0 + EH_MARGIN))
-            rev = 1;
+            least = -1.0;
           else if (!(H2 < b * (1.0 - EH_MARGIN)))
             return 0;
         }
       else if (!(dir * l0 > 0.0))
         return 0;               /* from l = 0 exactly: the spinning test */
     }
+  const int rev = chp_segment_rule (crosses, least) == CHP_SEGMENT_REVERSE;
   const int k = rev ? start : 1 - start;
   const double c1h = sys->C1[k] * H, h1 = sys->C2[k] * H;
   if (fabs (c1h * H) <= 0.5 * E)
