@@ -31,18 +31,6 @@
 
 typedef __float128 q128;
 
-/* |got - want| <= n eps scale. */
-#define ck_assert_abs_eps(got, want, n, scale)                               \
-  do                                                                         \
-    {                                                                        \
-      double g_ = (got), w_ = (want), s_ = (scale);                          \
-      ck_assert_msg (fabs (g_ - w_) <= (n) * DBL_EPSILON * s_,               \
-                     "%s = %.17g, expected %.17g: error %.3g eps of %.3g > %g", \
-                     #got, g_, w_, fabs (g_ - w_) / DBL_EPSILON / s_, s_,    \
-                     (double) (n));                                          \
-    }                                                                        \
-  while (0)
-
 /* ------------------------------------------------------------------ */
 /* 50-digit Cartesian references (script at the end of this file)     */
 /* ------------------------------------------------------------------ */

@@ -32,6 +32,18 @@ int tu_close (double got, double want, double tol);
 /* Within n units of DBL_EPSILON, relatively. */
 #define ck_assert_eps(got, want, n) ck_assert_rel (got, want, (n) * DBL_EPSILON)
 
+/* Absolutely: |got - want| <= n eps scale. */
+#define ck_assert_abs_eps(got, want, n, scale)                               \
+  do                                                                         \
+    {                                                                        \
+      double g_ = (got), w_ = (want), s_ = (scale);                          \
+      ck_assert_msg (fabs (g_ - w_) <= (n) * DBL_EPSILON * s_,               \
+                     "%s = %.17g, expected %.17g: error %.3g eps of %.3g > %g", \
+                     #got, g_, w_, fabs (g_ - w_) / DBL_EPSILON / s_, s_,    \
+                     (double) (n));                                          \
+    }                                                                        \
+  while (0)
+
 #define ck_assert_status(expr, expected)                                     \
   do                                                                         \
     {                                                                        \
