@@ -783,9 +783,10 @@ step_finish (step_work *w, chaplygin_discrete_state *out,
 }
 
 /* The return map proper, in phases: (1) arguments, (2) a far slot
-   (step_far), (3) the (E, H) update of the common case (eh_fast), whole
-   when only E and H are wanted and otherwise kept, so that E and H never
-   depend on what else is requested, (4) the motion and its exact
+   (step_far), (3) the (E, H) update of the common case (eh_fast), kept
+   whatever else is requested, so that E and H never depend on it (E and
+   H alone end in chaplygin_discrete_step's lean entry or in
+   chaplygin_discrete_step_eh_n, never here), (4) the motion and its exact
    classification, (5) the route of opt->method, (6) the outputs.
    g0_phase: see step_classify. */
 static int
@@ -803,18 +804,9 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   w.fast = w.o.method != CHAPLYGIN_ODE
     && eh_fast (sys, in->dir, in->E, in->H, g0_phase == NULL, &w.E1, &w.H1,
                 &fast_reversal);
-  if (w.fast && w.request == 0 && !ev && in->V == 0.0)
-    {
-      *out = *in;
-      out->dir = fast_reversal ? -in->dir : in->dir;
-      out->E = w.E1;
-      out->H = w.H1;
-      out->V = 0.0;             /* not formed: E and H alone */
-      return CHAPLYGIN_SUCCESS;
-    }
   chp_segment_init (sys, in->dir, &w.seg);
   CHP_TRY (step_classify (&w, g0_phase));
-  /* a reversal within 2^-100 l0^2 of the start: its closed form, exact to
+  /* a reversal within 2^-60 l0^2 of the start: its closed form, exact to
      that order, also for the ODE method (no integration resolves it) */
   if (w.o.method == CHAPLYGIN_ODE && !turns_at_start (&w))
     CHP_TRY (step_by_ode (&w));
