@@ -40,7 +40,8 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/leg.h \
 	lib/leg.c \
 	lib/printed.c
-lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(FP_CFLAGS) $(GSL_CFLAGS)
+lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(FP_CFLAGS) \
+	$(CODEGEN_CFLAGS) $(GSL_CFLAGS)
 lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
 
 lib_LTLIBRARIES = lib/libchaplygin.la
