@@ -425,9 +425,11 @@ typedef struct
   int have_g1;          /* g1 formed (step_g1: only where needed) */
   /* The motion's own g at the ends, for the integrals and V-: g0 and g1,
      or from the state's V+ where it is known (v_known: in->V != 0), which
-     keeps the digits E and H lose in a slow start.  The (E, H) update and
-     the classification use g0, g1 alone: E and H never depend on whether
-     V+ is known. */
+     keeps the digits E and H lose in a slow start, and decides the
+     classification (step_classify).  The (E, H) update uses g0, g1 alone:
+     E' and H' depend on whether V+ is known only through the end the peg
+     leaves, where the phase state decides it otherwise than E and H
+     (within their rounding of a boundary). */
   int v_known;          /* also for poincare: its g0 is from V+ */
   double gv0, gv1;
   int have_gv1;
@@ -564,28 +566,26 @@ step_classify (step_work *w, const double *g0_phase)
      known V+ decides, and may underflow g) */
   if (!(w->gv0 > 0.0) && !(w->v_known && w->gv0 == 0.0))
     return CHAPLYGIN_ESTATE;
-  /* g at the far end matters to the classification only for a motion
-     towards l = 0 with turning points that does not cross it */
-  const double *g_far = NULL;
-  if (!seg->crosses && seg->toward && w->m.one_minus_h2 < 0.0)
-    g_far = step_g1 (w);
-  const int outcome = chp_segment_classify (seg, &w->m, g_far);
-  if (outcome == CHP_SEGMENT_SPIN)
-    return CHAPLYGIN_ESPIN;
-  w->reversal = outcome == CHP_SEGMENT_REVERSE;
-  w->iminus = w->reversal ? seg->start : seg->far;
-  /* the integrals of a known V+: 1 - h^2 = g0 - l0^2 from it, whose
-     absolute error ~eps (g0 + l0^2) is below E and H's ~eps (1 + l0^2)
-     (near l = 0 it places the turning point c = sqrt(h^2 - 1)), where
-     the classification does not depend on its sign (moving away from
-     l = 0) or it has the sign of E and H's (where they differ, the phase
-     state is within their rounding of a boundary, and the step stays the
-     motion of E and H) */
+  /* a known V+: 1 - h^2 = g0 - l0^2 from it, whose absolute error
+     (roundings of V+^2/(2E), of E itself and of l0^2: below 2^-50 (g0 +
+     l0^2)) is below E and H's ~eps (1 + l0^2) near l = 0, where E and H
+     can hold neither its sign (a slow start within their rounding of the
+     boundary between turning and passing) nor the turning point c =
+     sqrt(h^2 - 1).  Its sign decides (and g at the far end from V+ too)
+     where it is beyond that error; elsewhere E and H's sign does, and
+     its value is taken where the two signs agree or the sign does not
+     matter (moving away from l = 0).  Within the error of both, the
+     state does not determine the outcome (a phase state within rounding
+     of the spinning state (3.8) spins, as for the fates). */
+  int v_decides = 0;
   if (w->v_known)
     {
-      const double omh2 = w->gv0 - chp_sq_exact (seg->l0, seg->l0_err);
+      const double l0sq = chp_sq_exact (seg->l0, seg->l0_err);
+      const double omh2 = w->gv0 - l0sq;
+      v_decides = fabs (omh2) > 0x1p-50 * (w->gv0 + l0sq);
       if (omh2 != 0.0
-          && (!seg->toward || (omh2 < 0.0) == (w->m.one_minus_h2 < 0.0)))
+          && (v_decides || !seg->toward
+              || (omh2 < 0.0) == (w->m.one_minus_h2 < 0.0)))
         {
           if (complete)                 /* and the fields derived from it */
             chp_motion_set_one_minus_h2 (&w->m, omh2);
@@ -593,6 +593,16 @@ step_classify (step_work *w, const double *g0_phase)
             w->m.one_minus_h2 = omh2;
         }
     }
+  /* g at the far end matters to the classification only for a motion
+     towards l = 0 with turning points that does not cross it */
+  const double *g_far = NULL;
+  if (!seg->crosses && seg->toward && w->m.one_minus_h2 < 0.0)
+    g_far = v_decides ? step_gv1 (w) : step_g1 (w);
+  const int outcome = chp_segment_classify (seg, &w->m, g_far);
+  if (outcome == CHP_SEGMENT_SPIN)
+    return CHAPLYGIN_ESPIN;
+  w->reversal = outcome == CHP_SEGMENT_REVERSE;
+  w->iminus = w->reversal ? seg->start : seg->far;
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -806,6 +816,10 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
                 &fast_reversal);
   chp_segment_init (sys, in->dir, &w.seg);
   CHP_TRY (step_classify (&w, g0_phase));
+  /* a known V+ may decide otherwise than E and H within 2^-20 of their
+     scale (step_g0_from_V): eh_fast's margin 2^-40 is theirs */
+  if (w.fast && fast_reversal != w.reversal)
+    w.fast = 0;
   /* a reversal within 2^-60 l0^2 of the start: its closed form, exact to
      that order, also for the ODE method (no integration resolves it) */
   if (w.o.method == CHAPLYGIN_ODE && !turns_at_start (&w))
@@ -858,8 +872,10 @@ step_general (const chaplygin_discrete *sys,
    Representation: E and H hold V+ only to absolute precision
    ~eps sqrt(2E): when V+^2 << (1 + l0^2) Omega+^2 the map from (E, H)
    alone is ill-conditioned in V+.  The state's V (V+ where known) removes
-   that: the heading, time and V- from it (step_g0_from_V), E' and H'
-   from E and H as ever; V+' passed on while E' and H' would not hold it
+   that: the classification, the heading, time and V- from it
+   (step_g0_from_V: a slow start near l = 0 turns or passes as the phase
+   state does, which E and H may not tell), E' and H' from E and H at the
+   end it decides; V+' passed on while E' and H' would not hold it
    (step_finish).
    Domain: a valid system; in->dir = +-1; finite fields; E > 0 and
    V+^2 = 2E - H^2/(1 + l0^2) > 0 (or V+ known); |L0|, |L0 + Delta| <=

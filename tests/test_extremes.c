@@ -128,7 +128,6 @@ static const double L0_grid[] = {
 
 static const double Delta_grid[] = { 1e-12, 1e-6, 1.0, 1e6 };
 
-#define NELEM(a) (sizeof (a) / sizeof (a)[0])
 
 /* l = L0 + D at the slot ends, as the library rounds it. */
 static int

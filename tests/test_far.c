@@ -96,7 +96,6 @@ typedef __float128 q128;
 /* a finite sentinel no computation here produces: an output still equal
    to it after a failed call was not written */
 #define SENT 0x1.3579bdf02468ap+9
-#define NELEM(a) (sizeof (a) / sizeof (a)[0])
 
 /* ---- methods and tolerances ------------------------------------------ */
 

@@ -694,8 +694,13 @@ START_TEST (test_extremes_found_in_review)
   /* The Poincare map through l = 0 with 2E within an ulp of H^2 (found by
      the fate tests): the step, from (E, H), passes (1 - h^2 = 1.9e-17 >
      0); (B.1)'s own reachability test, recomputed from the phase state,
-     once said the far end was out of reach (ESTATE).  Asserted: the two
-     routes agree, to the rounding of E, H formed from the phase state. */
+     once said the far end was out of reach (ESTATE).  The doubles of the
+     phase state turn, by V0^2/(l0^2 (1 + l0^2) Omega0^2) - 1 = -6.8e-16
+     (exact rational arithmetic, Python's fractions), but 1 - h^2 =
+     -1.2e-16 is within the rounding of E (step_classify's band 2^-50 (g0
+     + l0^2)): the state does not determine the outcome, and both routes
+     take E and H's.  Asserted: the two routes agree, to the rounding of
+     E, H formed from the phase state. */
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.45, 1.0));
   double qp[4] = { 0, 0.00039838813622516261, 0, 0.00080733046406745719 };
   double qn[4];
@@ -971,6 +976,91 @@ START_TEST (test_slow_start)
 }
 END_TEST
 
+/* Slow starts near l = 0 (issue 16): moving towards l = 0 from |l0| =
+   1e-12 .. 3e-8 on a slot that crosses it, the motion turns back iff
+   2E < H^2, i.e. (with 2E = V0^2 + (1 + l0^2) Omega0^2 and H = (1 +
+   l0^2) Omega0) iff |V0| < |l0 Omega0| sqrt(1 + l0^2): the decision by
+   that algebra, with r = |V0|/|l0 Omega0| 10% or more from 1 (sqrt(1 +
+   l0^2) is 1 to 5e-16 here).  E and H alone hold 1 - h^2 ~ -l0^2 below
+   their rounding, and the library decided from them until this test: 34
+   of the oracle's 85 such starts went to the wrong end.  Every method
+   must decide as the phase state does (the ODE method may decline a pass
+   with CHAPLYGIN_ENOCONV, as documented: 1 - h^2 ~ l0^2 (r^2 - 1) is
+   within its drift of the spinning state).  A reversal: -V+ exactly,
+   and the heading 2 arccosh(|l0|/c) = ln((1 + r)/(1 - r)), c = |l0|
+   sqrt(1 - r^2) the turning point, the time that over |Omega0| (V^2 =
+   V0^2 - Omega0^2 (l0^2 - l^2) and Omega = Omega0 to relative O(l0^2) <=
+   1e-15: 8 eps plus that).  A pass: the closed form against quadrature
+   (its tolerance 1e-14, times 10). */
+START_TEST (test_slow_start_near_zero)
+{
+  static const double l0s[] = { 1e-12, 1e-9, 3e-8 };
+  static const double ratios[] = { 0.5, 0.9, 1.1, 2.0 };
+  static const double Oms[] = { 0.7, -1.3 };
+  const chaplygin_options cf = CHAPLYGIN_OPTIONS_DEFAULT;
+  const chaplygin_options quad = { CHAPLYGIN_QUADRATURE, 1e-14, CHAPLYGIN_PREC_DOUBLE };
+  const chaplygin_options ode = { CHAPLYGIN_ODE, 1e-12, CHAPLYGIN_PREC_DOUBLE };
+  const chaplygin_options *methods[] = { &cf, &quad, &ode };
+  const unsigned want = CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU;
+  int n_rev = 0, n_pass = 0;
+  for (size_t a = 0; a < NELEM (l0s); a++)
+    for (int dir = 1; dir >= -1; dir -= 2)
+      for (size_t r = 0; r < NELEM (ratios); r++)
+        for (size_t o = 0; o < NELEM (Oms); o++)
+          {
+            /* front end at -a (dir +1) or rear end at +a (dir -1) */
+            const double Delta = 0.75, l0 = -dir * l0s[a];
+            const double L0 = dir > 0 ? l0 : l0 - Delta;
+            chaplygin_discrete sys;
+            ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+            const double lstart = dir > 0 ? sys.L0 : sys.L0 + sys.Delta;
+            const double rr = ratios[r], Om = Oms[o];
+            const double V = dir * rr * fabs (lstart * Om);
+            const double q[4] = { dir > 0 ? 0.0 : Delta, V, 0.0, Om };
+            const int turns = rr < 1.0;
+            const double heading = copysign (log ((1 + rr) / (1 - rr)), Om);
+            const double tol = 8 * DBL_EPSILON + lstart * lstart;
+            chaplygin_discrete_state st, out;
+            chaplygin_discrete_event ev, ev_cf;
+            ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, q, 0.0,
+                                                                NULL, &st));
+            for (size_t m = 0; m < NELEM (methods); m++)
+              {
+                const int rc = chaplygin_discrete_step (&sys, &st, want,
+                                                        methods[m], &out, &ev);
+                if (m == 2 && !turns && rc == CHAPLYGIN_ENOCONV)
+                  continue;
+                ck_assert_int_eq (rc, CHAPLYGIN_SUCCESS);
+                ck_assert_msg (ev.reversal == turns && out.dir
+                               == (turns ? -dir : dir), "method %zu, l0 %g, "
+                               "V0/(l0 Omega0) %g, Omega0 %g: reversal %d",
+                               m, l0, rr, Om, ev.reversal);
+                if (turns && m < 2)
+                  {
+                    ck_assert (ev.Vminus == -V);
+                    ck_assert_rel (ev.dtheta, heading, tol);
+                    ck_assert_rel (ev.dtau, fabs (heading / Om), tol);
+                  }
+                else if (turns)     /* the ODE: its rule (test_slow_start) */
+                  {
+                    ck_assert_rel (ev.Vminus, -V, 80 * 1e-12);
+                    ck_assert_rel (ev.dtheta, heading, 80 * 1e-12);
+                    ck_assert_rel (ev.dtau, fabs (heading / Om), 80 * 1e-12);
+                  }
+                if (m == 0)
+                  ev_cf = ev;
+                else if (m == 1 && !turns)
+                  {
+                    ck_assert_rel (ev_cf.dtheta, ev.dtheta, 1e-13);
+                    ck_assert_rel (ev_cf.dtau, ev.dtau, 1e-13);
+                  }
+              }
+            n_rev += turns, n_pass += !turns;
+          }
+  ck_assert (n_rev == 24 && n_pass == 24);
+}
+END_TEST
+
 /* Tiny states: V+ and Omega+ down to 1e-300 (E ~ 1e-600 is below the
    doubles: no state holds it, chaplygin_discrete_state_from_phase refuses
    with ERANGE); the map of phase states scales the speed exactly (the
@@ -1091,6 +1181,7 @@ main (void)
   t = tcase_create ("slow_start");
   tcase_add_loop_test (t, test_slow_start, 0,
                        (int) (sizeof ref_slow / sizeof ref_slow[0]));
+  tcase_add_test (t, test_slow_start_near_zero);
   tcase_add_test (t, test_tiny_start);
   tcase_add_test (t, test_state_v_checked);
   suite_add_tcase (s, t);

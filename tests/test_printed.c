@@ -18,7 +18,6 @@
 
 typedef __float128 q128;
 
-#define NELEM(a) (sizeof (a) / sizeof (a)[0])
 #define SENT 1234.5678          /* a sentinel output value */
 #define ISENT 4321              /* an integer sentinel */
 

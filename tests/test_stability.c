@@ -20,7 +20,6 @@
 #include "testutil.h"
 #include "ref_stability.h"
 
-#define NELEM(a) (sizeof (a) / sizeof (a)[0])
 
 /* ------------------------------------------------------------------ */
 

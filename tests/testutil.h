@@ -11,6 +11,9 @@
 
 #include "chaplygin.h"
 
+/* The number of elements of array A. */
+#define NELEM(a) (sizeof (a) / sizeof (a)[0])
+
 /* Relative error |got - want|/|want|; for want == 0 the absolute |got|;
    0 when both are the same NaN class or the same infinity; +Inf for a
    mismatch in class (NaN vs number, Inf vs finite, opposite infinities). */

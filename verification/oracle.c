@@ -93,10 +93,10 @@
    check per method, quantity and data set: every error within its
    tolerance (the rule is stated above tol_ulps: max(16, 8 kappa) ulps
    for the closed form, kappa the condition number computed by the oracle).
-   Failures of the library that the slow starts found are TAP TODO items
-   (the near-l = 0 reversal flags, why_near: automake's XFAIL; one that
-   passes fails the program), listed in the chapter's "Known
-   failures".
+   Failures of the library that the slow starts found were TAP TODO
+   items (automake's XFAIL; one that passes fails the program) while they
+   remained; all are fixed, and the chapter's "Known failures" lists them
+   with what remains documented (the ODE method's declines).
    The errors are reported in ulps, |lib - ref|/ulp(ref), max and mean per
    quantity and data set; with --table FILE the program also writes them
    as the Texinfo chapter "Accuracy tables" (doc/accuracy.texi).  Level 1
@@ -2164,7 +2164,7 @@ slow_point (int set, double L0, double Delta, int dir, double V0, double Om0)
       if (ev.reversal != r.reversal
           || out.dir != (r.reversal ? -dir : dir))
         {
-          /* near l = 0 a known failure (the TODO check of main) */
+          /* near l = 0 counted apart (its own check in main) */
           if (set == S_SLOWNEAR)
             {
               if (n_slow_misclassified++ == 0)
@@ -2391,19 +2391,6 @@ quantity_sets (int q, int set)
   /* parameter quantities have no state: the state sets do not apply */
   return !(q >= Q_SIG && state_set (set));
 }
-
-/* Known failures of the library, found by the slow-start sets (issue 16):
-   their checks are TAP TODO items (automake: XFAIL), reported with the
-   reason, and a TODO item that passes (XPASS) fails the program, so that
-   the list is kept to what still fails (the fixed points of run_slow,
-   level 1 and 2 alike).  One remains: the reversal decision near l = 0
-   (checked in tap_report's summary; no row of the tables is one). */
-static const char *const why_near
-  = "issue 16: the reversal decision is E and H's (the step's E' and H' "
-  "come from them, as the fates' and the reversal counts'): a slow start "
-  "near l = 0 whose 1 - h^2 ~ -l0^2 is within the rounding of E and H "
-  "(|l0| below ~1e-8) may reach the far end where the phase state turns "
-  "back, or the other way";
 
 static void
 tap_report (int me)
@@ -2697,27 +2684,24 @@ write_table (const char *path, int level)
 "@cindex known failures\n"
 "@cindex slow start, known failures\n"
 "\n"
-"The slow-start sets found failures of the library (issue 16).  The\n"
-"program checks those that remain like the rest, as TAP TODO items:\n"
-"automake counts them as expected failures (@code{XFAIL}), and one that\n"
-"starts to pass (@code{XPASS}) fails the program, so that this list\n"
-"stays current.  Fixed since they were found: the heading and time near\n"
-"@math{l = 0} (@math{1 - h^2} now from @math{V^+} where the state knows\n"
-"it: the rows ``slow start near @math{l = 0}'', once @math{3 10^14}\n"
-"ulps), @math{D_c} of a slow reversal (now @math{D^+ + dir (|l_0| - c)},\n"
-"@math{|l_0| - c = g_0/(|l_0| + c)}: the rows @math{D_c}, once without\n"
-"relative accuracy), and a reversal at the start with @math{V_0} near\n"
-"@code{DBL_MIN} (once 66 ulps: an intermediate is no longer subnormal).\n"
+"The slow-start sets found failures of the library (issue 16).  While\n"
+"one remained, the program checked it like the rest, as a TAP TODO item\n"
+"(automake's expected failure, @code{XFAIL}; one that starts to pass,\n"
+"@code{XPASS}, fails the program, so that the list stays current).  All\n"
+"are fixed: the heading and time near @math{l = 0} (@math{1 - h^2} now\n"
+"from @math{V^+} where the state knows it: the rows ``slow start near\n"
+"@math{l = 0}'', once @math{3 10^14} ulps); the reversal decision there\n"
+"(made from @math{E} and @math{H}, whose rounding may hold neither the\n"
+"sign nor the size of @math{1 - h^2 ~ -l_0^2} for @math{|l_0|} below\n"
+"about @math{10^(-8)}: 34 of the 85 starts of level 1 reached the far end where the\n"
+"phase state turns back, or the other way; now the phase state's, and\n"
+"%ld steps differ from the oracle's); @math{D_c} of a slow reversal (now\n"
+"@math{D^+ + dir (|l_0| - c)}, @math{|l_0| - c = g_0/(|l_0| + c)}: the\n"
+"rows @math{D_c}, once without relative accuracy); and a reversal at the\n"
+"start with @math{V_0} near @code{DBL_MIN} (once 66 ulps: an intermediate\n"
+"is no longer subnormal).  What remains documented:\n"
 "\n"
 "@itemize @bullet\n"
-"@item\n"
-"The reversal decision is made from @math{E} and @math{H} (so are\n"
-"@math{E'} and @math{H'}, and the fates' and reversal counts'\n"
-"decisions): where a slow start near @math{l = 0} has\n"
-"@math{1 - h^2 ~ -l_0^2} within the rounding of @math{E} and @math{H}\n"
-"(@math{|l_0|} below about @math{10^(-8)}), the step may reach the far\n"
-"end where the phase state turns back, or the other way: %ld of the\n"
-"library's steps (closed form and quadrature; not in the tables).\n"
 "@item\n"
 "The ODE method declined %ld slow starts with @code{CHAPLYGIN_ENOCONV}\n"
 "(not in the tables).  (Fixed since found: it returned @math{|V^-|} of\n"
@@ -2931,13 +2915,13 @@ main (int argc, char **argv)
              "CHAPLYGIN_ESPIN exactly where 2E = H^2 reaches l = 0 (%ld)",
              n_spin_ok);
   if (set_ran[S_SLOWNEAR])
-    tap_check_todo (n_slow_misclassified == 0, (double) n_slow_misclassified,
-                    0, why_near, "slow starts near l = 0: reversal flags as "
-                    "the oracle decides them exactly (%ld steps by the three "
-                    "methods from %ld starts misclassified%s%s)",
-                    n_slow_misclassified, n_slow_in[S_SLOWNEAR],
-                    n_slow_misclassified ? "; the first: " : "",
-                    slow_misclassified_first);
+    tap_check (n_slow_misclassified == 0, (double) n_slow_misclassified,
+               0, "slow starts near l = 0: reversal flags as the oracle "
+               "decides them exactly (%ld steps by the three methods from "
+               "%ld starts misclassified%s%s)",
+               n_slow_misclassified, n_slow_in[S_SLOWNEAR],
+               n_slow_misclassified ? "; the first: " : "",
+               slow_misclassified_first);
   if (use_method[M_ODE])
     {
       tap_check (n_f2 == 0, (double) n_f2, 0,
