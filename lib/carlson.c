@@ -106,6 +106,7 @@
 #include <math.h>
 
 #include "carlson.h"
+#include "eft.h"
 
 #if defined __GNUC__
 #define CARLSON_INLINE static inline __attribute__ ((always_inline))
@@ -118,20 +119,6 @@
    is the instruction alone, without the test and call that set errno for
    a negative argument (the kernel's arguments are never negative). */
 #define root sqrt
-
-/* max and min of numbers that are not NaN (fmax and fmin are library calls
-   on x86-64 unless NaN semantics are waived) */
-CARLSON_INLINE double
-max2 (double a, double b)
-{
-  return a > b ? a : b;
-}
-
-CARLSON_INLINE double
-min2 (double a, double b)
-{
-  return a < b ? a : b;
-}
 
 /* The stopping tolerance tau indexed by [prec == SINGLE] (see 3.). */
 static const double tau[2] = { 0.0105, 0.042 };
@@ -208,7 +195,7 @@ duplicate (double x, double y, double z, double sx, double sy, double sz,
   /* the differences of step 2, formed once from the arguments */
   const double dxF = AF0 - x, dyF = AF0 - y;
   const double dxD = AD0 - x, dyD = AD0 - y;
-  const double Q = max2 (max2 (fabs (dxD), fabs (dyD)), fabs (AD0 - z));
+  const double Q = chp_max (chp_max (fabs (dxD), fabs (dyD)), fabs (AD0 - z));
   double AF = AF0, AD = AD0, g = 1.0, sum = 0.0;
 
   /* stop when t_D = Q/(4^m A_D,m) <= tau (step 3) */
@@ -293,7 +280,7 @@ chp_carlson_rfrd (double x, double y, double z, chaplygin_precision prec,
   const int single = prec == CHAPLYGIN_PREC_SINGLE;
 
   /* R_F's branch looks at the sorted arguments, R_D's at x + y against z */
-  double lo = min2 (x, y), mid = max2 (x, y), hi = z;
+  double lo = chp_min (x, y), mid = chp_max (x, y), hi = z;
   if (mid > hi)
     {
       double t = mid;
@@ -363,7 +350,7 @@ chp_carlson_rfrd_z1 (double x, double y, chaplygin_precision prec,
     {
       /* x + y = lo + mid exactly as the general entry forms it */
       if (rf)
-        *rf = asym_rf (min2 (x, y), max2 (x, y), 1.0);
+        *rf = asym_rf (chp_min (x, y), chp_max (x, y), 1.0);
       if (rd)
         *rd = asym_rd (x, y, 1.0);
       return CHAPLYGIN_SUCCESS;

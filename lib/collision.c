@@ -47,7 +47,7 @@ double
 chp_post_collision_energy (double E, double g_minus, double l_minus,
                            double H_plus, double l_plus)
 {
-  return fmin (E * (g_minus / chp_one_plus_sq (l_minus))
+  return chp_min (E * (g_minus / chp_one_plus_sq (l_minus))
                + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
 }
 

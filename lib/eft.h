@@ -51,6 +51,21 @@ chp_one_plus_sq (double x)
   return fma (x, x, 1.0);
 }
 
+/* The larger and the smaller of a and b, b where a is NaN (as fmax and
+   fmin where only a may be NaN).  fmax and fmin are calls into libm on
+   x86-64 unless NaN semantics are waived; these are one instruction. */
+static inline double
+chp_max (double a, double b)
+{
+  return a > b ? a : b;
+}
+
+static inline double
+chp_min (double a, double b)
+{
+  return a < b ? a : b;
+}
+
 /* sign(x) as +1 or -1 (+1 for +0 and -0). */
 static inline double
 chp_sign (double x)

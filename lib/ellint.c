@@ -127,7 +127,7 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
   double s;                     /* tan(mu) */
   if (y == 0.0)
     s = x / sqrt_q; /* may be +Inf: mu = pi/2, the complete integral */
-  else if (fmax (x, sqrt_p) <= 0x1p250)
+  else if (chp_max (x, sqrt_p) <= 0x1p250)
     {
       /* dxy (x + y) sqrt_p / (x ay by + y ax bx), with the denominator divided
          by x + y (a weighted mean of ay by and ax bx, both >= sqrt_p sqrt_q
@@ -139,7 +139,7 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
   else
     {
       int e;
-      frexp (fmax (x, sqrt_p), &e);
+      frexp (chp_max (x, sqrt_p), &e);
       double xs = ldexp (x, -e), ys = ldexp (y, -e), ds = ldexp (dxy, -e);
       double ps = ldexp (sqrt_p, -e), qs = ldexp (sqrt_q, -e);
       s = ds * (xs + ys) * ps / (xs * (chp_hypot (ys, ps) * chp_hypot (ys, qs))

@@ -98,11 +98,11 @@ quad_geometric (double (*f_th) (double, void *),
                 double (*f_ta) (double, void *), const chp_motion *m, double A,
                 double W, double tol, double *th, double *ta)
 {
-  struct quad_par qp = { m, A, fmax (fabs (m->h), 1.0) };
+  struct quad_par qp = { m, A, chp_max (fabs (m->h), 1.0) };
   double t = 0.0, r;
   while (t < W)
     {
-      double next = 2.0 * fmax (A + t, 1.0) - A;
+      double next = 2.0 * chp_max (A + t, 1.0) - A;
       double tn = (next > t && next < W) ? next : W;
       if (th)
         {
@@ -170,16 +170,16 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
             }
           else
             CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q,
-                                           fmin (aa, ab), fmax (aa, ab), dl,
-                                           opt->precision, pF, pT));
+                                           chp_min (aa, ab), chp_max (aa, ab),
+                                           dl, opt->precision, pF, pT));
         }
       else
         {
           double wa = sqrt (ga), wb = sqrt (gb);
           double dw = dl * ((aa + ab) / (wa + wb));
           CHP_TRY (chp_quartic_interval (m->sqrt_p, m->sqrt_q, m->p_minus_q,
-                                         fmin (wa, wb), fmax (wa, wb), dw,
-                                         opt->precision, pF, pT));
+                                         chp_min (wa, wb), chp_max (wa, wb),
+                                         dw, opt->precision, pF, pT));
         }
       if (dtheta)
         *dtheta = m->theta_factor * F;
@@ -202,7 +202,7 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
               quad_geometric (qa_theta, qa_tau, m, 0.0, ab, opt->tol, qF, qT));
         }
       else
-        CHP_TRY (quad_geometric (qa_theta, qa_tau, m, fmin (aa, ab), dl,
+        CHP_TRY (quad_geometric (qa_theta, qa_tau, m, chp_min (aa, ab), dl,
                                  opt->tol, qF, qT));
     }
   else
@@ -211,10 +211,10 @@ chp_leg (const chp_motion *m, double la, double ga, double lb, double gb,
          and u_b - u_a = (|lb| - |la|)/(u_a + u_b) = +-dl/(u_a + u_b) */
       double c = m->sqrt_q;
       double ua = sqrt (ga / (aa + c)), ub = sqrt (gb / (ab + c));
-      CHP_TRY (quad_geometric (qb_theta, qb_tau, m, fmin (ua, ub),
+      CHP_TRY (quad_geometric (qb_theta, qb_tau, m, chp_min (ua, ub),
                                dl / (ua + ub), opt->tol, qF, qT));
     }
-  F *= fmin (fabs (m->h), 1.0);
+  F *= chp_min (fabs (m->h), 1.0);
   if (dtheta)
     *dtheta = chp_sign (m->H) * F;
   if (dtau)
