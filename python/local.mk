@@ -58,7 +58,7 @@ python_libchp_py_la_SOURCES = python/src/chp_python.h \
 	tools/scene.c tools/scene.h tools/run.c tools/run.h tools/sweep.c \
 	tools/sweep.h tools/progress.c tools/progress.h tools/number.c \
 	tools/number.h tools/bounds.c tools/bounds.h tools/provenance.c \
-	tools/provenance.h
+	tools/provenance.h tools/scaled.c tools/scaled.h
 nodist_python_libchp_py_la_SOURCES = python/gen/vec.c python/gen/vec.h
 python_libchp_py_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/python/src \
 	-I$(srcdir)/tools -Ipython/gen \

@@ -6,7 +6,8 @@ tools_chaplygin_SOURCES = tools/chaplygin.c tools/scene.c tools/scene.h \
 	tools/sweep-main.c tools/progress.c tools/progress.h tools/eq.c \
 	tools/eq.h tools/number.c tools/number.h tools/cli.c tools/cli.h \
 	tools/output.c tools/output.h tools/provenance.c tools/provenance.h \
-	tools/bounds.c tools/bounds.h tools/plot.c tools/plot.h
+	tools/bounds.c tools/bounds.h tools/plot.c tools/plot.h \
+	tools/scaled.c tools/scaled.h
 nodist_tools_chaplygin_SOURCES = tools/plot-style.h
 tools_chaplygin_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) $(OPENMP_CFLAGS)
 tools_chaplygin_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_builddir)/tools \

@@ -43,6 +43,7 @@
 #include "progress.h"
 #include "provenance.h"
 #include "run.h"
+#include "scaled.h"
 #include "scene.h"
 #include "sweep.h"
 
@@ -114,29 +115,6 @@ static void
 row_num (sink *s, double x)
 {
   row_printf (s, "%.17g", x);
-}
-
-/* The text of the physical value of X, a quantity of KIND computed in the
-   units of the velocity scaling M (chaplygin_velocity_scaling): %.17g of
-   the library's exact unscaled value, or the exact decimal of X 2^e where
-   that is not a double (rounded, or beyond DBL_MAX).  BUF holds
-   NUMBER_TEXT_MAX bytes. */
-static void
-scaled_text (char *buf, int m, chaplygin_scale_kind kind, double x)
-{
-  double y;
-  int exact = 0, e = 0;
-  if (m == 0 || kind == CHAPLYGIN_SCALE_NONE)
-    {
-      snprintf (buf, NUMBER_TEXT_MAX, "%.17g", x);
-      return;
-    }
-  if (chaplygin_velocity_scale (-m, kind, x, &y, &exact) == CHAPLYGIN_SUCCESS
-      && exact)
-    snprintf (buf, NUMBER_TEXT_MAX, "%.17g", y);
-  else if (chaplygin_velocity_exponent (-m, kind, &e) != CHAPLYGIN_SUCCESS
-           || number_format (buf, NUMBER_TEXT_MAX, x, e) != 0)
-    snprintf (buf, NUMBER_TEXT_MAX, "nan");     /* |m| <= 1074: never */
 }
 
 /* Append the physical value of the scaled X of KIND (scaled_text). */

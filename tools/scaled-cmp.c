@@ -16,7 +16,9 @@
      degree 0 (D, S, theta, x, y, peg, G): |a - b|/max|b| over the column
                                         (coordinates: their zero is
                                         arbitrary);
-     integer columns (n, k, reversal): equal.
+     integer and text columns (n, k, reversal; a basins sweep's fate,
+                                        collisions, reversals, status):
+                                        equal.
    Prints one line per column with its worst error, and exits 0 if every
    column is within TOL eps and the two files have the same header and the
    same number of rows, 1 otherwise ('#' lines are skipped).
@@ -96,11 +98,14 @@ static int
 degree (const char *name)
 {
   if (!strcmp (name, "n") || !strcmp (name, "k")
-      || !strcmp (name, "reversal"))
+      || !strcmp (name, "reversal") || !strcmp (name, "fate")
+      || !strcmp (name, "collisions") || !strcmp (name, "reversals")
+      || !strcmp (name, "status"))
     return 99;
-  if (!strcmp (name, "V") || !strcmp (name, "Omega") || !strcmp (name, "H"))
+  if (!strcmp (name, "V") || !strcmp (name, "Omega") || !strcmp (name, "H")
+      || !strcmp (name, "V0") || !strcmp (name, "V_final"))
     return 1;
-  if (!strcmp (name, "E"))
+  if (!strcmp (name, "E") || !strcmp (name, "E_final"))
     return 2;
   if (!strcmp (name, "tau"))
     return -1;

@@ -70,6 +70,7 @@
 #include "chaplygin.h"
 #include "progress.h"
 #include "provenance.h"
+#include "scaled.h"
 #include "scene.h"
 #include "sweep.h"
 
@@ -185,30 +186,39 @@ format_stability (const sweep_plan *plan, uint64_t k, char *buf, size_t len)
                    region, region & 1, region >> 1 & 1);
 }
 
-/* The row of basins point K into BUF (LEN bytes); returns its length. */
+/* The row of basins point K into BUF (LEN bytes); returns its length.
+   A tiny or huge V+, Omega+ (E or H out of range) is run in the units of
+   its velocity scaling, and E_final, V_final are printed in the physical
+   ones, exactly (scaled_text), as `chaplygin run' prints them. */
 static int
 format_basins (const sweep_plan *plan, uint64_t k, char *buf, size_t len)
 {
   const scene *sc = plan->sc;
   double V = grid_value (sc->x_min, sc->x_max, plan->nx, k);
-  int status = CHAPLYGIN_ESTATE;
+  int status = CHAPLYGIN_ESTATE, m = 0;
   chaplygin_fate fate;
   if (V != 0.0)
     {
-      const double qplus[4] = { V > 0.0 ? 0.0 : plan->sys.Delta, V, 0.0,
-                                sc->Omega };
-      status = chaplygin_discrete_fate_phase (&plan->sys, qplus,
-                                              (unsigned long) sc->collisions,
-                                              NULL, 0, &fate);
+      const double D = V > 0.0 ? 0.0 : plan->sys.Delta;
+      double Vs, Omegas;
+      status = chaplygin_velocity_scaling (plan->sys.L0 + D, V, sc->Omega,
+                                           &m, &Vs, &Omegas);
+      const double qplus[4] = { D, Vs, 0.0, Omegas };
+      if (status == CHAPLYGIN_SUCCESS)
+        status = chaplygin_discrete_fate_phase (&plan->sys, qplus,
+                                                (unsigned long) sc->collisions,
+                                                NULL, 0, &fate);
     }
   char st[16];
   if (status != CHAPLYGIN_SUCCESS)
     return snprintf (buf, len, "%" PRIu64 ",%.17g,,,,,,%s\n", k, V,
                      status_field (status, st));
-  return snprintf (buf, len,
-                   "%" PRIu64 ",%.17g,%d,%lu,%lu,%.17g,%.17g,SUCCESS\n", k,
-                   V, fate.kind, fate.collisions, fate.reversals,
-                   fate.E_final, fate.V_final);
+  char E_text[NUMBER_TEXT_MAX], V_text[NUMBER_TEXT_MAX];
+  scaled_text (E_text, m, CHAPLYGIN_SCALE_ENERGY, fate.E_final);
+  scaled_text (V_text, m, CHAPLYGIN_SCALE_SPEED, fate.V_final);
+  return snprintf (buf, len, "%" PRIu64 ",%.17g,%d,%lu,%lu,%s,%s,SUCCESS\n",
+                   k, V, fate.kind, fate.collisions, fate.reversals, E_text,
+                   V_text);
 }
 
 /* The row of point K into BUF (LEN bytes); returns its length. */

@@ -33,7 +33,7 @@ prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 cmp=$top_builddir/tools/scaled-cmp
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-scaled 27
+tap_start test-scaled 28
 
 TOL=4
 
@@ -150,6 +150,31 @@ else
   explain
 fi
 result "$rc" "chaplygin skate --V 1e-300 --Omega 1e-300: against 2^996"
+
+# ---- chaplygin sweep, basins ------------------------------------------------------
+# basins_scene FILE OMEGA V_LO V_HI: Figure 3's sweep (L0 = -1/2, Delta =
+# 1), 6 points, 1000 collisions at most
+basins_scene () {
+  printf '[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n[initial]\nOmega = %s\n[run]\ncollisions = 1000\n[sweep]\nkind = basins\nx_min = %s\nx_max = %s\nnx = 6\n' \
+    "$2" "$3" "$4" >"$1"
+}
+basins_scene "$tmp/a.ini" 0.8e-300 -0.5e-300 0.5e-300
+basins_scene "$tmp/b.ini" "$(x2k 0.8e-300 996)" "$(x2k -0.5e-300 996)" \
+  "$(x2k 0.5e-300 996)"
+rc=0
+"$prog" sweep --no-provenance "$tmp/a.ini" >"$tmp/a.csv" 2>"$tmp/err" || rc=$?
+if test "$rc" -eq 0; then
+  "$prog" sweep --no-provenance "$tmp/b.ini" >"$tmp/b.csv" 2>"$tmp/err" \
+    || rc=$?
+fi
+if test "$rc" -eq 0; then
+  "$cmp" "$TOL" 996 "$tmp/a.csv" "$tmp/b.csv" >"$tmp/cmp" 2>&1 || rc=$?
+  sed 's/^/# /' "$tmp/cmp"
+  grep -q 'e-60[0-9],' "$tmp/a.csv" || rc=1
+else
+  explain
+fi
+result "$rc" "chaplygin sweep, basins at Omega = 0.8e-300, V+ in [-0.5e-300, 0.5e-300]: against 2^996, E_final (~1e-601) exact"
 
 # ---- the numbers outside the doubles, as text -----------------------------------
 # E of V = Omega = 1e-300 at L0 = -0.5: (1 + 1.25) 1e-600/2, exactly

@@ -13,7 +13,7 @@ prog=${CHAPLYGIN:-${top_builddir:-.}/tools/chaplygin}
 unset CHAPLYGIN_NO_PROGRESS
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-sweep 32
+tap_start test-sweep 34
 
 # say TEXT: a diagnostic line (shown by the TAP driver).
 say () {
@@ -94,10 +94,13 @@ EOF
 sed -e 's/^x_max = 2$/x_max = 1/' -e 's/^nx = 101$/nx = 5/' \
   "$tmp/basins.ini" >"$tmp/zero.ini"
 
-# Speeds beyond the double range of the energy: a library failure per
-# point (CHAPLYGIN_ERANGE), not a failure of the sweep.
+# Speeds whose energy leaves the doubles: run in the units of the velocity
+# scaling, E_final printed exactly (1e400); V+ and Omega+ further apart
+# than the doubles' range: a library failure per point (CHAPLYGIN_ERANGE),
+# not a failure of the sweep.
 sed -e 's/^x_min = -1$/x_min = 1e200/' -e 's/^x_max = 2$/x_max = 2e200/' \
   -e 's/^nx = 101$/nx = 3/' "$tmp/basins.ini" >"$tmp/huge.ini"
+sed -e 's/^Omega = 0.8$/Omega = 1e-300/' "$tmp/huge.ini" >"$tmp/apart.ini"
 
 cat >"$tmp/nosweep.ini" <<'EOF'
 [scene]
@@ -311,9 +314,18 @@ then
 fi
 result "$ok" "basins: the grid point V+ = 0 is a row with status ESTATE"
 
-# A failure of the library at a point is its row's status, exit 0.
-expect_status 0 "basins: speeds beyond the range are rows, exit 0" \
+expect_status 0 "basins: speeds whose energy leaves the doubles, exit 0" \
   sweep "$tmp/huge.ini"
+ok=1
+if test "$(awk -F, 'NR > 1 && $3 == 1 && $6 ~ /e\+(399|400)$/ && $8 == "SUCCESS"' "$tmp/out" | wc -l)" -eq 3
+then
+  ok=0
+fi
+result "$ok" "basins: ... each forward, E_final ~ 1e400 printed exactly (the velocity scaling)"
+
+# A failure of the library at a point is its row's status, exit 0.
+expect_status 0 "basins: V+, Omega+ further apart than the doubles: rows, exit 0" \
+  sweep "$tmp/apart.ini"
 ok=1
 if test "$(awk -F, 'NR > 1 && $3 == "" && $8 == "ERANGE"' "$tmp/out" | wc -l)" -eq 3
 then
