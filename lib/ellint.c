@@ -123,7 +123,12 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
      of it is formed from the arguments as given, and only the products inside
      tan(mu) are evaluated on a copy scaled by a power of two. */
   const double ax = chp_hypot (x, sqrt_p), bx = chp_hypot (x, sqrt_q);
-  const double ay = chp_hypot (y, sqrt_p), by = chp_hypot (y, sqrt_q);
+  /* at y = 0 (a leg from l = 0 or to a turning point) sqrt_p and sqrt_q
+     themselves: the same bits (the square root of the rounded square of
+     a double is that double; hypot (0, b) = |b|), two square roots
+     fewer */
+  const double ay = y == 0.0 ? sqrt_p : chp_hypot (y, sqrt_p);
+  const double by = y == 0.0 ? sqrt_q : chp_hypot (y, sqrt_q);
   double s;                     /* tan(mu) */
   if (y == 0.0)
     s = x / sqrt_q; /* may be +Inf: mu = pi/2, the complete integral */

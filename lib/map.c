@@ -434,6 +434,7 @@ typedef struct
   double gv0, gv1;
   int have_gv1;
   int fast;             /* E1, H1 (and reversal) from eh_fast */
+  int want_event;       /* the caller asked for the event (V- in it) */
   int reversal;
   int iminus;           /* the end the peg leaves: 0 front, 1 rear */
   double E1, H1, Vminus, dtheta, dtau;
@@ -458,6 +459,7 @@ step_begin (step_work *w, const chaplygin_discrete *sys,
   w->request = request & CHAPLYGIN_WANT_PEG ? request | CHAPLYGIN_WANT_THETA
     : request;
   w->fast = 0;
+  w->want_event = 0;
   w->have_g1 = 0;
   w->have_gv1 = 0;
   w->v_known = 0;
@@ -648,10 +650,10 @@ step_by_integrals (step_work *w)
   const chaplygin_discrete *sys = w->sys;
   const chaplygin_discrete_state *in = w->in;
   const chp_segment *seg = &w->seg;
-  const double gm = w->reversal ? w->g0 : *step_g1 (w);
   const double lm = w->reversal ? seg->l0 : seg->l1;
   if (!w->fast)
     {
+      const double gm = w->reversal ? w->g0 : *step_g1 (w);
       w->H1 = sys->C2[w->iminus] * in->H;
       /* E + C1 H^2 of (3.7), as a sum of nonnegative terms (accurate also
          when the collision takes nearly all the energy) */
@@ -666,10 +668,12 @@ step_by_integrals (step_work *w)
         w->E1 = valid_energy (sys, 1 - w->iminus, w->E1, w->H1);
     }
   /* V- = +-sqrt(2E g/(1 + l^2)) from the motion's g, with the sign of the
-     new direction; a reversal returns with -V+ exactly where V+ is known */
+     new direction; a reversal returns with -V+ exactly where V+ is known;
+     only for the event or the state's V+' (never infinite: 2E is finite,
+     chp_motion_init_eh, and g/(1 + l^2) <= 1) */
   if (w->reversal && w->v_known)
     w->Vminus = -in->V;
-  else
+  else if (w->want_event || w->v_known)
     {
       const double gvm = w->reversal ? w->gv0 : *step_gv1 (w);
       w->Vminus = (w->reversal ? -in->dir : in->dir)
@@ -766,9 +770,14 @@ step_finish (step_work *w, chaplygin_discrete_state *out,
      their roundings cost V-^2 more than 4 ulps); dropped otherwise, so
      that carried and (E, H) values cannot drift apart over a run, and the
      next step may take the (E, H) fast path */
-  const double lm = w->reversal ? w->seg.l0 : w->seg.l1;
-  const double gm = w->reversal ? w->g0 : *step_g1 (w);
-  r.V = w->v_known && gm < 0.25 * g_scale (w, lm) ? w->Vminus : 0.0;
+  r.V = 0.0;
+  if (w->v_known)
+    {
+      const double lm = w->reversal ? w->seg.l0 : w->seg.l1;
+      const double gm = w->reversal ? w->g0 : *step_g1 (w);
+      if (gm < 0.25 * g_scale (w, lm))
+        r.V = w->Vminus;
+    }
   if (w->request & CHAPLYGIN_WANT_THETA)
     r.theta = theta1;
   if (w->request & CHAPLYGIN_WANT_TAU)
@@ -807,6 +816,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
 {
   step_work w;
   CHP_TRY (step_begin (&w, sys, in, request, opt, out));
+  w.want_event = ev != NULL;
   if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
     return g0_phase ? CHAPLYGIN_ERANGE
       : step_far (sys, in, w.request, opt, out, ev);
