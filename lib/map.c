@@ -675,7 +675,10 @@ step_by_integrals (step_work *w)
     w->Vminus = -in->V;
   else if (w->want_event || w->v_known)
     {
-      const double gvm = w->reversal ? w->gv0 : *step_gv1 (w);
+      /* 0 where g, formed otherwise than the classification's (E and H
+         decided within rounding of the spinning state, g from V+ here),
+         rounds below it: a turning point within rounding of the end */
+      const double gvm = chp_max (w->reversal ? w->gv0 : *step_gv1 (w), 0.0);
       w->Vminus = (w->reversal ? -in->dir : in->dir)
         * sqrt (2.0 * in->E * (gvm / chp_one_plus_sq (lm)));
     }
@@ -1146,14 +1149,17 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
   CHP_TRY (step_core (sys, &st, &g0, req, opt, &st, &ev));
 
   /* p: (B.1) from the post-collision state to the end the peg leaves,
-     which step_core has classified from (E, H) exactly: no second
-     reachability test that could disagree with it within rounding (a
-     motion through l = 0 with 2E within an ulp of H^2) */
+     which step_core has classified: no second reachability test that
+     could disagree with it within rounding (a motion through l = 0 with
+     2E within an ulp of H^2); where (B.1)'s V^2 there rounds to 0 or
+     below on a pass (a turning point within rounding of the far end: its
+     V0^2 and the term it subtracts cancel), the step's own V- (from g at
+     that end, whose sign decided the pass) */
   double V2, Om;
   CHP_TRY (chp_flow_eval (sys->L0, qplus[CHAPLYGIN_D], qplus[CHAPLYGIN_V],
                           qplus[CHAPLYGIN_OMEGA], ev.Dminus, &V2, &Om));
-  if (V2 < 0.0)
-    V2 = 0.0;
+  if (!(V2 > 0.0))
+    V2 = ev.reversal ? 0.0 : ev.Vminus * ev.Vminus;
   /* a reversal returns with -V+ exactly (the motion is symmetric about
      the turning point; (B.1) would underflow V+^2 for |V+| < 1e-154) */
   double qminus[4]

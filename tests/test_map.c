@@ -976,6 +976,50 @@ START_TEST (test_slow_start)
 }
 END_TEST
 
+/* The Poincare map (3.5) where the motion turns within rounding of the
+   far end (found by a random search of 200,000 such phase states, 1980
+   of which the map refused with CHAPLYGIN_ESTATE: the step said "pass",
+   and (B.1) recomputed from the phase state rounded V- at that end to 0
+   or below, which no post-collision state can have).  Three of them,
+   moving towards l = 0 on a slot that does not reach it; in exact
+   rational arithmetic on the doubles (Python's fractions) V-^2/V+^2 =
+   1.28e-16, 2.87e-16 and 1.24e-16: passes, within the rounding of the
+   state (E rounded), so either outcome is the state's.  Asserted: the
+   map succeeds, decides as the step from the same phase state, and on a
+   pass its V- is within that rounding of 0 (|V-| <= sqrt(16 eps) |V+|
+   < 1e-7 |V+|); on a reversal it returns with -V+ exactly. */
+START_TEST (test_poincare_far_end_turn)
+{
+  static const double cases[][4] = {    /* L0, Delta, V+, Omega+ */
+    { -0x1.67700dd05f42p-1, 0x1.2eabd683df2f1p-1, 0x1.f6ecc8679c9afp-1,
+      -0x1.2ab5e3e5e618ep+0 },
+    { -0x1.8076878cafa26p+1, 0x1.cd001f99631cdp-2, 0x1.05ceeff44dc9ap+0,
+      -0x1.1ec41eff1ef3p-1 },
+    { -0x1.75ad09b8b62a8p+0, 0x1.bdfa6b0a28ff8p-1, 0x1.301912c6062c2p+1,
+      0x1.2a9ccfbf272p+0 },
+  };
+  for (size_t i = 0; i < NELEM (cases); i++)
+    {
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, cases[i][0], cases[i][1]));
+      const double V = cases[i][2];
+      const double q[4] = { 0.0, V, 0.0, cases[i][3] };
+      double qn[4], dtau;
+      ck_assert_ok (chaplygin_discrete_poincare (&sys, q, NULL, qn, &dtau));
+      chaplygin_discrete_state st, out;
+      chaplygin_discrete_event ev;
+      ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL,
+                                                          &st));
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_TAU,
+                                             NULL, &out, &ev));
+      if (ev.reversal)
+        ck_assert (qn[CHAPLYGIN_V] == -V);
+      else
+        ck_assert (qn[CHAPLYGIN_V] > 0.0 && qn[CHAPLYGIN_V] < 1e-7 * V);
+    }
+}
+END_TEST
+
 /* Slow starts near l = 0 (issue 16): moving towards l = 0 from |l0| =
    1e-12 .. 3e-8 on a slot that crosses it, the motion turns back iff
    2E < H^2, i.e. (with 2E = V0^2 + (1 + l0^2) Omega0^2 and H = (1 +
@@ -1163,6 +1207,7 @@ main (void)
   t = tcase_create ("eq_3_5");
   tcase_set_timeout (t, 120);
   tcase_add_test (t, eq_3_5);
+  tcase_add_test (t, test_poincare_far_end_turn);
   suite_add_tcase (s, t);
   t = tcase_create ("map_vs_integration");
   tcase_set_timeout (t, 300);
