@@ -23,6 +23,22 @@
 #include "ode.h"
 #include "status.h"
 
+/* Whether a quantity that vanishes at a turning point, computed at D as
+   x = a + p (a >= 0 its value at the start, p = k (D - D0)(2 L0 + D +
+   D0) = k (l^2 - l0^2), k > 0), lies below 0 only by rounding, so that D
+   is the turning point within rounding: -x at most 8 eps (a + |p| +
+   k |l D|), the roundings of the terms (a few ulps each) and of D itself
+   (two ulps, as the turning point D_c of chaplygin_discrete_step's event
+   is rounded: moving D by an ulp moves p by up to 4 eps k |l D|).  Such a
+   D is the turning point itself (x = 0).  (A D short of it by rounding is
+   taken as given: the leg to it, which differs from the leg to the
+   turning point by the square root of that distance.) */
+static int
+beyond_turning_by_rounding (double x, double a, double p, double klD)
+{
+  return x < 0.0 && -x <= 8.0 * DBL_EPSILON * (a + fabs (p) + klD);
+}
+
 /* chaplygin_discrete_flow: (B.1)
        V(D)^2 = V0^2 + (D - D0)(2 L0 + D + D0)(1 + (L0 + D0)^2) Omega0^2
                        / (1 + (L0 + D)^2),
@@ -35,7 +51,10 @@
    Accuracy: a few ulps of the terms (no division by small quantities).
    Reachability: V^2 is smallest at l = 0, so D is reached (before or after
    reversals) iff V(D)^2 >= 0 and, when the path from D0 to D crosses l = 0,
-   V^2 > 0 there.
+   V^2 > 0 there.  A D beyond a turning point by no more than the rounding
+   of V(D)^2 and of D itself (beyond_turning_by_rounding: the event's D_c of
+   chaplygin_discrete_step, which is 37% of the time such a double) is the
+   turning point: V^2 = 0.
    Errors: CHAPLYGIN_EINVAL for NULL outputs; CHAPLYGIN_EDOM for non-finite
    input; CHAPLYGIN_ESTATE if D is never reached (V(D)^2 < 0, or a turning
    point lies between D0 and D); CHAPLYGIN_ERANGE on overflow. */
@@ -70,6 +89,10 @@ chaplygin_discrete_flow (double L0, double D0, double V0, double Omega0,
     }
   CHP_TRY (chp_flow_eval (L0, D0, V0, Omega0, D, &v2, &om));
   double l0 = L0 + D0, l = L0 + D, n0 = chp_one_plus_sq (l0);
+  if (beyond_turning_by_rounding (v2, V0 * V0, v2 - V0 * V0, fabs (l * D)
+                                  * (n0 / chp_one_plus_sq (l))
+                                  * Omega0 * Omega0))
+    v2 = 0.0;
   if (v2 < 0.0)
     return CHAPLYGIN_ESTATE;
   /* V^2 is smallest where l = 0: a path that crosses l = 0 must have
@@ -186,7 +209,13 @@ leg_motion (double L0, double D0, double V0, double Omega0, double D,
   chp_motion_set_one_minus_h2 (m, chp_phase_one_minus_h2 (l0, V0, Omega0,
                                                            2.0 * E));
   *g0 = chp_one_plus_sq (l0) * V0 * (V0 / (2.0 * E));
-  *gl = *g0 + (D - D0) * (2.0 * L0 + D + D0);
+  const double p = (D - D0) * (2.0 * L0 + D + D0);
+  *gl = *g0 + p;
+  /* D beyond a turning point by rounding (the event's D_c) is the turning
+     point, the end of the leg's integrals */
+  if (m->one_minus_h2 < 0.0
+      && beyond_turning_by_rounding (*gl, *g0, p, fabs (l * D)))
+    *gl = 0.0;
   if (m->one_minus_h2 >= 0.0)
     {
       if (m->one_minus_h2 == 0.0 && l0 * l <= 0.0)

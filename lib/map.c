@@ -228,8 +228,7 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    E' >= E/2 and the fma loses nothing to cancellation (C1's few ulps weigh
    at most as much as E' itself: about 3 ulps in all, as the sum of
    nonnegative terms of step_core; the oracle measures it).  Where it takes
-   more (LARGE set: not for chaplygin_discrete_poincare, whose g at the
-   start comes from V+), E' is step_by_integrals' sum of nonnegative terms
+   more, E' is step_by_integrals' sum of nonnegative terms
    with the same g (bit for bit the general path's E'), unless g at the
    end the peg leaves is so small that the general path would raise E' by
    ulps (valid_energy).  The classification:
@@ -272,7 +271,7 @@ eh_large (const chaplygin_discrete *sys, int k, double E, double H,
 
 static CHP_ALWAYS_INLINE int
 eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
-         int large, double *E1, double *H1, int *reversal)
+         double *E1, double *H1, int *reversal)
 {
   if (!(E > 0.0 && E <= 0.25 * DBL_MAX && fabs (H) <= 0x1p500))
     return 0;
@@ -307,7 +306,7 @@ eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
   const double c1h = sys->C1[k] * H, h1 = sys->C2[k] * H;
   if (fabs (c1h * H) <= 0.5 * E)
     *E1 = fma (c1h, H, E);
-  else if (!large || !eh_large (sys, k, E, H, h1, E1))
+  else if (!eh_large (sys, k, E, H, h1, E1))
     return 0;
   *H1 = h1;
   *reversal = rev;
@@ -345,7 +344,7 @@ move_peg (const double peg[2], double shift, double theta1, double out[2])
 
 static int step_core (const chaplygin_discrete *sys,
                       const chaplygin_discrete_state *in,
-                      const double *g0_phase, unsigned request,
+                      unsigned request,
                       const chaplygin_options *opt,
                       chaplygin_discrete_state *out,
                       chaplygin_discrete_event *ev);
@@ -372,7 +371,7 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   unsigned req = request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
   if (request & CHAPLYGIN_WANT_PEG)
     req |= CHAPLYGIN_WANT_THETA;
-  CHP_TRY (step_core (&f.sys, &si, NULL, req, opt, &so, &se));
+  CHP_TRY (step_core (&f.sys, &si, req, opt, &so, &se));
   if ((req & CHAPLYGIN_WANT_TAU) && !(se.dtau >= DBL_MIN))
     return CHAPLYGIN_ERANGE;
   chaplygin_discrete_state r = *in;
@@ -421,16 +420,15 @@ typedef struct
   chp_segment seg;
   chp_motion m;
   double g0, g1;        /* g = (1 + l^2) V^2/(2E) at the two ends */
-  int g0_phase;         /* g0 from V+ itself (poincare), not from E, H */
   int have_g1;          /* g1 formed (step_g1: only where needed) */
   /* The motion's own g at the ends, for the integrals and V-: g0 and g1,
      or from the state's V+ where it is known (v_known: in->V != 0), which
-     keeps the digits E and H lose in a slow start, and decides the
-     classification (step_classify).  The (E, H) update uses g0, g1 alone:
-     E' and H' depend on whether V+ is known only through the end the peg
-     leaves, where the phase state decides it otherwise than E and H
-     (within their rounding of a boundary). */
-  int v_known;          /* also for poincare: its g0 is from V+ */
+     keeps the digits E and H lose in a slow start, and where it is the
+     more accurate decides the classification (step_classify).  The (E, H)
+     update uses g0, g1 alone: E' and H' depend on whether V+ is known
+     only through the end the peg leaves, where the phase state decides it
+     otherwise than E and H (within their rounding of a boundary). */
+  int v_known;
   double gv0, gv1;
   int have_gv1;
   int fast;             /* E1, H1 (and reversal) from eh_fast */
@@ -482,19 +480,15 @@ g_far_from_start (const step_work *w, double g0)
     ? g0 + delta : chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
 }
 
-/* g at the far end, formed once when first needed: from (E, H) by
-   error-free arithmetic when they are the input, exact for them; from a
-   phase state g0 + (l1 - l0)(l1 + l0), l1 - l0 = dir Delta exactly, unless
-   that cancels worse than E and H (rounded from the phase state) are
-   conditioned there. */
+/* g at the far end from (E, H) by error-free arithmetic, exact for them,
+   formed once when first needed. */
 static const double *
 step_g1 (step_work *w)
 {
   if (!w->have_g1)
     {
       const chp_segment *seg = &w->seg;
-      w->g1 = w->g0_phase ? g_far_from_start (w, w->g0)
-        : chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
+      w->g1 = chp_motion_g_exact (&w->m, seg->l1, seg->l1_err);
       w->have_g1 = 1;
     }
   return &w->g1;
@@ -540,13 +534,13 @@ step_g0_from_V (const step_work *w, double *gv0)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* Phase 3: the motion and its exact classification.  g0_phase, if not
-   NULL, is g(l0) formed from V+ by the caller (chaplygin_discrete_poincare):
-   from (E, H) alone g(l0) loses V+ when V+^2 << (1 + l0^2) Omega+^2.  The
-   classification and the (E, H) update need only E, H and 1 - h^2: the
-   square roots the integrals need are taken only for them. */
+/* Phase 3: the motion and its exact classification.  The classification
+   and the (E, H) update need only E, H and 1 - h^2 (and g0 from V+ where
+   the state knows it: from (E, H) alone g(l0) loses V+ when V+^2 << (1 +
+   l0^2) Omega+^2): the square roots the integrals need are taken only
+   for them. */
 static int
-step_classify (step_work *w, const double *g0_phase)
+step_classify (step_work *w)
 {
   const chp_segment *seg = &w->seg;
   CHP_TRY (chp_motion_init_eh (w->in->E, w->in->H, &w->m));
@@ -557,37 +551,38 @@ step_classify (step_work *w, const double *g0_phase)
     chp_motion_complete (&w->m);
   /* g at the start: with error-free arithmetic from (E, H), accurate for
      them even when V+ is small beside Omega+, or as given from V+ */
-  w->g0 = g0_phase ? *g0_phase
-    : chp_motion_g_exact (&w->m, seg->l0, seg->l0_err);
-  w->g0_phase = g0_phase != NULL;
+  w->g0 = chp_motion_g_exact (&w->m, seg->l0, seg->l0_err);
   w->gv0 = w->g0;
-  w->v_known = g0_phase != NULL || w->in->V != 0.0;
-  if (!g0_phase && w->in->V != 0.0)
+  w->v_known = w->in->V != 0.0;
+  if (w->v_known)
     CHP_TRY (step_g0_from_V (w, &w->gv0));
   /* a motion: V+^2 > 0 (E and H may hold a slow V+ as 0 or below: a
      known V+ decides, and may underflow g) */
   if (!(w->gv0 > 0.0) && !(w->v_known && w->gv0 == 0.0))
     return CHAPLYGIN_ESTATE;
-  /* a known V+: 1 - h^2 = g0 - l0^2 from it, whose absolute error
-     (roundings of V+^2/(2E), of E itself and of l0^2: below 2^-50 (g0 +
-     l0^2)) is below E and H's ~eps (1 + l0^2) near l = 0, where E and H
-     can hold neither its sign (a slow start within their rounding of the
-     boundary between turning and passing) nor the turning point c =
-     sqrt(h^2 - 1).  Its sign decides (and g at the far end from V+ too)
-     where it is beyond that error; elsewhere E and H's sign does, and
-     its value is taken where the two signs agree or the sign does not
-     matter (moving away from l = 0).  Within the error of both, the
-     state does not determine the outcome (a phase state within rounding
-     of the spinning state (3.8) spins, as for the fates). */
+  /* a known V+: 1 - h^2 = g0 - l0^2 from it, whose absolute error (the
+     roundings of V+^2/(2E), of E itself and of l0^2) is below 2^-50 (g0 +
+     l0^2), against E and H's few eps h^2 (their own roundings, through
+     H^2/(2E)).  V+'s is taken where it is the more accurate (g0 + l0^2 <
+     h^2), and decides where it is beyond its error: near l = 0 (g0 + l0^2
+     ~ 2 l0^2 << h^2 ~ 1), where E and H hold neither the sign of 1 - h^2
+     ~ -l0^2 (a slow start within their rounding of the boundary between
+     turning and passing) nor the turning point c = sqrt(h^2 - 1).  Far
+     from l = 0 with 2E near H^2, E and H's (g0 - l0^2 cancels there: c,
+     and D_c from the rear end, came out 200 ulps off from V+).  Within
+     the error of the better one the state does not determine the
+     outcome: E and H's sign decides (a state within rounding of the
+     spinning state (3.8) spins where 2E = H^2, as for the fates), and
+     V+'s value is kept where the signs agree. */
   int v_decides = 0;
   if (w->v_known)
     {
       const double l0sq = chp_sq_exact (seg->l0, seg->l0_err);
       const double omh2 = w->gv0 - l0sq;
-      v_decides = fabs (omh2) > 0x1p-50 * (w->gv0 + l0sq);
-      if (omh2 != 0.0
-          && (v_decides || !seg->toward
-              || (omh2 < 0.0) == (w->m.one_minus_h2 < 0.0)))
+      const int v_better = w->gv0 + l0sq < 1.0 - w->m.one_minus_h2;
+      v_decides = v_better && fabs (omh2) > 0x1p-50 * (w->gv0 + l0sq);
+      if (v_better && omh2 != 0.0
+          && (v_decides || (omh2 < 0.0) == (w->m.one_minus_h2 < 0.0)))
         {
           if (complete)                 /* and the fields derived from it */
             chp_motion_set_one_minus_h2 (&w->m, omh2);
@@ -596,7 +591,8 @@ step_classify (step_work *w, const double *g0_phase)
         }
     }
   /* g at the far end matters to the classification only for a motion
-     towards l = 0 with turning points that does not cross it */
+     towards l = 0 with turning points that does not cross it: from the
+     state that decides */
   const double *g_far = NULL;
   if (!seg->crosses && seg->toward && w->m.one_minus_h2 < 0.0)
     g_far = v_decides ? step_gv1 (w) : step_g1 (w);
@@ -675,10 +671,12 @@ step_by_integrals (step_work *w)
     w->Vminus = -in->V;
   else if (w->want_event || w->v_known)
     {
-      /* 0 where g, formed otherwise than the classification's (E and H
-         decided within rounding of the spinning state, g from V+ here),
-         rounds below it: a turning point within rounding of the end */
-      const double gvm = chp_max (w->reversal ? w->gv0 : *step_gv1 (w), 0.0);
+      /* on a pass that E and H decided (g1 > 0) while g from V+ rounds
+         to 0 or below at that end (a turning point within rounding of
+         it), E and H's g */
+      double gvm = w->reversal ? w->gv0 : *step_gv1 (w);
+      if (!w->reversal && !(gvm > 0.0))
+        gvm = chp_max (*step_g1 (w), 0.0);
       w->Vminus = (w->reversal ? -in->dir : in->dir)
         * sqrt (2.0 * in->E * (gvm / chp_one_plus_sq (lm)));
     }
@@ -809,11 +807,10 @@ step_finish (step_work *w, chaplygin_discrete_state *out,
    whatever else is requested, so that E and H never depend on it (E and
    H alone end in chaplygin_discrete_step's lean entry or in
    chaplygin_discrete_step_eh_n, never here), (4) the motion and its exact
-   classification, (5) the route of opt->method, (6) the outputs.
-   g0_phase: see step_classify. */
+   classification, (5) the route of opt->method, (6) the outputs. */
 static int
 step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
-           const double *g0_phase, unsigned request,
+           unsigned request,
            const chaplygin_options *opt, chaplygin_discrete_state *out,
            chaplygin_discrete_event *ev)
 {
@@ -821,14 +818,12 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   CHP_TRY (step_begin (&w, sys, in, request, opt, out));
   w.want_event = ev != NULL;
   if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
-    return g0_phase ? CHAPLYGIN_ERANGE
-      : step_far (sys, in, w.request, opt, out, ev);
+    return step_far (sys, in, w.request, opt, out, ev);
   int fast_reversal = 0;
   w.fast = w.o.method != CHAPLYGIN_ODE
-    && eh_fast (sys, in->dir, in->E, in->H, g0_phase == NULL, &w.E1, &w.H1,
-                &fast_reversal);
+    && eh_fast (sys, in->dir, in->E, in->H, &w.E1, &w.H1, &fast_reversal);
   chp_segment_init (sys, in->dir, &w.seg);
-  CHP_TRY (step_classify (&w, g0_phase));
+  CHP_TRY (step_classify (&w));
   /* a known V+ may decide otherwise than E and H within 2^-20 of their
      scale (step_g0_from_V): eh_fast's margin 2^-40 is theirs */
   if (w.fast && fast_reversal != w.reversal)
@@ -850,7 +845,7 @@ step_general (const chaplygin_discrete *sys,
               const chaplygin_options *opt, chaplygin_discrete_state *out,
               chaplygin_discrete_event *ev)
 {
-  return step_core (sys, in, NULL, request, opt, out, ev);
+  return step_core (sys, in, request, opt, out, ev);
 }
 
 /* chaplygin_discrete_step: (B.3) and (B.4), the return map on post-collision
@@ -917,7 +912,7 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
     {
       double E1, H1;
       int rev;
-      if (eh_fast (sys, in->dir, in->E, in->H, 1, &E1, &H1, &rev))
+      if (eh_fast (sys, in->dir, in->E, in->H, &E1, &H1, &rev))
         {
           const int dir = rev ? -in->dir : in->dir;
           if (out != in)
@@ -964,7 +959,7 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
       double E1, H1;
       int rev;
       /* eh_fast's outputs are finite: the state stays valid for it */
-      if (in_cap && V == 0.0 && eh_fast (sys, dir, E, H, 1, &E1, &H1, &rev))
+      if (in_cap && V == 0.0 && eh_fast (sys, dir, E, H, &E1, &H1, &rev))
         {
           dir = rev ? -dir : dir;
           E = E1;
@@ -975,7 +970,7 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
           st->dir = dir;
           st->E = E;
           st->H = H;
-          status = step_core (sys, st, NULL, 0, NULL, st, NULL);
+          status = step_core (sys, st, 0, NULL, st, NULL);
           dir = st->dir;
           E = st->E;
           H = st->H;
@@ -1143,10 +1138,9 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
   chaplygin_discrete_event ev;
   CHP_TRY (chaplygin_discrete_state_from_phase (sys, qplus, 0.0, NULL, &st));
   unsigned req = CHAPLYGIN_WANT_THETA | (dtau ? CHAPLYGIN_WANT_TAU : 0u);
-  /* g(l0) from V+ itself: (1 + l0^2) V+^2/(2E) */
-  double l0 = sys->L0 + qplus[CHAPLYGIN_D], V = qplus[CHAPLYGIN_V];
-  double g0 = chp_one_plus_sq (l0) * V * (V / (2.0 * st.E));
-  CHP_TRY (step_core (sys, &st, &g0, req, opt, &st, &ev));
+  /* the step from the phase state, which keeps V+ (st.V): its g0 from V+
+     itself, its classification the state's */
+  CHP_TRY (step_core (sys, &st, req, opt, &st, &ev));
 
   /* p: (B.1) from the post-collision state to the end the peg leaves,
      which step_core has classified: no second reachability test that
