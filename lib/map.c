@@ -570,11 +570,10 @@ step_classify (step_work *w)
      turning and passing) nor the turning point c = sqrt(h^2 - 1).  Far
      from l = 0 with 2E near H^2, E and H's (g0 - l0^2 cancels there: c,
      and D_c from the rear end, came out 290 ulps off from V+ in one
-     measured state).  Within
-     the error of the better one the state does not determine the
-     outcome: E and H's sign decides (a state within rounding of the
-     spinning state (3.8) spins where 2E = H^2, as for the fates), and
-     V+'s value is kept where the signs agree. */
+     measured state).  Within the error of the better one the state does
+     not determine the outcome: E and H's sign decides (a state within
+     rounding of the spinning state (3.8) spins where 2E = H^2, as for the
+     fates), and V+'s value is kept where the signs agree. */
   int v_decides = 0;
   if (w->v_known)
     {
