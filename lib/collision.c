@@ -48,7 +48,7 @@ chp_post_collision_energy (double E, double g_minus, double l_minus,
                            double H_plus, double l_plus)
 {
   return chp_min (E * (g_minus / chp_one_plus_sq (l_minus))
-               + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
+                  + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
 }
 
 /* chp_system_fill: the derived constants of a chaplygin_discrete, indexed
