@@ -200,10 +200,10 @@ format_basins (const sweep_plan *plan, uint64_t k, char *buf, size_t len)
   if (V != 0.0)
     {
       const double D = V > 0.0 ? 0.0 : plan->sys.Delta;
-      double Vs, Omegas;
+      double qplus[4] = { D, 0.0, 0.0, 0.0 };
       status = chaplygin_velocity_scaling (plan->sys.L0 + D, V, sc->Omega,
-                                           &m, &Vs, &Omegas);
-      const double qplus[4] = { D, Vs, 0.0, Omegas };
+                                           &m, &qplus[CHAPLYGIN_V],
+                                           &qplus[CHAPLYGIN_OMEGA]);
       if (status == CHAPLYGIN_SUCCESS)
         status = chaplygin_discrete_fate_phase (&plan->sys, qplus,
                                                 (unsigned long) sc->collisions,
