@@ -1,7 +1,7 @@
 /* carlson.c -- `make bench-carlson': the library's fused Carlson kernel
-   (lib/carlson.c) against GSL's R_F + R_D as the closed form calls them
-   today (chp_rf and chp_rd of lib/ellint.c), on the triples that
-   chp_quartic_interval forms.
+   (lib/carlson.c) against GSL's R_F + R_D (which the closed form called
+   before the kernel existed), on the triples that chp_quartic_interval
+   forms.
 
    The triples.  NTRIPLES random motions of the discrete skate (the
    distribution of bench/work-precision.c's step set: L0 uniform in [-3, 2],
@@ -10,20 +10,21 @@
    (its header comment), the legs of (B.2) between the slot ends, with
    p = 1, q = 1 - h^2 (h^2 <= 1) or p = h^2, q = h^2 - 1 and w = sqrt(l^2 -
    q) (h^2 > 1; a leg ends at the turning point w = 0 when the far end is
-   not reached), and every leg the triple (cos^2 mu, 1 - k^2 sin^2 mu, 1)
-   exactly as chp_quartic_interval computes it (tan mu by the addition
-   theorem, with hypot).
+   not reached), and every leg the triple (1, 1 + k'^2 s^2, 1 + s^2),
+   s = tan mu, exactly as chp_quartic_interval computes it (tan mu by the
+   addition theorem, with hypot; legs with s > 2^50, which it evaluates in
+   the form (cos^2 mu, 1 - k^2 sin^2 mu, 1), are skipped: none is drawn).
 
    The rows, each computing R_F and R_D of every triple:
-     gsl          chp_rf + chp_rd, CHAPLYGIN_PREC_DOUBLE (today's path: GSL
-                  behind the guards and the scaling of lib/ellint.c)
-     gsl-raw      gsl_sf_ellint_RF_e + gsl_sf_ellint_RD_e, GSL_PREC_DOUBLE
-     fused        chp_carlson_rfrd (x, y, 1)
-     fused-z1     chp_carlson_rfrd_z1 (x, y): what chp_quartic_interval
-                  would call
-     fused-z1-F   chp_carlson_rfrd_z1, R_F alone (the heading alone)
-     gsl-single   chp_rf + chp_rd, CHAPLYGIN_PREC_SINGLE
-     fused-single chp_carlson_rfrd_z1, CHAPLYGIN_PREC_SINGLE
+     gsl          gsl_sf_ellint_RF_e + gsl_sf_ellint_RD_e, GSL_PREC_DOUBLE
+     chp-rf-rd    chp_rf + chp_rd of lib/ellint.c (the kernel behind
+                  argument checks and sorting, one call for each)
+     fused        chp_carlson_rfrd (1, y, z)
+     fused-x1     chp_carlson_rfrd_x1 (y, z): what chp_quartic_interval
+                  calls
+     fused-x1-F   chp_carlson_rfrd_x1, R_F alone (the heading alone)
+     gsl-single   gsl_sf_ellint_RF_e + gsl_sf_ellint_RD_e, GSL_PREC_SINGLE
+     fused-single chp_carlson_rfrd_x1, CHAPLYGIN_PREC_SINGLE
    Accuracy: max and mean error in ulps of each value against Arb
    (acb_elliptic_rf, acb_elliptic_rj with R_D = R_J(x, y, z, z), >= 100
    correct bits).  Time: REPS rounds over all rows, each row timed over
@@ -60,7 +61,7 @@
 
 typedef struct
 {
-  double *x, *y;                /* the triples (x[i], y[i], 1) */
+  double *y, *z;                /* the triples (1, y[i], z[i]) */
   size_t n;
   double *f, *d;                /* a row's results */
 } triples;
@@ -80,12 +81,12 @@ uniform (double a, double b)
   return a + (b - a) * ((double) (v >> 11) * 0x1p-53);
 }
 
-/* chp_quartic_interval's (cos^2 mu, 1 - k^2 sin^2 mu) for the leg [y, x]
-   of the quartic (t^2 + p)(t^2 + q), p = sp^2, q = sq^2 (lib/ellint.c,
-   the unscaled branch); 0 if the leg is empty or the complete integral of
-   the spinning state. */
+/* chp_quartic_interval's (1 + k'^2 s^2, 1 + s^2), s = tan mu, for the leg
+   [y, x] of the quartic (t^2 + p)(t^2 + q), p = sp^2, q = sq^2
+   (lib/ellint.c, the unscaled branch); 0 if the leg is empty, the
+   complete integral of the spinning state, or s > 2^50. */
 static int
-leg_triple (double sp, double sq, double y, double x, double *X, double *Y)
+leg_triple (double sp, double sq, double y, double x, double *Y, double *Z)
 {
   if (!(x > y) || (y == 0.0 && sq == 0.0))
     return 0;
@@ -100,10 +101,11 @@ leg_triple (double sp, double sq, double y, double x, double *X, double *Y)
       double wx = x / (x + y), wy = y / (x + y);
       s = dxy * sp / (wx * (ay * by) + wy * (ax * bx));
     }
-  double c = 1.0 / hypot (1.0, s), sn = s * c;
+  if (!(s <= 0x1p50))
+    return 0;
   const double kp2 = (sq / sp) * (sq / sp);
-  *X = c * c;
-  *Y = *X + kp2 * sn * sn;
+  *Y = fma (kp2 * s, s, 1.0);
+  *Z = fma (s, s, 1.0);
   return 1;
 }
 
@@ -111,11 +113,11 @@ static void
 make_triples (triples *t, size_t n)
 {
   t->n = 0;
-  t->x = malloc (n * sizeof *t->x);
   t->y = malloc (n * sizeof *t->y);
+  t->z = malloc (n * sizeof *t->z);
   t->f = malloc (n * sizeof *t->f);
   t->d = malloc (n * sizeof *t->d);
-  if (!t->x || !t->y || !t->f || !t->d)
+  if (!t->y || !t->z || !t->f || !t->d)
     {
       fprintf (stderr, "bench/carlson: out of memory\n");
       exit (EXIT_FAILURE);
@@ -162,8 +164,8 @@ make_triples (triples *t, size_t n)
           nl = 1;
         }
       for (int k = 0; k < nl && t->n < n; k++)
-        if (leg_triple (sp, sq, legs[k][0], legs[k][1], &t->x[t->n],
-                        &t->y[t->n]))
+        if (leg_triple (sp, sq, legs[k][0], legs[k][1], &t->y[t->n],
+                        &t->z[t->n]))
           t->n++;
     }
 }
@@ -173,8 +175,8 @@ make_triples (triples *t, size_t n)
 static void
 fail (const char *what, size_t i, const triples *t)
 {
-  fprintf (stderr, "bench/carlson: %s failed at (%a, %a, 1)\n", what, i < t->n
-           ? t->x[i] : 0.0, i < t->n ? t->y[i] : 0.0);
+  fprintf (stderr, "bench/carlson: %s failed at (1, %a, %a)\n", what,
+           i < t->n ? t->y[i] : 0.0, i < t->n ? t->z[i] : 0.0);
   exit (EXIT_FAILURE);
 }
 
@@ -184,37 +186,40 @@ fail (const char *what, size_t i, const triples *t)
   {                                                             \
     for (size_t i = 0; i < t->n; i++)                           \
       {                                                         \
-        const double x = t->x[i], y = t->y[i];                  \
+        const double y = t->y[i], z = t->z[i];                  \
         double *f = &t->f[i], *d = &t->d[i];                    \
         body;                                                   \
       }                                                         \
   }
 
 ROW (gsl,
-     if (chp_rf (x, y, 1.0, CHAPLYGIN_PREC_DOUBLE, f)
-         || chp_rd (x, y, 1.0, CHAPLYGIN_PREC_DOUBLE, d)) fail ("gsl", i, t))
-ROW (gsl_raw,
      gsl_sf_result a; gsl_sf_result b;
-     if (gsl_sf_ellint_RF_e (x, y, 1.0, GSL_PREC_DOUBLE, &a)
-         || gsl_sf_ellint_RD_e (x, y, 1.0, GSL_PREC_DOUBLE, &b))
-       fail ("gsl-raw", i, t);
+     if (gsl_sf_ellint_RF_e (1.0, y, z, GSL_PREC_DOUBLE, &a)
+         || gsl_sf_ellint_RD_e (1.0, y, z, GSL_PREC_DOUBLE, &b))
+       fail ("gsl", i, t);
      *f = a.val; *d = b.val)
+ROW (chp_rf_rd,
+     if (chp_rf (1.0, y, z, CHAPLYGIN_PREC_DOUBLE, f)
+         || chp_rd (1.0, y, z, CHAPLYGIN_PREC_DOUBLE, d))
+       fail ("chp-rf-rd", i, t))
 ROW (fused,
-     if (chp_carlson_rfrd (x, y, 1.0, CHAPLYGIN_PREC_DOUBLE, f, d))
+     if (chp_carlson_rfrd (1.0, y, z, CHAPLYGIN_PREC_DOUBLE, f, d))
        fail ("fused", i, t))
-ROW (fused_z1,
-     if (chp_carlson_rfrd_z1 (x, y, CHAPLYGIN_PREC_DOUBLE, f, d))
-       fail ("fused-z1", i, t))
-ROW (fused_z1_F,
-     if (chp_carlson_rfrd_z1 (x, y, CHAPLYGIN_PREC_DOUBLE, f, NULL))
-       fail ("fused-z1-F", i, t);
+ROW (fused_x1,
+     if (chp_carlson_rfrd_x1 (y, z, CHAPLYGIN_PREC_DOUBLE, f, d))
+       fail ("fused-x1", i, t))
+ROW (fused_x1_F,
+     if (chp_carlson_rfrd_x1 (y, z, CHAPLYGIN_PREC_DOUBLE, f, NULL))
+       fail ("fused-x1-F", i, t);
      *d = NAN)
 ROW (gsl_single,
-     if (chp_rf (x, y, 1.0, CHAPLYGIN_PREC_SINGLE, f)
-         || chp_rd (x, y, 1.0, CHAPLYGIN_PREC_SINGLE, d))
-       fail ("gsl-single", i, t))
+     gsl_sf_result a; gsl_sf_result b;
+     if (gsl_sf_ellint_RF_e (1.0, y, z, GSL_PREC_SINGLE, &a)
+         || gsl_sf_ellint_RD_e (1.0, y, z, GSL_PREC_SINGLE, &b))
+       fail ("gsl-single", i, t);
+     *f = a.val; *d = b.val)
 ROW (fused_single,
-     if (chp_carlson_rfrd_z1 (x, y, CHAPLYGIN_PREC_SINGLE, f, d))
+     if (chp_carlson_rfrd_x1 (y, z, CHAPLYGIN_PREC_SINGLE, f, d))
        fail ("fused-single", i, t))
 
 typedef struct
@@ -227,10 +232,10 @@ typedef struct
 
 static row rows[] = {
   { "gsl", run_gsl, 0, 0, 0, 0, 0, 0, 0 },
-  { "gsl-raw", run_gsl_raw, 0, 0, 0, 0, 0, 0, 0 },
+  { "chp-rf-rd", run_chp_rf_rd, 0, 0, 0, 0, 0, 0, 0 },
   { "fused", run_fused, 0, 0, 0, 0, 0, 0, 0 },
-  { "fused-z1", run_fused_z1, 0, 0, 0, 0, 0, 0, 0 },
-  { "fused-z1-F", run_fused_z1_F, 0, 0, 0, 0, 0, 0, 0 },
+  { "fused-x1", run_fused_x1, 0, 0, 0, 0, 0, 0, 0 },
+  { "fused-x1-F", run_fused_x1_F, 0, 0, 0, 0, 0, 0, 0 },
   { "gsl-single", run_gsl_single, 0, 0, 0, 0, 0, 0, 0 },
   { "fused-single", run_fused_single, 0, 0, 0, 0, 0, 0, 0 },
 };
@@ -250,11 +255,11 @@ run_symbol (const row *r, char *buf, size_t len)
 /* ---- accuracy ---------------------------------------------------- */
 
 static void
-arb_ref (arb_t out, int which, double x, double y)
+arb_ref (arb_t out, int which, double y, double z)
 {
   acb_t a, b, c, r;
   acb_init (a), acb_init (b), acb_init (c), acb_init (r);
-  acb_set_d (a, x), acb_set_d (b, y), acb_set_d (c, 1.0);
+  acb_set_d (a, 1.0), acb_set_d (b, y), acb_set_d (c, z);
   for (slong prec = 192; prec <= 4096; prec *= 2)
     {
       if (which == 0)
@@ -266,7 +271,7 @@ arb_ref (arb_t out, int which, double x, double y)
     }
   if (acb_rel_accuracy_bits (r) < 100)
     {
-      fprintf (stderr, "bench/carlson: Arb failed at (%a, %a, 1)\n", x, y);
+      fprintf (stderr, "bench/carlson: Arb failed at (1, %a, %a)\n", y, z);
       exit (EXIT_FAILURE);
     }
   arb_set (out, acb_realref (r));
@@ -383,8 +388,8 @@ main (int argc, char **argv)
   for (size_t i = 0; i < n; i++)
     {
       arb_init (rf[i]), arb_init (rd[i]);
-      arb_ref (rf[i], 0, t.x[i], t.y[i]);
-      arb_ref (rd[i], 1, t.x[i], t.y[i]);
+      arb_ref (rf[i], 0, t.y[i], t.z[i]);
+      arb_ref (rd[i], 1, t.y[i], t.z[i]);
     }
   for (size_t k = 0; k < NROWS; k++)
     {
@@ -442,7 +447,7 @@ main (int argc, char **argv)
   for (size_t k = 0; k < NROWS; k++)
     rows[k].instr = use_cg ? callgrind_count (argv[0], &rows[k], n) : (double) NAN;
 
-  printf ("bench/carlson: %zu triples (cos^2 mu, 1 - k^2 sin^2 mu, 1) from "
+  printf ("bench/carlson: %zu triples (1, 1 + k'^2 s^2, 1 + s^2) from "
           "random legs; %d rounds\n", t.n, reps);
   printf ("%-13s %8s %8s %8s %8s %9s %9s %8s %9s %8s\n", "row", "maxF",
           "meanF", "maxD", "meanD", "ns min", "ns med", "x gsl", "instr",
@@ -482,7 +487,7 @@ main (int argc, char **argv)
   for (size_t i = 0; i < n; i++)
     arb_clear (rf[i]), arb_clear (rd[i]);
   free (rf), free (rd), free (ts);
-  free (t.x), free (t.y), free (t.f), free (t.d);
+  free (t.y), free (t.z), free (t.f), free (t.d);
   flint_cleanup ();
   return EXIT_SUCCESS;
 }

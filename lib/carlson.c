@@ -83,23 +83,32 @@
      it underflows gradually, to 0 for arguments above about 2^700
      (status 0, as chp_rd).  R_F never overflows (<= pi/2 2^537).
    - x = y = z: no step, R_F = x^-1/2 and R_D = x^-3/2 to rounding.
+   Evaluation.  lambda = fma(sqrt x, sqrt y + sqrt z, sqrt y sqrt z), the
+   series in Horner form with fma, and the result as fma(L, S, L) with
+   L = A^-1/2 (R_F; 4^-M A^-3/2 for R_D) and S the series minus 1: each
+   fma one rounding where the product and sum had two, and one operation
+   fewer on the loop's critical path (sqrt -> lambda -> x + lambda).
    Accuracy (DOUBLE), |computed - exact|/ulp(exact) against Arb (>= 100
    correct bits) on tests/test_carlson_arb's five data sets of 66,000
    triples (10^-323 .. 10^308, the library's triples, the edges and
-   switches, the stopping rule): R_F max 4.0 ulps, mean 0.45 to 0.65;
-   R_D max 5.9 ulps, mean 0.52 to 0.88; GSL's max on the sets inside its
-   domain 4.6 (R_F) and 6.2 (R_D) ulps.  On 4 million closed-form points
-   (R_F(x, y, y), R_D(x, y, y), R_D(y, y, x), binary128 references, three
-   seeds) the largest errors found were 5.2 and 7.6 ulps (GSL on 2 million
-   of them: 6.8 and 7.9).
+   switches, the stopping rule): R_F max 3.4 ulps, mean 0.45 to 0.65;
+   R_D max 5.4 ulps, mean 0.52 to 0.95 (0.95 on the library's triples,
+   whose R_D lies just below 1, where an ulp is half as large); GSL's
+   max on the sets inside its domain 4.6 (R_F) and 6.2 (R_D) ulps.  On
+   4 million closed-form points (R_F(x, y, y), R_D(x, y, y), R_D(y, y, x),
+   binary128 references, two seeds) the largest errors found were 4.4 and
+   6.7 ulps (before the fma forms: 5.1 and 6.7 on the same points; GSL on
+   2 million: 6.8 and 7.9).
    The error is rounding, not truncation: about 0.7 eps per duplication
    step from the square roots, lambda and the sums, and 1.5 eps in the
    series and the final division (R_D also ~2 eps in its sum's terms).
-   SINGLE: max relative error 5.9e-13 (GSL_PREC_SINGLE's: 3e5 ulps, ~5e-11,
-   on the library's triples, bench/carlson).
+   SINGLE: max relative error 5.9e-13 (GSL_PREC_SINGLE's: up to 5.7e5
+   ulps, ~6e-11, on the library's triples, bench/carlson).
    Bits: the results are the same in every request and between the two
-   entry points on builds without floating-point contraction (the default
-   x86-64 build; with -mfma add -ffp-contract=off, as TOOLCHAIN.md says). */
+   entry points.  fma() rounds once wherever it runs (one instruction
+   with configure's -mfma, libm's exact emulation without), and the
+   library is built with -ffp-contract=off, so that the compiler fuses
+   nothing else (TOOLCHAIN.md): the same bits on every IEEE machine. */
 #include <config.h>
 
 #include <float.h>
@@ -130,19 +139,20 @@ static const double tau[2] = { 0.0105, 0.042 };
 CARLSON_INLINE double
 series_rf (double E2, double E3)
 {
-  return E2 * (-1.0 / 10 + E2 * (1.0 / 24 - 5.0 / 208 * E2 + 1.0 / 16 * E3)
-               - 3.0 / 44 * E3)
-    + E3 * (1.0 / 14 + 3.0 / 104 * E3);
+  const double a = fma (-5.0 / 208, E2, fma (1.0 / 16, E3, 1.0 / 24));
+  const double b = fma (E2, a, fma (-3.0 / 44, E3, -1.0 / 10));
+  return fma (E2, b, E3 * fma (3.0 / 104, E3, 1.0 / 14));
 }
 
 /* The R_D series (step 2) minus its leading 1 (DLMF 19.36.2). */
 CARLSON_INLINE double
 series_rd (double E2, double E3, double E4, double E5)
 {
-  return E2 * (-3.0 / 14 + E2 * (9.0 / 88 - 1.0 / 16 * E2 + 45.0 / 272 * E3)
-               - 9.0 / 52 * E3 + 3.0 / 20 * E4 - 9.0 / 68 * E5)
-    + E3 * (1.0 / 6 + 3.0 / 40 * E3 - 9.0 / 68 * E4)
-    - 3.0 / 22 * E4 + 3.0 / 26 * E5;
+  const double a = fma (-1.0 / 16, E2, fma (45.0 / 272, E3, 9.0 / 88));
+  const double b = fma (E2, a, fma (-9.0 / 52, E3, fma (3.0 / 20, E4,
+                                        fma (-9.0 / 68, E5, -3.0 / 14))));
+  const double c = fma (3.0 / 40, E3, fma (-9.0 / 68, E4, 1.0 / 6));
+  return fma (E2, b, fma (E3, c, fma (-3.0 / 22, E4, 3.0 / 26 * E5)));
 }
 
 double
@@ -168,7 +178,7 @@ chp_carlson_series_rd (double E2, double E3, double E4, double E5)
 #define CHP_DUP_STEP                                      \
   do                                                      \
     {                                                     \
-      const double lam = sx * (sy + sz) + sy * sz;        \
+      const double lam = fma (sx, sy + sz, sy * sz);      \
       if (want_d)                                         \
         sum += g / (sz * (z + lam));                      \
       x += lam;                                           \
@@ -181,9 +191,9 @@ chp_carlson_series_rd (double E2, double E3, double E4, double E5)
   while (0)
 
 /* The loop and the series for arguments inside [2^-500, 2^500] (max) with
-   sx, sy, sz their square roots (passed in so that z = 1 needs none).
+   sx, sy, sz their square roots (passed in so that x = 1 needs none).
    Writes R_F to *rf and R_D to *rd where non-NULL.  Always inlined, so
-   that the z = 1 entry is this code with a constant. */
+   that the x = 1 entry is this code with a constant. */
 CARLSON_INLINE void
 duplicate (double x, double y, double z, double sx, double sy, double sz,
            int single, double *rf, double *rd)
@@ -210,27 +220,30 @@ duplicate (double x, double y, double z, double sx, double sy, double sz,
           CHP_DUP_STEP;
         }
     }
-  /* AF, AD are 4^m A_m: 1/AF = 4^-m/A_m, and 1/sqrt(A_m) = g/sqrt(AF) */
+  /* AF, AD are 4^m A_m: X = 4^-m (A_0 - x_0)/A_m = dxF/AF (R_F divides:
+     one operation fewer after the loop than 1/AF and a product), and
+     1/sqrt(A_m) = g/sqrt(AF) */
   if (rf)
     {
-      const double inv = 1.0 / AF;
-      const double X = dxF * inv, Y = dyF * inv, Z = -(X + Y);
+      const double X = dxF / AF, Y = dyF / AF, Z = -(X + Y);
       const double XY = X * Y;
       const double E2 = XY - Z * Z, E3 = XY * Z;
-      *rf = (1.0 + series_rf (E2, E3)) / root (AF) * g;
+      const double lead = g / root (AF);
+      *rf = fma (lead, series_rf (E2, E3), lead);
     }
   if (rd)
     {
       const double inv = 1.0 / AD;
-      const double X = dxD * inv, Y = dyD * inv, Z = -(X + Y) / 3.0;
+      /* Z by the rounded 1/3: an ulp of Z (<= t), < 1e-18 of R_D */
+      const double X = dxD * inv, Y = dyD * inv, Z = -(X + Y) * (1.0 / 3);
       const double XY = X * Y, Z2 = Z * Z;
       const double E2 = XY - 6.0 * Z2;
       const double E3 = (3.0 * XY - 8.0 * Z2) * Z;
       const double E4 = 3.0 * (XY - Z2) * Z2;
       const double E5 = XY * Z * Z2;
-      /* 4^-m A_m^-3/2 (1 + series) = (1/AD) (1 + series)/sqrt(AD) g */
-      *rd = 3.0 * sum
-        + inv * (1.0 + series_rd (E2, E3, E4, E5)) / root (AD) * g;
+      /* 4^-m A_m^-3/2 (1 + series) = lead (1 + series) */
+      const double lead = inv / root (AD) * g;
+      *rd = 3.0 * sum + fma (lead, series_rd (E2, E3, E4, E5), lead);
     }
 }
 
@@ -333,29 +346,16 @@ chp_carlson_rfrd (double x, double y, double z, chaplygin_precision prec,
 }
 
 int
-chp_carlson_rfrd_z1 (double x, double y, chaplygin_precision prec,
+chp_carlson_rfrd_x1 (double y, double z, chaplygin_precision prec,
                      double *rf, double *rd)
 {
-  /* Outside [0, 2^100]^2 (and for NaN) the general entry decides.  Inside,
-     max(x, y, 1) is in [1, 2^100]: no scaling; R_F's asymptotic branch is
-     taken iff x + y < 2^-100 (the 1 is the largest argument then, and
-     otherwise it is one of the two smallest, whose sum is >= 1 >= 2^-100
-     times the largest), the same test as R_D's. */
-  if (!(x >= 0.0 && y >= 0.0 && x <= 0x1p100 && y <= 0x1p100))
-    return chp_carlson_rfrd (x, y, 1.0, prec, rf, rd);
-  const double s = x + y;
-  if ((rf || rd) && s == 0.0)
-    return CHAPLYGIN_ERANGE;
-  if (s < 0x1p-100)
-    {
-      /* x + y = lo + mid exactly as the general entry forms it */
-      if (rf)
-        *rf = asym_rf (chp_min (x, y), chp_max (x, y), 1.0);
-      if (rd)
-        *rd = asym_rd (x, y, 1.0);
-      return CHAPLYGIN_SUCCESS;
-    }
-  duplicate (x, y, 1.0, root (x), root (y), 1.0,
+  /* Inside [1, 2^100]^2, max(1, y, z) is in [1, 2^100]: no scaling; the
+     two smallest arguments sum to at least 2 >= 2^-100 times the largest,
+     and x + y = 1 + y >= 2^-100 z: neither asymptotic form.  Outside, the
+     general entry decides. */
+  if (!(y >= 1.0 && z >= 1.0 && y <= 0x1p100 && z <= 0x1p100))
+    return chp_carlson_rfrd (1.0, y, z, prec, rf, rd);
+  duplicate (1.0, y, z, 1.0, root (y), root (z),
              prec == CHAPLYGIN_PREC_SINGLE, rf, rd);
   return CHAPLYGIN_SUCCESS;
 }

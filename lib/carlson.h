@@ -29,12 +29,12 @@
 int chp_carlson_rfrd (double x, double y, double z, chaplygin_precision prec,
                       double *rf, double *rd);
 
-/* chp_carlson_rfrd_z1: the same as chp_carlson_rfrd (x, y, 1.0, prec, rf,
-   rd), bit for bit and status for status, faster: the third argument of
-   chp_quartic_interval's triples (cos^2 mu, 1 - k^2 sin^2 mu, 1) is 1, so
-   the first duplication step needs no square root of it, and for
-   x, y <= 2^100 no sorting, scaling or range test is needed. */
-int chp_carlson_rfrd_z1 (double x, double y, chaplygin_precision prec,
+/* chp_carlson_rfrd_x1: the same as chp_carlson_rfrd (1.0, y, z, prec, rf,
+   rd), bit for bit and status for status, faster: chp_quartic_interval's
+   triples (1, 1 + k'^2 tan^2 mu, 1 + tan^2 mu) have x = 1, so the first
+   duplication step needs no square root of it, and for y, z in
+   [1, 2^100] no sorting, scaling or range test is needed. */
+int chp_carlson_rfrd_x1 (double y, double z, chaplygin_precision prec,
                          double *rf, double *rd);
 
 /* The 7th-order series of carlson.c (step 2), 1 + ..., in Carlson's

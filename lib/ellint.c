@@ -82,13 +82,18 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
    an expression with no difference but x - y, which is passed in exactly.
    Then, with sin(mu) = s/sqrt(1 + s^2), cos^2(mu) = 1/(1 + s^2) and
    1 - k^2 sin^2(mu) = cos^2(mu) + (q/p) sin^2(mu) (a sum, not a difference),
-       F = sin(mu) R_F(cos^2 mu, 1 - k^2 sin^2 mu, 1)          (DLMF 19.25.5).
+       F = sin(mu) R_F(cos^2 mu, 1 - k^2 sin^2 mu, 1)          (DLMF 19.25.5)
+         = s R_F(1, 1 + (q/p) s^2, 1 + s^2)
+   (the arguments multiplied by 1 + s^2; R_F is homogeneous of degree
+   -1/2): the form evaluated, two sums of positive terms and no division.
    For T, Int_0^x t^2/sqrt(P) dt = A(x) - sqrt(p) E(phi_x, k) with
    A(t) = t sqrt((t^2 + p)/(t^2 + q)); the addition theorem for E,
    E(phi_x) - E(phi_y) = E(mu) - k^2 sin(phi_x) sin(phi_y) sin(mu), and
    F - E = (k^2/3) sin^3 R_D(cos^2, 1 - k^2 sin^2, 1) (DLMF 19.25.7) give
        T = [A(x) - A(y)] + (p - q)/sqrt(p) sin(phi_x) sin(phi_y) sin(mu)
            + (p - q)/(3 sqrt(p)) sin^3(mu) R_D(cos^2 mu, 1 - k^2 sin^2 mu, 1),
+   the last term evaluated as (p - q)/(3 sqrt(p)) s^3 R_D(1, 1 + (q/p) s^2,
+   1 + s^2) (R_D of degree -3/2),
    with sin(phi_t) = t/sqrt(t^2 + q) and
        A(x) - A(y) = (x - y)(x + y)/(A(x) + A(y))
                      * [1 + q (p - q)/((x^2 + q)(y^2 + q))],
@@ -151,25 +156,44 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
                                  + ys * (chp_hypot (xs, ps) * chp_hypot (xs, qs)));
     }
 
-  double c, sn;                 /* cos(mu), sin(mu) */
-  if (isinf (s))
-    c = 0.0, sn = 1.0;
-  else
-    {
-      c = 1.0 / chp_hypot (1.0, s);
-      sn = s * c;
-    }
-  const double c2 = c * c;
+  /* R_F and R_D of (1, 1 + k'^2 s^2, 1 + s^2) (Method) from one
+     duplication loop, each with the same bits whether the other is
+     requested or not; above s = 2^50 (1 + s^2 > 2^100, where R_F's
+     asymptotic form begins; s^3 and 1 + s^2 overflow further up) of the
+     triple (cos^2 mu, 1 - k^2 sin^2 mu, 1) itself */
   const double kprime2
       = (sqrt_q / sqrt_p) * (sqrt_q / sqrt_p);      /* k'^2 = q/p */
-  const double Y = c2 + kprime2 * sn * sn;          /* 1 - k^2 sin^2(mu) */
-
-  /* R_F and R_D of (c2, Y, 1) from one duplication loop, each with the
-     same bits whether the other is requested or not */
   double rf = 0.0, rd = 0.0;
-  CHP_TRY (chp_carlson_rfrd_z1 (c2, Y, prec, F ? &rf : NULL, T ? &rd : NULL));
-  if (F)
-    *F = sn * rf;
+  double sn, sn3;               /* sin(mu), and the factor of R_D */
+  if (s <= 0x1p50)
+    {
+      const double u = fma (s, s, 1.0);
+      const double Yn = fma (kprime2 * s, s, 1.0);
+      CHP_TRY (chp_carlson_rfrd_x1 (Yn, u, prec, F ? &rf : NULL,
+                                    T ? &rd : NULL));
+      sn = s / sqrt (u);
+      if (F)
+        *F = s * rf;
+      sn3 = s * s * s;
+    }
+  else
+    {
+      double c;                 /* cos(mu) */
+      if (isinf (s))
+        c = 0.0, sn = 1.0;
+      else
+        {
+          c = 1.0 / chp_hypot (1.0, s);
+          sn = s * c;
+        }
+      const double c2 = c * c;
+      const double Y = c2 + kprime2 * sn * sn;      /* 1 - k^2 sin^2(mu) */
+      CHP_TRY (chp_carlson_rfrd (c2, Y, 1.0, prec, F ? &rf : NULL,
+                                 T ? &rd : NULL));
+      if (F)
+        *F = sn * rf;
+      sn3 = sn * sn * sn;
+    }
   if (T)
     {
       /* (x + y)/(A(x) + A(y)), A(t) = t sqrt((t^2 + p)/(t^2 + q)) */
@@ -184,7 +208,7 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
       double term1 = dxy * ratio * (1.0 + corr);
       double term2
           = (y == 0.0) ? 0.0 : (p_minus_q / sqrt_p) * (x / bx) * (y / by) * sn;
-      double term3 = (p_minus_q / (3.0 * sqrt_p)) * (sn * sn * sn) * rd;
+      double term3 = (p_minus_q / (3.0 * sqrt_p)) * sn3 * rd;
       *T = term1 + term2 + term3;
     }
   return CHAPLYGIN_SUCCESS;

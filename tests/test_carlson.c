@@ -47,7 +47,7 @@
    - tau (DOUBLE) doubled: two_equal (25 ulps) and Arb (worse than GSL)
      fail; tau x 1.5 passes (truncation <= 3e-16, within the bounds);
    - tau (SINGLE) x 1.25 or x 1.5: single and Arb SINGLE fail;
-   - R_F alone stopping by a looser rule, or the z = 1 entry with x and y
+   - R_F alone stopping by a looser rule, or the x = 1 entry with y and z
      swapped: same_bits fails;
    - the asymptotic 4 sqrt(z) -> 4.000000001 sqrt(z): two_equal, gsl and
      Arb fail; an odd scaling exponent: equal_arguments, homogeneity,
@@ -369,13 +369,14 @@ START_TEST (test_legendre)
   err_report ("legendre", "R_D", &ed);
   err_assert ("legendre", "R_F", &ef, BOUND_RF, MEAN_RF);
   err_assert ("legendre", "R_D", &ed, BOUND_RD, MEAN_RD);
-  /* the z = 1 entry at the same points */
+  /* the x = 1 entry on its fast path: R_F(1, 2, 2) = R_C(1, 2) = pi/4 and
+     R_D(1, 2, 2) = 3/2 (pi/4 - 1/2) (test_two_equal's closed forms) */
   double f, d;
-  ck_assert_ok (chp_carlson_rfrd_z1 (0.0, 0.5, DBL, &f, &d));
-  ck_assert_msg (ulps_q (f, K) <= BOUND_RF, "K(1/sqrt 2): %g ulps",
-                 ulps_q (f, K));
-  ck_assert_msg (ulps_q (d, RD) <= BOUND_RD, "R_D(0, 1/2, 1): %g ulps",
-                 ulps_q (d, RD));
+  ck_assert_ok (chp_carlson_rfrd_x1 (2.0, 2.0, DBL, &f, &d));
+  ck_assert_msg (ulps_q (f, M_PIq / 4) <= BOUND_RF, "R_F(1, 2, 2): %g ulps",
+                 ulps_q (f, M_PIq / 4));
+  ck_assert_msg (ulps_q (d, 1.5Q * (M_PIq / 4 - 0.5Q)) <= BOUND_RD,
+                 "R_D(1, 2, 2): %g ulps", ulps_q (d, 1.5Q * (M_PIq / 4 - 0.5Q)));
 }
 END_TEST
 
@@ -533,7 +534,7 @@ any_triple (tu_rng *r, int i, double *x, double *y, double *z)
 START_TEST (test_same_bits)
 {
   /* Every request gives the same bits for each value (one loop, one
-     stopping rule), and the z = 1 entry gives those of the general one;
+     stopping rule), and the x = 1 entry gives those of the general one;
      the statuses agree.  Checked byte for byte. */
   tu_rng r;
   tu_rng_seed (&r, 4004);
@@ -558,51 +559,52 @@ START_TEST (test_same_bits)
           }
         else
           ck_assert (sb == sf || sb == sd);
-        /* the z = 1 entry, on (x/z, y/z) and on (x, y) as drawn */
+        /* the x = 1 entry, on (y/x, z/x) and on (y, z) as drawn */
         for (int k = 0; k < 2; k++)
           {
-            double a = k ? x : x / z, b = k ? y : y / z;
+            double a = k ? y : y / x, b = k ? z : z / x;
             double g0 = -1.0, e0 = -1.0, g1 = -2.0, e1 = -2.0;
-            int s0 = chp_carlson_rfrd (a, b, 1.0, p, &g0, &e0);
-            int s1 = chp_carlson_rfrd_z1 (a, b, p, &g1, &e1);
+            int s0 = chp_carlson_rfrd (1.0, a, b, p, &g0, &e0);
+            int s1 = chp_carlson_rfrd_x1 (a, b, p, &g1, &e1);
             ck_assert_int_eq (s0, s1);
             if (s0 == CHAPLYGIN_SUCCESS)
               ck_assert_msg (memcmp (&g0, &g1, sizeof g0) == 0
                              && memcmp (&e0, &e1, sizeof e0) == 0,
-                             "z = 1 entry at (%a, %a) prec %d: R_F %a / %a, "
+                             "x = 1 entry at (%a, %a) prec %d: R_F %a / %a, "
                              "R_D %a / %a", a, b, p, g1, g0, e1, e0);
             else                /* nothing written */
               ck_assert (g1 == -2.0 && e1 == -2.0);
             double h1 = -3.0, h2 = -3.0;
-            ck_assert_int_eq (chp_carlson_rfrd_z1 (a, b, p, &h1, NULL),
-                              chp_carlson_rfrd (a, b, 1.0, p, &h2, NULL));
+            ck_assert_int_eq (chp_carlson_rfrd_x1 (a, b, p, &h1, NULL),
+                              chp_carlson_rfrd (1.0, a, b, p, &h2, NULL));
             ck_assert (memcmp (&h1, &h2, sizeof h1) == 0);
             h1 = h2 = -4.0;
-            ck_assert_int_eq (chp_carlson_rfrd_z1 (a, b, p, NULL, &h1),
-                              chp_carlson_rfrd (a, b, 1.0, p, NULL, &h2));
+            ck_assert_int_eq (chp_carlson_rfrd_x1 (a, b, p, NULL, &h1),
+                              chp_carlson_rfrd (1.0, a, b, p, NULL, &h2));
             ck_assert (memcmp (&h1, &h2, sizeof h1) == 0);
             if (s1 == CHAPLYGIN_SUCCESS)
               ck_assert (memcmp (&h1, &e1, sizeof h1) == 0);
           }
       }
-  /* the z = 1 entry's own switches, from both sides */
-  const double pts[][2] = { { 0x1p-101, 0x1p-101 }, { 0x1p-101, 0x1.0000000000001p-101 },
-  { 0x1.fffffffffffffp-102, 0x1p-101 }, { 0.0, 0x1p-100 },
-  { 0.0, 0x1.fffffffffffffp-101 }, { 0x1p100, 2.0 }, { 0x1.0000000000001p100, 2.0 },
-  { 3.0, 0x1p101 }, { 0x1p-1074, 0.0 }, { 0.0, 0.0 }, { 0x1p600, 0x1p-600 },
-  { 1.0, 1.0 }, { 0.0, 1.0 }, { 1.0, 0.0 }, { 1e300, 1e300 }
+  /* the x = 1 entry's own switches, from both sides */
+  const double pts[][2] = { { 1.0, 1.0 }, { 0x1.fffffffffffffp-1, 1.0 },
+  { 1.0, 0x1.fffffffffffffp-1 }, { 0x1p100, 0x1p100 },
+  { 0x1.0000000000001p100, 2.0 }, { 3.0, 0x1.0000000000001p100 },
+  { 0x1p-101, 1.0 }, { 1.0, 0x1p-101 }, { 0.0, 1.0 }, { 1.0, 0.0 },
+  { 0.0, 0.0 }, { 0x1p-1074, 0x1p-1074 }, { 0x1p600, 0x1p-600 },
+  { 0x1p200, 0x1p200 }, { 1e300, 1e300 }, { 2.0, 0x1p99 }
   };
   for (size_t i = 0; i < sizeof pts / sizeof pts[0]; i++)
     for (int p = 0; p < 2; p++)
       {
         double g0 = -1.0, e0 = -1.0, g1 = -2.0, e1 = -2.0;
-        int s0 = chp_carlson_rfrd (pts[i][0], pts[i][1], 1.0, p, &g0, &e0);
-        int s1 = chp_carlson_rfrd_z1 (pts[i][0], pts[i][1], p, &g1, &e1);
+        int s0 = chp_carlson_rfrd (1.0, pts[i][0], pts[i][1], p, &g0, &e0);
+        int s1 = chp_carlson_rfrd_x1 (pts[i][0], pts[i][1], p, &g1, &e1);
         ck_assert_int_eq (s0, s1);
         if (s0 == CHAPLYGIN_SUCCESS)
           ck_assert_msg (memcmp (&g0, &g1, sizeof g0) == 0
                          && memcmp (&e0, &e1, sizeof e0) == 0,
-                         "z = 1 entry at (%a, %a)", pts[i][0], pts[i][1]);
+                         "x = 1 entry at (%a, %a)", pts[i][0], pts[i][1]);
       }
 }
 END_TEST
@@ -703,8 +705,8 @@ START_TEST (test_statuses)
                           CHAPLYGIN_EDOM);
         ck_assert_status (chp_carlson_rfrd (a[0], a[1], a[2], DBL, NULL,
                                             NULL), CHAPLYGIN_EDOM);
-        if (pos < 2)
-          ck_assert_status (chp_carlson_rfrd_z1 (a[0], a[1], DBL, &f, &d),
+        if (pos > 0)
+          ck_assert_status (chp_carlson_rfrd_x1 (a[1], a[2], DBL, &f, &d),
                             CHAPLYGIN_EDOM);
         ck_assert (f == 42.0 && d == 43.0);
       }
@@ -724,17 +726,17 @@ START_TEST (test_statuses)
                     CHAPLYGIN_ERANGE);
   ck_assert_status (chp_carlson_rfrd (0.0, 0.0, 1.0, DBL, NULL, &d),
                     CHAPLYGIN_ERANGE);
-  ck_assert_status (chp_carlson_rfrd_z1 (0.0, 0.0, DBL, &f, &d),
+  ck_assert_status (chp_carlson_rfrd_x1 (0.0, 0.0, DBL, &f, NULL),
                     CHAPLYGIN_ERANGE);
-  ck_assert_status (chp_carlson_rfrd_z1 (0.0, 0.0, DBL, NULL, &d),
-                    CHAPLYGIN_ERANGE);
+  ck_assert_status (chp_carlson_rfrd_x1 (0.0, 0.0, DBL, NULL, &d),
+                    CHAPLYGIN_EDOM);
   ck_assert_status (chp_carlson_rfrd (0.0, 0.0, 0.0, DBL, &f, NULL),
                     CHAPLYGIN_ERANGE);
   ck_assert_status (chp_carlson_rfrd (0.0, 0.0, 0.0, DBL, NULL, &d),
                     CHAPLYGIN_EDOM);
   /* nothing requested: only the arguments are checked */
   ck_assert_ok (chp_carlson_rfrd (0.0, 0.0, 0.0, DBL, NULL, NULL));
-  ck_assert_ok (chp_carlson_rfrd_z1 (0.0, 0.0, DBL, NULL, NULL));
+  ck_assert_ok (chp_carlson_rfrd_x1 (0.0, 0.0, DBL, NULL, NULL));
   /* R_D overflows: R_D >= max^-3/2 */
   ck_assert_status (chp_carlson_rfrd (1e-300, 2e-300, 3e-300, DBL, NULL, &d),
                     CHAPLYGIN_ERANGE);
@@ -825,12 +827,13 @@ static const char *const set_name[NSETS] = { "wide", "moderate", "quartic",
   "edges", "stop"
 };
 
-/* The quartic set: the triples (cos^2 mu, 1 - k^2 sin^2 mu, 1) that
-   chp_quartic_interval forms (lib/ellint.c), from random legs: sp = 1,
-   sq = k' in (0, 1) over six decades, the interval [y, x] with x over six
-   decades about sq, y = 0 (a fifth) or in (0, x). */
+/* The quartic set: the triples (1, 1 + k'^2 s^2, 1 + s^2), s = tan(mu),
+   that chp_quartic_interval forms (lib/ellint.c; (cos^2 mu, 1 - k^2 sin^2
+   mu, 1) above s = 2^50), from random legs: sp = 1, sq = k' in (0, 1)
+   over six decades, the interval [y, x] with x over six decades about sq,
+   y = 0 (a fifth) or in (0, x). */
 static void
-quartic_triple (tu_rng *r, double *x, double *y)
+quartic_triple (tu_rng *r, double *x, double *y, double *z)
 {
   double sq = pow (10.0, tu_uniform (r, -6.0, 0.0)) * tu_uniform (r, 0.0, 1.0);
   double xx = pow (10.0, tu_uniform (r, -3.0, 3.0)) * sq
@@ -842,9 +845,17 @@ quartic_triple (tu_rng *r, double *x, double *y)
   double ay = hypot (yy, 1.0), by = hypot (yy, sq);
   double s = yy == 0.0 ? xx / sq
     : dxy / ((xx / (xx + yy)) * (ay * by) + (yy / (xx + yy)) * (ax * bx));
+  if (s <= 0x1p50)
+    {
+      *x = 1.0;
+      *y = fma (sq * sq * s, s, 1.0);
+      *z = fma (s, s, 1.0);
+      return;
+    }
   double c = 1.0 / hypot (1.0, s), sn = s * c;
   *x = c * c;
   *y = *x + sq * sq * sn * sn;
+  *z = 1.0;
 }
 
 /* The edge set: fixed points, then random points near every switch and
@@ -935,8 +946,7 @@ draw (int s, tu_rng *r, int i, double *x, double *y, double *z)
     case SET_QUARTIC:
       if (i >= n)
         return 0;
-      quartic_triple (r, x, y);
-      *z = 1.0;
+      quartic_triple (r, x, y, z);
       return 1;
     case SET_STOP:
       /* at the stopping rule: m (1 + d u) with u a random direction in
