@@ -956,26 +956,30 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
   double E = st->E, H = st->H, V = st->V;
   while (status == CHAPLYGIN_SUCCESS && i < n)
     {
-      double E1, H1;
-      int rev;
-      /* eh_fast's outputs are finite: the state stays valid for it */
-      if (in_cap && V == 0.0 && eh_fast (sys, dir, E, H, &E1, &H1, &rev))
-        {
-          dir = rev ? -dir : dir;
-          E = E1;
-          H = H1;
-        }
-      else
-        {
-          st->dir = dir;
-          st->E = E;
-          st->H = H;
-          status = step_core (sys, st, 0, NULL, st, NULL);
-          dir = st->dir;
-          E = st->E;
-          H = st->H;
-          V = st->V;
-        }
+      /* eh_fast's own loop while it takes every step (the common case;
+         its outputs are finite: the state stays valid for it) */
+      if (in_cap && V == 0.0)
+        for (; i < n; i++)
+          {
+            double E1, H1;
+            int rev;
+            if (!eh_fast (sys, dir, E, H, &E1, &H1, &rev))
+              break;
+            dir = rev ? -dir : dir;
+            E = E1;
+            H = H1;
+          }
+      if (i == n)
+        break;
+      /* a step eh_fast declines */
+      st->dir = dir;
+      st->E = E;
+      st->H = H;
+      status = step_core (sys, st, 0, NULL, st, NULL);
+      dir = st->dir;
+      E = st->E;
+      H = st->H;
+      V = st->V;
       i += status == CHAPLYGIN_SUCCESS;
     }
   st->dir = dir;

@@ -819,8 +819,10 @@ static int
 same_state (const chaplygin_discrete_state *a,
             const chaplygin_discrete_state *b)
 {
-  const double x[6] = { a->E, a->H, a->theta, a->tau, a->peg[0], a->peg[1] };
-  const double y[6] = { b->E, b->H, b->theta, b->tau, b->peg[0], b->peg[1] };
+  const double x[7] = { a->E, a->H, a->theta, a->tau, a->peg[0], a->peg[1],
+    a->V };
+  const double y[7] = { b->E, b->H, b->theta, b->tau, b->peg[0], b->peg[1],
+    b->V };
   return a->dir == b->dir && memcmp (x, y, sizeof x) == 0;
 }
 
@@ -850,6 +852,18 @@ START_TEST (test_step_eh_n)
       const double u = tu_uniform (&rng, -0.999, 0.999);
       chaplygin_discrete_state st = { dir, E, u * sqrt (2 * E) * hypot (1.0, ls),
                                       0.25, 1.5, { -1.0, 2.0 }, 0.0 };
+      if (c % 5 == 1 && !far)
+        {
+          /* a phase state, which keeps V+: its first step is the general
+             path's, the next ones the fast path's */
+          const double q[4] = { dir > 0 ? 0.0 : Delta, dir * sqrt (2 * E)
+                                * sqrt (1 - u * u), 0.25, u * sqrt (2 * E)
+                                / hypot (1.0, ls) };
+          const double peg[2] = { -1.0, 2.0 };
+          ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, q, 1.5,
+                                                             peg, &st));
+          ck_assert (st.V != 0.0);
+        }
       const unsigned long n = 1 + (unsigned long) tu_uniform (&rng, 0, 60);
       chaplygin_discrete_state ref = st, got = st;
       unsigned long done = 99, k = 0;
