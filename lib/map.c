@@ -269,12 +269,30 @@ eh_large (const chaplygin_discrete *sys, int k, double E, double H,
   return 1;
 }
 
+/* eh_outcome's outcomes: the step declined (the general path decides),
+   made, or made but for E' of a collision that takes more than half the
+   energy (eh_large's: the caller calls it, so that chaplygin_discrete_step's
+   lean path calls it last and needs no frame) */
+enum
+{ EH_DECLINED = 0, EH_DONE = 1, EH_LARGE = 2 };
+
+/* The slot end the peg leaves: the start (dir > 0: 0) on a reversal, the
+   far end otherwise. */
+static inline int
+leaving_end (int dir, int reversal)
+{
+  const int start = dir > 0 ? 0 : 1;
+  return reversal ? start : 1 - start;
+}
+
+/* The (E, H) step where its classification is certain from E and H with
+   the margin EH_MARGIN: *H1, *reversal, and *E1 but for EH_LARGE. */
 static CHP_ALWAYS_INLINE int
-eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
-         double *E1, double *H1, int *reversal)
+eh_outcome (const chaplygin_discrete *sys, int dir, double E, double H,
+            double *E1, double *H1, int *reversal)
 {
   if (!(E > 0.0 && E <= 0.25 * DBL_MAX && fabs (H) <= 0x1p500))
-    return 0;
+    return EH_DECLINED;
   const int start = dir > 0 ? 0 : 1;
   const double H2 = H * H;
   /* the sign of the least V^2 on the segment, where it is certain: the
@@ -287,7 +305,7 @@ eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
       const double twoE = 2.0 * E;
       if (!(E >= 0x1p-900
             && H2 < twoE * fma (l0, l0, 1.0) * (1.0 - EH_MARGIN)))
-        return 0;
+        return EH_DECLINED;
       crosses = chp_crosses (l0, l1);
       if (dir * l0 < 0.0)
         {
@@ -296,21 +314,32 @@ eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
           if (H2 > b * (1.0 + EH_MARGIN))
             least = -1.0;
           else if (!(H2 < b * (1.0 - EH_MARGIN)))
-            return 0;
+            return EH_DECLINED;
         }
       else if (!(dir * l0 > 0.0))
-        return 0;               /* from l = 0 exactly: the spinning test */
+        return EH_DECLINED;     /* from l = 0 exactly: the spinning test */
     }
   const int rev = chp_segment_rule (crosses, least) == CHP_SEGMENT_REVERSE;
-  const int k = rev ? start : 1 - start;
-  const double c1h = sys->C1[k] * H, h1 = sys->C2[k] * H;
-  if (fabs (c1h * H) <= 0.5 * E)
-    *E1 = fma (c1h, H, E);
-  else if (!eh_large (sys, k, E, H, h1, E1))
-    return 0;
-  *H1 = h1;
+  const int k = leaving_end (dir, rev);
+  const double c1h = sys->C1[k] * H;
+  *H1 = sys->C2[k] * H;
   *reversal = rev;
-  return 1;
+  if (!(fabs (c1h * H) <= 0.5 * E))
+    return EH_LARGE;
+  *E1 = fma (c1h, H, E);
+  return EH_DONE;
+}
+
+/* eh_outcome with eh_large's E': 1 if the step is made, 0 if the general
+   path must make it. */
+static CHP_ALWAYS_INLINE int
+eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
+         double *E1, double *H1, int *reversal)
+{
+  const int r = eh_outcome (sys, dir, E, H, E1, H1, reversal);
+  return r == EH_DONE
+    || (r == EH_LARGE
+        && eh_large (sys, leaving_end (dir, *reversal), E, H, *H1, E1));
 }
 
 /* E1, raised by at most 8 ulps until the state (E1, H1) with the peg at
@@ -848,6 +877,36 @@ step_general (const chaplygin_discrete *sys,
   return step_core (sys, in, request, opt, out, ev);
 }
 
+/* The lean path's output: *in with the new dir, E and H (V+ unknown). */
+static inline int
+lean_output (const chaplygin_discrete_state *in, int rev, double E1,
+             double H1, chaplygin_discrete_state *out)
+{
+  const int dir = rev ? -in->dir : in->dir;
+  if (out != in)
+    *out = *in;
+  out->dir = dir;
+  out->E = E1;
+  out->H = H1;
+  out->V = 0.0;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_discrete_step's lean path for a collision that takes more than
+   half the energy (eh_fast: EH_LARGE, reversal REV, H' = H1): E' by
+   eh_large, or the general path.  Out of line and called last, so that
+   the lean path makes no call that needs a frame. */
+static int __attribute__ ((noinline))
+step_lean_large (const chaplygin_discrete *sys,
+                 const chaplygin_discrete_state *in, int rev, double H1,
+                 const chaplygin_options *opt, chaplygin_discrete_state *out)
+{
+  double E1;
+  if (!eh_large (sys, leaving_end (in->dir, rev), in->E, in->H, H1, &E1))
+    return step_general (sys, in, 0, opt, out, NULL);
+  return lean_output (in, rev, E1, H1, out);
+}
+
 /* chaplygin_discrete_step: (B.3) and (B.4), the return map on post-collision
    states p = {D+, E, theta, H} (D+ carried as dir):
      (B.3) no reversal:  D+' = D+, E' = E + C1 H^2, H' = C2 H,
@@ -912,17 +971,11 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
     {
       double E1, H1;
       int rev;
-      if (eh_fast (sys, in->dir, in->E, in->H, &E1, &H1, &rev))
-        {
-          const int dir = rev ? -in->dir : in->dir;
-          if (out != in)
-            *out = *in;
-          out->dir = dir;
-          out->E = E1;
-          out->H = H1;
-          out->V = 0.0;
-          return CHAPLYGIN_SUCCESS;
-        }
+      const int r = eh_outcome (sys, in->dir, in->E, in->H, &E1, &H1, &rev);
+      if (r == EH_DONE)
+        return lean_output (in, rev, E1, H1, out);
+      if (r == EH_LARGE)
+        return step_lean_large (sys, in, rev, H1, opt, out);
     }
   return step_general (sys, in, request, opt, out, ev);
 }
