@@ -106,7 +106,8 @@ chp_rd (double x, double y, double z, chaplygin_precision prec, double *r)
    Special cases: x = y gives 0; y = 0 gives s = x/sqrt(q); y = q = 0 is the
    divergent integral of the spinning state: CHAPLYGIN_ESPIN.
    Accuracy: within 2 eps of 40-digit quadrature on the reference set
-   (manual, "Speed and accuracy").  Errors from chp_rf/chp_rd are passed on. */
+   (manual, "Speed and accuracy").  Errors of the Carlson kernel
+   (carlson.c) are passed on. */
 int
 chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
                       double x, double dxy, chaplygin_precision prec,
