@@ -915,6 +915,62 @@ START_TEST (test_step_eh_n)
 END_TEST
 
 
+/* The lean (E, H) path of chaplygin_discrete_step where the collision takes
+   more than half the energy and g at the end the peg leaves lies within
+   rounding of the fast classification's margin 2^-40 (1 + l^2): the exact
+   E' (eh_large) declines and the general path decides.  The states were
+   found by searching H just below sqrt(2E (1 + l^2)(1 - 2^-40)) (at the
+   start: a reversal; at the far end: a pass).  E, H and dir must be
+   bit-identical to a request that takes the general path from the start
+   and to step_eh_n, and E' within 11 eps of (B.3)/(B.4) in binary128 at
+   the end the step leaves (the bound of test_eh_update for such
+   collisions; binary128 keeps 95 bits after E + C1 H^2 cancels 17). */
+START_TEST (test_lean_large_declined)
+{
+  static const struct
+  {
+    double L0, Delta;
+    int dir;
+    double E, H;
+  } c[] = {
+    { -0x1.ac5437f4p-1, 0x1.02c74b59ccccdp+1, -1, 0x1.1e596fb8p-1,
+      -0x1.a3d6cb3e86134p+0 },
+    { -0x1.bbfdd81ap+0, 0x1.7535fc57ccccdp+1, 1, 0x1.3dcdbb04p+0,
+      0x1.93c7c3a9d2fd4p+1 },
+    { -0x1.5a4dc344p-1, 0x1.1b3eb5adccccdp+1, 1, 0x1.6b80b4fcp-1,
+      -0x1.70471c8affef4p+0 },
+  };
+  for (size_t i = 0; i < NELEM (c); i++)
+    {
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, c[i].L0, c[i].Delta));
+      const chaplygin_discrete_state st = { c[i].dir, c[i].E, c[i].H, 0.5,
+                                            1.5, { 1.0, -1.0 }, 0.0 };
+      chaplygin_discrete_state lean, gen, n1 = st;
+      chaplygin_discrete_event ev;
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, NULL, &lean, NULL));
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_THETA,
+                                             NULL, &gen, &ev));
+      ck_assert_ok (chaplygin_discrete_step_eh_n (&sys, &n1, 1, NULL));
+      ck_assert_msg (lean.E == gen.E && lean.H == gen.H
+                     && lean.dir == gen.dir, "case %zu: E %a/%a H %a/%a", i,
+                     lean.E, gen.E, lean.H, gen.H);
+      ck_assert (same_state (&lean, &n1) && lean.dir == n1.dir);
+      ck_assert (lean.theta == st.theta && lean.tau == st.tau);
+      /* (B.3)/(B.4) in binary128 at the end the peg leaves */
+      const int rev = lean.dir != st.dir, start = st.dir > 0 ? 0 : 1;
+      const int k = rev ? start : 1 - start;
+      const q128 lm = (q128) c[i].L0 + (k ? c[i].Delta : 0.0);
+      const q128 lp = (q128) c[i].L0 + (k ? 0.0 : c[i].Delta);
+      const q128 nm = 1 + lm * lm, np = 1 + lp * lp;
+      const q128 C1 = -(q128) c[i].Delta * c[i].Delta / (2 * nm * nm * np);
+      const q128 E1 = c[i].E + C1 * (q128) c[i].H * c[i].H;
+      ck_assert ((q128) c[i].E / E1 > 2);     /* more than half the energy */
+      ck_assert_rel (lean.E, (double) E1, 11 * DBL_EPSILON);
+    }
+}
+END_TEST
+
 /* Slow starts (issue 16): the first segment from a phase state with
    |V+| = r |l0 Omega+|, r from 1e-3 to 1e-12, and V+ = DBL_MIN, toward l =
    0 (a reversal within a hair of the start) and away from it, against
@@ -1300,6 +1356,7 @@ main (void)
   tcase_add_test (t, eq_B_3);
   tcase_add_test (t, test_eh_update);
   tcase_add_test (t, test_step_eh_n);
+  tcase_add_test (t, test_lean_large_declined);
   suite_add_tcase (s, t);
   t = tcase_create ("eq_B_4");
   tcase_add_test (t, eq_B_4);
