@@ -92,8 +92,11 @@
    correct bits) on tests/test_carlson_arb's five data sets of 66,000
    triples (10^-323 .. 10^308, the library's triples, the edges and
    switches, the stopping rule): R_F max 3.4 ulps, mean 0.45 to 0.65;
-   R_D max 5.4 ulps, mean 0.52 to 0.95 (0.95 on the library's triples,
-   whose R_D lies just below 1, where an ulp is half as large); GSL's
+   R_D max 5.4 ulps, mean 0.52 to 0.95 (0.95 on the library's triples
+   (1, 1 + k'^2 s^2, 1 + s^2), whose R_D lies at or below 1, near 1 for
+   small s, where an ulp is half the relative size it is just above 1;
+   0.63 on the old triples (cos^2, 1 - k^2 sin^2, 1), whose R_D lay at or
+   above 1); GSL's
    max on the sets inside its domain 4.6 (R_F) and 6.2 (R_D) ulps.  On
    4 million closed-form points (R_F(x, y, y), R_D(x, y, y), R_D(y, y, x),
    binary128 references, two seeds) the largest errors found were 4.4 and

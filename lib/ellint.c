@@ -159,8 +159,8 @@ chp_quartic_interval (double sqrt_p, double sqrt_q, double p_minus_q, double y,
 
   /* R_F and R_D of (1, 1 + k'^2 s^2, 1 + s^2) (Method) from one
      duplication loop, each with the same bits whether the other is
-     requested or not; above s = 2^50 (1 + s^2 > 2^100, where R_F's
-     asymptotic form begins; s^3 and 1 + s^2 overflow further up) of the
+     requested or not; above s = 2^50 (1 + s^2 > 2^100, beyond the x = 1
+     entry's fast range; s^3 and 1 + s^2 overflow further up) of the
      triple (cos^2 mu, 1 - k^2 sin^2 mu, 1) itself */
   const double kprime2
       = (sqrt_q / sqrt_p) * (sqrt_q / sqrt_p);      /* k'^2 = q/p */

@@ -246,10 +246,12 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    m = 2^-40 exceeds by far the relative rounding errors of H*H, 1 + l^2
    (with l's own rounding, l_err) and their products (< 8 eps); an
    overflowed 2E (1 + l^2) is larger than any H^2 <= 2^1000, which the
-   comparisons respect.  Returns 0 where the case does not apply (the
-   caller takes the general path, whose validation and classification
-   cover everything excluded here), 1 with E', H' and the reversal flag
-   written. */
+   comparisons respect.  eh_outcome (the classification and H', E' but
+   for the second route) and eh_fast (both routes) below; eh_fast returns
+   0 where the case does not apply (the caller takes the general path,
+   whose validation and classification cover everything excluded here;
+   H' and the reversal flag may have been written), 1 with E', H' and the
+   reversal flag written. */
 #define EH_MARGIN 0x1p-40
 
 /* eh_fast's E' for a collision at end K that takes more than half the
@@ -286,7 +288,8 @@ leaving_end (int dir, int reversal)
 }
 
 /* The (E, H) step where its classification is certain from E and H with
-   the margin EH_MARGIN: *H1, *reversal, and *E1 but for EH_LARGE. */
+   the margin EH_MARGIN: nothing written for EH_DECLINED; *H1 and
+   *reversal for EH_LARGE; *H1, *reversal and *E1 for EH_DONE. */
 static CHP_ALWAYS_INLINE int
 eh_outcome (const chaplygin_discrete *sys, int dir, double E, double H,
             double *E1, double *H1, int *reversal)
@@ -893,7 +896,7 @@ lean_output (const chaplygin_discrete_state *in, int rev, double E1,
 }
 
 /* chaplygin_discrete_step's lean path for a collision that takes more than
-   half the energy (eh_fast: EH_LARGE, reversal REV, H' = H1): E' by
+   half the energy (eh_outcome: EH_LARGE, reversal REV, H' = H1): E' by
    eh_large, or the general path.  Out of line and called last, so that
    the lean path makes no call that needs a frame. */
 static int __attribute__ ((noinline))
@@ -961,7 +964,8 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
 {
   /* E and H only, options that do not integrate (E and H do not depend
      on the method otherwise), the common case: the same validation and
-     eh_fast as step_core, without its frame and without a call (a third
+     eh_fast as step_core, without its frame and, but for eh_large's
+     collisions (step_lean_large, called last), without a call (a third
      of the cost of such a step); anything else goes through step_core */
   if (request == 0 && !ev && sys && in && out && in->V == 0.0
       && (!opt || (opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))

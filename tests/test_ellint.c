@@ -83,20 +83,23 @@ START_TEST (test_large_tan)
   /* Route: additivity across the switch of chp_quartic_interval's two
      forms at tan(mu) = 2^50 ((1, 1 + k'^2 s^2, 1 + s^2) below it,
      (cos^2 mu, 1 - k^2 sin^2 mu, 1) above): Int_0^x2 = Int_0^x1 +
-     Int_x1^x2 with x2 / sqrt(q) = 2^51 (the second form) and x1 / sqrt(q)
-     = 2^49, 2^50 - 2^20 (the first; the short interval's own tan(mu) is
-     small), near the spinning state (q = 1e-40, 1e-30) and with p = h^2
-     (turning points).  Tolerance as test_additivity. */
+     Int_x1^x2 with x2 / sqrt(q) = 2^51 or 2^50 + 2^20 (the second form,
+     the latter just above the switch) and x1 / sqrt(q) = 2^49 or
+     2^50 - 2^20 (the first; the interval [x1, x2] has a tan(mu) of order
+     1, also the first), with q = 1e-40 and 1e-30 (near the spinning
+     state) and p = 1 and 2.25.  Tolerance as test_additivity. */
   const double sqs[] = { 1e-20, 1e-15 };
   const double sps[] = { 1.0, 1.5 };
   const double f1s[] = { 0x1p49, 0x1p50 - 0x1p20 };
+  const double f2s[] = { 0x1p51, 0x1p50 + 0x1p20 };
   for (size_t i = 0; i < NELEM (sqs); i++)
     for (size_t j = 0; j < NELEM (sps); j++)
-      for (size_t m = 0; m < NELEM (f1s); m++)
+      for (size_t m = 0; m < NELEM (f1s) * NELEM (f2s); m++)
         {
           const double sp = sps[j], sq = sqs[i];
           const double pmq = sp * sp - sq * sq;
-          const double x2 = 0x1p51 * sq, x1 = f1s[m] * sq;
+          const double x2 = f2s[m / NELEM (f1s)] * sq;
+          const double x1 = f1s[m % NELEM (f1s)] * sq;
           double F1, T1, F2, T2, F, T;
           ck_assert_ok (chp_quartic_interval (sp, sq, pmq, 0.0, x1, x1, 0,
                                               &F1, &T1));

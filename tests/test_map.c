@@ -919,8 +919,10 @@ END_TEST
    more than half the energy and g at the end the peg leaves lies within
    rounding of the fast classification's margin 2^-40 (1 + l^2): the exact
    E' (eh_large) declines and the general path decides.  The states were
-   found by searching H just below sqrt(2E (1 + l^2)(1 - 2^-40)) (at the
-   start: a reversal; at the far end: a pass).  E, H and dir must be
+   found by searching H just below sqrt(2E (1 + l^2)(1 - 2^-40)) at either
+   end; all three are reversals, g at the start just below the margin (at
+   the far end eh_outcome's own margin excludes the case).  E, H and dir
+   must be
    bit-identical to a request that takes the general path from the start
    and to step_eh_n, and E' within 11 eps of (B.3)/(B.4) in binary128 at
    the end the step leaves (the bound of test_eh_update for such
