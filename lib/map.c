@@ -155,15 +155,17 @@ check_state (const chaplygin_discrete *sys, const chaplygin_discrete_state *s)
 /* check_state's test for the lean (E, H) entry: the system, dir, and the
    fields it only copies (theta, tau, peg); E and H are tested by
    eh_fast's range test and V = 0 by the caller (a state that fails
-   either takes step_core, whose check_state reports it). */
+   either takes step_core, whose check_state reports it).  Conservative,
+   and so one addition a field: the sum of the fields is finite if they
+   all are, unless it overflows, and then the state merely takes step_core
+   (z - z is 0 for a finite z and NaN otherwise). */
 static inline int
 lean_state_ok (const chaplygin_discrete *sys,
                const chaplygin_discrete_state *s)
 {
-  const double z = ((sys->L0 - sys->L0) + (sys->Delta - sys->Delta))
-    + (((s->theta - s->theta) + (s->tau - s->tau))
-       + ((s->peg[0] - s->peg[0]) + (s->peg[1] - s->peg[1])));
-  return z == 0.0 && sys->Delta > 0.0 && (s->dir == 1 || s->dir == -1);
+  const double z = ((sys->L0 + sys->Delta) + (s->theta + s->tau))
+    + (s->peg[0] + s->peg[1]);
+  return z - z == 0.0 && sys->Delta > 0.0 && (s->dir == 1 || s->dir == -1);
 }
 
 /* The ODE route for one step: integrate (3.1) from the post-collision phase
@@ -970,8 +972,9 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
   if (request == 0 && !ev && sys && in && out && in->V == 0.0
       && (!opt || (opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))
       && lean_state_ok (sys, in)
-      && fabs (sys->l_end[0]) <= CHP_L_MAX
-      && fabs (sys->l_end[1]) <= CHP_L_MAX)
+      /* |l| <= CHP_L_MAX at both ends, conservatively (a false no means
+         step_core, which tests each) */
+      && fabs (sys->l_end[0]) + fabs (sys->l_end[1]) <= CHP_L_MAX)
     {
       double E1, H1;
       int rev;

@@ -973,6 +973,35 @@ START_TEST (test_lean_large_declined)
 }
 END_TEST
 
+/* The lean (E, H) path's conservative tests: a state whose copied fields
+   sum beyond DBL_MAX (each finite), and a slot whose ends are each within
+   2^500 but not their sum, take the general path; E, H and dir must be
+   bit for bit those of the lean path (the same state with small fields)
+   and of step_eh_n (which tests each end), and the fields copied. */
+START_TEST (test_lean_conservative)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+  const chaplygin_discrete_state small = { 1, 0.5, 0.25, 0, 0, { 0, 0 }, 0 };
+  const chaplygin_discrete_state huge = { 1, 0.5, 0.25, DBL_MAX, DBL_MAX,
+                                          { DBL_MAX, -DBL_MAX }, 0 };
+  chaplygin_discrete_state a, b;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &small, 0, NULL, &a, NULL));
+  ck_assert_ok (chaplygin_discrete_step (&sys, &huge, 0, NULL, &b, NULL));
+  ck_assert (a.E == b.E && a.H == b.H && a.dir == b.dir);
+  ck_assert (b.theta == DBL_MAX && b.tau == DBL_MAX && b.peg[0] == DBL_MAX
+             && b.peg[1] == -DBL_MAX);
+  /* |l0| = 0.75 2^500, |l1| = 0.5 2^500 */
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0x1.8p499, 0x1.4p500));
+  const double l0 = -0x1.8p499;
+  chaplygin_discrete_state st = { 1, 0.5, 0.5 * hypot (1.0, l0), 0, 0,
+                                  { 0, 0 }, 0 }, n1 = st;
+  ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, NULL, &a, NULL));
+  ck_assert_ok (chaplygin_discrete_step_eh_n (&sys, &n1, 1, NULL));
+  ck_assert (same_state (&a, &n1) && a.dir == n1.dir);
+}
+END_TEST
+
 /* Slow starts (issue 16): the first segment from a phase state with
    |V+| = r |l0 Omega+|, r from 1e-3 to 1e-12, and V+ = DBL_MIN, toward l =
    0 (a reversal within a hair of the start) and away from it, against
@@ -1359,6 +1388,7 @@ main (void)
   tcase_add_test (t, test_eh_update);
   tcase_add_test (t, test_step_eh_n);
   tcase_add_test (t, test_lean_large_declined);
+  tcase_add_test (t, test_lean_conservative);
   suite_add_tcase (s, t);
   t = tcase_create ("eq_B_4");
   tcase_add_test (t, eq_B_4);
