@@ -38,19 +38,6 @@ chp_collision_coefficients (double L0, double Delta, double Dminus,
   *C2 = chp_collision_ratio (L0, Delta, b, bp);
 }
 
-/* The energy just after a collision: V-^2/2 + H+^2/(2 (1 + l+^2)), with
-   V-^2 = 2E g-/(1 + l-^2) (g- = (1 + l-^2) V-^2/(2E) at the end the peg
-   leaves), which equals E + C1 H^2 of (3.7) as a sum of nonnegative terms;
-   never above E (C1 <= 0): where the collision takes less than an ulp the
-   sum may round above E, and E itself is then the nearer value. */
-double
-chp_post_collision_energy (double E, double g_minus, double l_minus,
-                           double H_plus, double l_plus)
-{
-  return chp_min (E * (g_minus / chp_one_plus_sq (l_minus))
-                  + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
-}
-
 /* chp_system_fill: the derived constants of a chaplygin_discrete, indexed
    by the end the peg leaves at the collision: [0] the front (D- = 0), [1]
    the rear (D- = Delta); l_end[1] + l_err[1] = L0 + Delta exactly. */

@@ -6,6 +6,7 @@
 #define CHAPLYGIN_COLLISION_H
 
 #include "chaplygin.h"
+#include "eft.h"
 
 /* [1 + b bp]/[1 + b^2], the collision ratio of (3.6), (3.7): b and bp are
    L0 + D at the two slot ends (b bp = L0 (L0 + Delta)), b the one in the
@@ -18,11 +19,19 @@ double chp_collision_ratio (double L0, double Delta, double b, double bp);
 void chp_collision_coefficients (double L0, double Delta, double Dminus,
                                  double *C1, double *C2);
 
-/* E+ = V-^2/2 + H+^2/(2 (1 + l+^2)), V-^2 = 2E g-/(1 + l-^2): the (3.7)
-   energy after a collision without the cancellation of E + C1 H^2, never
-   above E. */
-double chp_post_collision_energy (double E, double g_minus, double l_minus,
-                                  double H_plus, double l_plus);
+/* The energy just after a collision: V-^2/2 + H+^2/(2 (1 + l+^2)), with
+   V-^2 = 2E g-/(1 + l-^2) (g- = (1 + l-^2) V-^2/(2E) at the end the peg
+   leaves), which equals E + C1 H^2 of (3.7) as a sum of nonnegative terms;
+   never above E (C1 <= 0): where the collision takes less than an ulp the
+   sum may round above E, and E itself is then the nearer value.  Inline:
+   the (E, H) fast path of the map calls it in its loop. */
+static inline double
+chp_post_collision_energy (double E, double g_minus, double l_minus,
+                           double H_plus, double l_plus)
+{
+  return chp_min (E * (g_minus / chp_one_plus_sq (l_minus))
+                  + 0.5 * H_plus * (H_plus / chp_one_plus_sq (l_plus)), E);
+}
 
 /* The constants of the system (L0, Delta), both finite, Delta > 0 (not
    checked): C1, C2 of the collision at either end and l = L0 + D at the

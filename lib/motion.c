@@ -136,25 +136,6 @@ chp_motion_g (const chp_motion *m, double l)
   return fma (l, l, m->one_minus_h2);
 }
 
-/* chp_g_exact: g(l) = [2E (1 + l^2) - H^2]/(2E) for l = l + el (el the
-   rounding error of l, 0 if l is exact), the numerator with error-free
-   products and sums, so that g is within ~2 ulps of its value for the
-   given E, H, l however much 2E (1 + l^2) and H^2 cancel (a turning point
-   near l).  Not finite where an intermediate overflows. */
-double
-chp_g_exact (double E, double H, double l, double el)
-{
-  double twoE = 2.0 * E;
-  double p1, e1, p2, e2, p3, e3, s1, f1, s2, f2;
-  chp_two_prod (l, l, &p1, &e1);
-  chp_two_prod (twoE, p1, &p2, &e2);
-  chp_two_prod (H, H, &p3, &e3);
-  chp_two_sum (twoE, -p3, &s1, &f1);
-  chp_two_sum (s1, p2, &s2, &f2);
-  double N = s2 + (((f1 + f2) + (e2 - e3)) + twoE * (e1 + 2.0 * l * el));
-  return N / twoE;
-}
-
 /* chp_motion_g_exact: chp_g_exact for the motion's E and H; chp_motion_g
    where an intermediate overflows (an overflowed 2E l^2 or H^2 makes the
    numerator infinite or NaN). */

@@ -66,10 +66,26 @@ double chp_motion_g (const chp_motion *m, double l);
    ~2 ulps of g for the given E, H, l (error-free transformations). */
 double chp_motion_g_exact (const chp_motion *m, double l, double el);
 
-/* chp_motion_g_exact's arithmetic from E > 0 and H alone (no chp_motion:
-   the (E, H) fast path of the map), without its fallback: not finite
-   where an intermediate overflows. */
-double chp_g_exact (double E, double H, double l, double el);
+/* chp_g_exact: chp_motion_g_exact's arithmetic from E > 0 and H alone (no
+   chp_motion), without its fallback: g(l) = [2E (1 + l^2) - H^2]/(2E) for
+   l = l + el (el the rounding error of l, 0 if l is exact), the numerator
+   with error-free products and sums, so that g is within ~2 ulps of its
+   value for the given E, H, l however much 2E (1 + l^2) and H^2 cancel (a
+   turning point near l).  Not finite where an intermediate overflows.
+   Inline: the (E, H) fast path of the map calls it in its loop. */
+static inline double
+chp_g_exact (double E, double H, double l, double el)
+{
+  double twoE = 2.0 * E;
+  double p1, e1, p2, e2, p3, e3, s1, f1, s2, f2;
+  chp_two_prod (l, l, &p1, &e1);
+  chp_two_prod (twoE, p1, &p2, &e2);
+  chp_two_prod (H, H, &p3, &e3);
+  chp_two_sum (twoE, -p3, &s1, &f1);
+  chp_two_sum (s1, p2, &s2, &f2);
+  double N = s2 + (((f1 + f2) + (e2 - e3)) + twoE * (e1 + 2.0 * l * el));
+  return N / twoE;
+}
 
 /* (B.1) as printed, no reachability checks: V(D)^2 (may be slightly
    negative near a turning point) and Omega(D). */

@@ -884,6 +884,32 @@ START_TEST (test_step_eh_n)
     }
   ck_assert_int_eq (compared, 400);
   (void) failed_midway;
+  /* orbits whose energy falls through the fast path's floor E >= 2^-900
+     for states with H^2 > E (velocities scaled so that E starts just
+     above it): step_eh_n's call-free loop makes the first steps and hands
+     the rest to the general loop */
+  for (int c = 0; c < 40; c++)
+    {
+      const double L0 = tu_uniform (&rng, -3.0, -0.5);
+      const double Delta = tu_uniform (&rng, 0.1, 3.0);
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+      const double E = 0x1p-900 * tu_uniform (&rng, 1.0, 1.3);
+      const double u = tu_uniform (&rng, 0.75, 0.99) * (c % 2 ? 1 : -1);
+      chaplygin_discrete_state st = { 1, E, u * sqrt (2 * E) * hypot (1.0, L0),
+                                      0.0, 0.0, { 0.0, 0.0 }, 0.0 };
+      chaplygin_discrete_state ref = st, got = st;
+      unsigned long done = 99, k = 0;
+      int rc_ref = 0;
+      for (; k < 6; k++)
+        if ((rc_ref = chaplygin_discrete_step (&sys, &ref, 0, NULL, &ref,
+                                               NULL)))
+          break;
+      ck_assert_int_eq (chaplygin_discrete_step_eh_n (&sys, &got, 6, &done),
+                        rc_ref);
+      ck_assert_uint_eq (done, k);
+      ck_assert (same_state (&got, &ref));
+    }
   /* statuses: nothing done, the state untouched */
   chaplygin_discrete sys;
   ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
