@@ -154,18 +154,22 @@ check_state (const chaplygin_discrete *sys, const chaplygin_discrete_state *s)
 
 /* check_state's test for the lean (E, H) entry: the system, dir, and the
    fields it only copies (theta, tau, peg); E and H are tested by
-   eh_fast's range test and V = 0 by the caller (a state that fails
-   either takes step_core, whose check_state reports it).  Conservative,
-   and so one addition a field: the sum of the fields is finite if they
-   all are, unless it overflows, and then the state merely takes step_core
-   (z - z is 0 for a finite z and NaN otherwise). */
+   eh_outcome's range test and V = 0 by the caller (a state that fails
+   either takes step_core, whose check_state reports it); and the slot cap
+   |l| <= CHP_L_MAX at both ends.  Conservative, and so one addition a
+   field and one comparison for all of them: the sum z of the fields is
+   finite if they all are, unless it overflows (z - z is 0 for a finite z
+   and NaN otherwise), and |l0| + |l1| <= CHP_L_MAX bounds each end; a
+   false no merely takes step_core, which tests each. */
 static inline int
 lean_state_ok (const chaplygin_discrete *sys,
                const chaplygin_discrete_state *s)
 {
   const double z = ((sys->L0 + sys->Delta) + (s->theta + s->tau))
     + (s->peg[0] + s->peg[1]);
-  return z - z == 0.0 && sys->Delta > 0.0 && (s->dir == 1 || s->dir == -1);
+  const double ends = fabs (sys->l_end[0]) + fabs (sys->l_end[1]);
+  return (z - z) + ends <= CHP_L_MAX && sys->Delta > 0.0
+    && (s->dir == 1 || s->dir == -1);
 }
 
 /* The ODE route for one step: integrate (3.1) from the post-collision phase
@@ -972,10 +976,7 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
      of the cost of such a step); anything else goes through step_core */
   if (request == 0 && !ev && sys && in && out && in->V == 0.0
       && (!opt || (opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))
-      && lean_state_ok (sys, in)
-      /* |l| <= CHP_L_MAX at both ends, conservatively (a false no means
-         step_core, which tests each) */
-      && fabs (sys->l_end[0]) + fabs (sys->l_end[1]) <= CHP_L_MAX)
+      && lean_state_ok (sys, in))
     {
       double E1, H1;
       int rev;
@@ -1061,10 +1062,9 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
   if (!sys || !st)
     return CHAPLYGIN_EINVAL;
   unsigned long i = 0;
-  /* as chaplygin_discrete_step's lean path (the slot cap conservatively:
-     a false no means step_eh_n_rest, which tests each end) */
-  if (n > 0 && st->V == 0.0 && lean_state_ok (sys, st)
-      && fabs (sys->l_end[0]) + fabs (sys->l_end[1]) <= CHP_L_MAX)
+  /* as chaplygin_discrete_step's lean path (a false no of lean_state_ok
+     means step_eh_n_rest, which tests each field and end) */
+  if (n > 0 && st->V == 0.0 && lean_state_ok (sys, st))
     {
       int dir = st->dir;
       double E = st->E, H = st->H;
