@@ -975,7 +975,11 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
      collisions (step_lean_large, called last), without a call (a third
      of the cost of such a step); anything else goes through step_core */
   if (request == 0 && !ev && sys && in && out && in->V == 0.0
-      && (!opt || (opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))
+      /* options that do not integrate, the closed form's tested first
+         (the common case: two instructions fewer) */
+      && (!opt || (opt->method == CHAPLYGIN_CLOSED_FORM
+                   ? chp_options_valid (opt)
+                   : opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))
       && lean_state_ok (sys, in))
     {
       double E1, H1;
