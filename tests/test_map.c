@@ -733,6 +733,30 @@ START_TEST (test_step_errors)
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 8, NULL, &o, NULL), CHAPLYGIN_EINVAL);
   chaplygin_options bad = { CHAPLYGIN_QUADRATURE, 0.0, CHAPLYGIN_PREC_DOUBLE };
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, &bad, &o, NULL), CHAPLYGIN_EINVAL);
+  {
+    /* the options on the lean (E, H) path: an ordinary state it steps
+       with valid options; invalid ones are refused there too, and the
+       output is left alone */
+    chaplygin_discrete_state t = { 1, 1.0, 0.5, 0, 0, { 0, 0 }, 0.0 }, u;
+    const chaplygin_options ok[] = {
+      { CHAPLYGIN_CLOSED_FORM, 0.0, CHAPLYGIN_PREC_SINGLE },
+      { CHAPLYGIN_QUADRATURE, 1e-10, CHAPLYGIN_PREC_DOUBLE } };
+    const chaplygin_options no[] = {
+      { CHAPLYGIN_CLOSED_FORM, 1e-13, (chaplygin_precision) 2 },
+      { (chaplygin_method) 3, 1e-13, CHAPLYGIN_PREC_DOUBLE },
+      { CHAPLYGIN_QUADRATURE, 1.0, CHAPLYGIN_PREC_DOUBLE },
+      { CHAPLYGIN_QUADRATURE, 1e-10, (chaplygin_precision) -1 },
+      { CHAPLYGIN_ODE, 1e-16, CHAPLYGIN_PREC_DOUBLE } };
+    for (size_t k = 0; k < sizeof ok / sizeof ok[0]; k++)
+      ck_assert_ok (chaplygin_discrete_step (&sys, &t, 0, &ok[k], &u, NULL));
+    for (size_t k = 0; k < sizeof no / sizeof no[0]; k++)
+      {
+        u.E = 9;
+        ck_assert_status (chaplygin_discrete_step (&sys, &t, 0, &no[k], &u,
+                                                   NULL), CHAPLYGIN_EINVAL);
+        ck_assert (u.E == 9);
+      }
+  }
   /* V+ = 0: E = H^2/(2 (1 + L0^2)) */
   s.E = 1.25 * 1.25 / (2 * 1.25), s.H = 1.25;
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESTATE);
