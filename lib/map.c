@@ -993,6 +993,26 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
   return step_general (sys, in, request, opt, out, ev);
 }
 
+/* eh_fast's steps I .. N - 1 of (dir, E, H), in place, while it takes
+   them (its outputs are finite: the state stays valid for it): the index
+   of the first step it declines, N if none. */
+static CHP_ALWAYS_INLINE unsigned long
+eh_run (const chaplygin_discrete *sys, int *dir, double *E, double *H,
+        unsigned long i, unsigned long n)
+{
+  for (; i < n; i++)
+    {
+      double E1, H1;
+      int rev;
+      if (!eh_fast (sys, *dir, *E, *H, &E1, &H1, &rev))
+        break;
+      *dir = rev ? -*dir : *dir;
+      *E = E1;
+      *H = H1;
+    }
+  return i;
+}
+
 /* chaplygin_discrete_step_eh_n's steps I .. N - 1 from *st, the first I
    made (by eh_fast): eh_fast where it applies, step_core where not. */
 static int __attribute__ ((noinline))
@@ -1011,19 +1031,8 @@ step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
   double E = st->E, H = st->H, V = st->V;
   while (status == CHAPLYGIN_SUCCESS && i < n)
     {
-      /* eh_fast's own loop while it takes every step (its outputs are
-         finite: the state stays valid for it) */
       if (in_cap && V == 0.0)
-        for (; i < n; i++)
-          {
-            double E1, H1;
-            int rev;
-            if (!eh_fast (sys, dir, E, H, &E1, &H1, &rev))
-              break;
-            dir = rev ? -dir : dir;
-            E = E1;
-            H = H1;
-          }
+        i = eh_run (sys, &dir, &E, &H, i, n);
       if (i == n)
         break;
       /* a step eh_fast declines */
@@ -1072,16 +1081,7 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
     {
       int dir = st->dir;
       double E = st->E, H = st->H;
-      for (; i < n; i++)
-        {
-          double E1, H1;
-          int rev;
-          if (!eh_fast (sys, dir, E, H, &E1, &H1, &rev))
-            break;
-          dir = rev ? -dir : dir;
-          E = E1;
-          H = H1;
-        }
+      i = eh_run (sys, &dir, &E, &H, 0, n);
       st->dir = dir;
       st->E = E;
       st->H = H;
