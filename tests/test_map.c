@@ -908,6 +908,37 @@ START_TEST (test_step_eh_n)
     }
   ck_assert_int_eq (compared, 400);
   (void) failed_midway;
+  /* slots with one end within the cap 2^500 and the other beyond it: the
+     general loop's test of each end (eh_fast at such a slot's far end
+     would not be the step's: ERANGE where it went on, or other bits) */
+  const double half[][2] = { { 0x1p500, 0x1p500 }, { -0x1p501, 0x1p500 },
+                             { -3.0, 0x1p530 } };
+  const double us[] = { 0.5, -0.3, 0.9 };
+  for (int c = 0; c < 3; c++)
+    for (int dir = -1; dir <= 1; dir += 2)
+      for (int j = 0; j < 3; j++)
+        {
+          chaplygin_discrete sys;
+          ck_assert_ok (chaplygin_discrete_init (&sys, half[c][0],
+                                                 half[c][1]));
+          ck_assert ((fabs (sys.l_end[0]) <= 0x1p500)
+                     != (fabs (sys.l_end[1]) <= 0x1p500));
+          const double ls = sys.l_end[dir > 0 ? 0 : 1];
+          chaplygin_discrete_state st = { dir, 1.0, us[j] * sqrt (2.0)
+                                          * hypot (1.0, ls), 0.0, 0.0,
+                                          { 0.0, 0.0 }, 0.0 };
+          chaplygin_discrete_state ref = st, got = st;
+          unsigned long done = 99, k = 0;
+          int rc_ref = 0;
+          for (; k < 3; k++)
+            if ((rc_ref = chaplygin_discrete_step (&sys, &ref, 0, NULL, &ref,
+                                                   NULL)))
+              break;
+          ck_assert_int_eq (chaplygin_discrete_step_eh_n (&sys, &got, 3,
+                                                          &done), rc_ref);
+          ck_assert_uint_eq (done, k);
+          ck_assert (same_state (&got, &ref));
+        }
   /* orbits whose energy falls through the fast path's floor E >= 2^-900
      for states with H^2 > E (velocities scaled so that E starts just
      above it): step_eh_n's call-free loop makes the first steps and hands
