@@ -1019,8 +1019,9 @@ static int __attribute__ ((noinline))
 step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
                 unsigned long n, unsigned long i, unsigned long *done)
 {
-  /* with n > 0, what lean_state_ok does not test is tested by the first
-     step (eh_fast, or step_core's check_state) */
+  /* after I > 0 steps the state is one that eh_fast made; else, with
+     n > 0, what lean_state_ok does not test is tested by the first step
+     (eh_fast, or step_core's check_state) */
   int status = i > 0 || (n > 0 && lean_state_ok (sys, st))
     ? CHAPLYGIN_SUCCESS : check_state (sys, st);
   const int in_cap = fabs (sys->l_end[0]) <= CHP_L_MAX
@@ -1061,10 +1062,9 @@ step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
    collisions.  *done (may be NULL) receives the number of steps made; on
    a failure *st is the state after the last successful step and the
    status is that step's.  n = 0 validates and returns.
-   Method: eh_fast's steps in a loop that makes no call (and so needs no
-   stack frame: a third of the cost of a short orbit) while it takes
-   every step, as for the scenes' orbits; step_eh_n_rest from the first
-   step it declines.
+   Method: eh_fast's steps in a loop that makes no call, and so needs no
+   stack frame, while it takes every step (as along the scenes' orbits);
+   step_eh_n_rest from the first step it declines.
    Errors: CHAPLYGIN_EINVAL (NULL sys or st), and those of
    chaplygin_discrete_step. */
 int
