@@ -96,7 +96,11 @@ chp_far_open (double L0, double Delta, chp_far *f)
 int
 chp_far_open_sys (const chaplygin_discrete *sys, chp_far *f)
 {
-  return chp_far_open (sys->L0, sys->Delta, f);
+  CHP_TRY (chp_far_open (sys->L0, sys->Delta, f));
+  if (f->k == 0 && !(fabs (sys->l_end[0]) <= CHP_L_MAX
+                     && fabs (sys->l_end[1]) <= CHP_L_MAX))
+    return CHAPLYGIN_EDOM;
+  return CHAPLYGIN_SUCCESS;
 }
 
 int

@@ -39,7 +39,10 @@ typedef enum
 int chp_far_open (double L0, double Delta, chp_far *f);
 
 /* The same for a system made by chaplygin_discrete_init (or any with its
-   L0 and Delta: validated). */
+   L0 and Delta: validated), and CHAPLYGIN_EDOM where its ends l_end lie
+   beyond the cap although L0 and Delta do not (a struct not made by
+   chaplygin_discrete_init: callers that go by l_end would use f->sys,
+   which is then not set). */
 int chp_far_open_sys (const chaplygin_discrete *sys, chp_far *f);
 
 /* The scaling of a path from la to lb (a leg of (B.1), (B.2)): k only,

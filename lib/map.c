@@ -158,9 +158,10 @@ check_state (const chaplygin_discrete *sys, const chaplygin_discrete_state *s)
    either takes step_core, whose check_state reports it); and the slot cap
    |l| <= CHP_L_MAX at both ends.  Conservative, and so one addition a
    field and one comparison for all of them: the sum z of the fields is
-   finite if they all are, unless it overflows (z - z is 0 for a finite z
-   and NaN otherwise), and |l0| + |l1| <= CHP_L_MAX bounds each end; a
-   false no merely takes step_core, which tests each. */
+   finite only if every field is (and finite fields whose sum overflows
+   get a false no; z - z is 0 for a finite z and NaN otherwise), and
+   |l0| + |l1| <= CHP_L_MAX bounds each end; a false no takes the general
+   route (step_core, or step_eh_n_rest), which tests each. */
 static inline int
 lean_state_ok (const chaplygin_discrete *sys,
                const chaplygin_discrete_state *s)
@@ -264,8 +265,9 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    energy: step_by_integrals' sum of nonnegative terms, with g at that end
    from E and H as there (the same bits), where it needs no raising
    (valid_energy: g > 2^-40 (1 + l^2)); 0 (the general path) otherwise.
-   It makes no call (chp_g_exact and chp_post_collision_energy are
-   inline), so that chaplygin_discrete_step_eh_n's loop makes none. */
+   It makes no call where fma is an instruction (configure's -mfma;
+   chp_g_exact and chp_post_collision_energy are inline), so that
+   chaplygin_discrete_step_eh_n's loop makes none. */
 static CHP_ALWAYS_INLINE int
 eh_large (const chaplygin_discrete *sys, int k, double E, double H,
           double H1, double *E1)
@@ -1019,27 +1021,34 @@ static int __attribute__ ((noinline))
 step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
                 unsigned long n, unsigned long i, unsigned long *done)
 {
-  /* after I > 0 steps the state is one that eh_fast made; else, with
-     n > 0, what lean_state_ok does not test is tested by the first step
-     (eh_fast, or step_core's check_state) */
+  /* after I > 0 steps the caller's lean_state_ok passed and eh_fast made
+     E and H; else, with n > 0, what lean_state_ok does not test is tested
+     by the first step (eh_fast, or step_core's check_state) */
   int status = i > 0 || (n > 0 && lean_state_ok (sys, st))
     ? CHAPLYGIN_SUCCESS : check_state (sys, st);
   const int in_cap = fabs (sys->l_end[0]) <= CHP_L_MAX
     && fabs (sys->l_end[1]) <= CHP_L_MAX;
-  /* the state in registers: dir, E, H (V = 0 on the fast path); *st
-     itself (written only by a successful step_core) when it leaves it */
+  /* the state in registers: dir, E, H, V (V = 0 on the fast path),
+     written back to *st for step_core (which updates *st only when it
+     succeeds) and at the end */
   int dir = st->dir;
   double E = st->E, H = st->H, V = st->V;
   while (status == CHAPLYGIN_SUCCESS && i < n)
     {
       if (in_cap && V == 0.0)
-        i = eh_run (sys, &dir, &E, &H, i, n);
+        {
+          const unsigned long i0 = i;
+          i = eh_run (sys, &dir, &E, &H, i, n);
+          if (i > i0)
+            V = 0.0;            /* as the lean step writes it: +0 */
+        }
       if (i == n)
         break;
       /* a step eh_fast declines */
       st->dir = dir;
       st->E = E;
       st->H = H;
+      st->V = V;
       status = step_core (sys, st, 0, NULL, st, NULL);
       dir = st->dir;
       E = st->E;
@@ -1050,6 +1059,7 @@ step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
   st->dir = dir;
   st->E = E;
   st->H = H;
+  st->V = V;
   if (done)
     *done = i;
   return status;
@@ -1062,9 +1072,10 @@ step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
    collisions.  *done (may be NULL) receives the number of steps made; on
    a failure *st is the state after the last successful step and the
    status is that step's.  n = 0 validates and returns.
-   Method: eh_fast's steps in a loop that makes no call, and so needs no
-   stack frame, while it takes every step (as along the scenes' orbits);
-   step_eh_n_rest from the first step it declines.
+   Method: eh_fast's steps in a loop that makes no call where fma is an
+   instruction (and so sets up no frame), while it takes every step (as
+   along the scenes' orbits); step_eh_n_rest from the first step it
+   declines.
    Errors: CHAPLYGIN_EINVAL (NULL sys or st), and those of
    chaplygin_discrete_step. */
 int
@@ -1085,6 +1096,8 @@ chaplygin_discrete_step_eh_n (const chaplygin_discrete *sys,
       st->dir = dir;
       st->E = E;
       st->H = H;
+      if (i > 0)
+        st->V = 0.0;            /* as the lean step writes it: +0 */
       if (i == n)
         {
           if (done)

@@ -735,8 +735,8 @@ START_TEST (test_step_errors)
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, &bad, &o, NULL), CHAPLYGIN_EINVAL);
   {
     /* the options on the lean (E, H) path: an ordinary state it steps
-       with valid options; invalid ones are refused there too, and the
-       output is left alone */
+       with valid options; invalid ones it declines, and the general path
+       refuses them, the output left alone */
     chaplygin_discrete_state t = { 1, 1.0, 0.5, 0, 0, { 0, 0 }, 0.0 }, u;
     const chaplygin_options ok[] = {
       { CHAPLYGIN_CLOSED_FORM, 0.0, CHAPLYGIN_PREC_SINGLE },
@@ -756,6 +756,28 @@ START_TEST (test_step_errors)
                                                    NULL), CHAPLYGIN_EINVAL);
         ck_assert (u.E == 9);
       }
+  }
+  {
+    /* a struct not made by chaplygin_discrete_init, whose ends say far
+       while its L0 and Delta do not: refused, not stepped as an unset
+       scaled system (valgrind saw uninitialised reads there) */
+    chaplygin_discrete odd;
+    ck_assert_ok (chaplygin_discrete_init (&odd, -0.5, 1.0));
+    odd.l_end[1] = 0x1p600;
+    chaplygin_discrete_state t = { 1, 1.0, 0.5, 0, 0, { 0, 0 }, 0.0 }, u;
+    u.E = 9;
+    ck_assert_status (chaplygin_discrete_step (&odd, &t, 0, NULL, &u, NULL),
+                      CHAPLYGIN_EDOM);
+    ck_assert_status (chaplygin_discrete_step (&odd, &t, CHAPLYGIN_WANT_ALL,
+                                               NULL, &u, NULL),
+                      CHAPLYGIN_EDOM);
+    ck_assert (u.E == 9);
+    double q[4];
+    ck_assert_status (chaplygin_discrete_state_to_phase (&odd, &t, q),
+                      CHAPLYGIN_EDOM);
+    const double qp[4] = { 0.0, 0.5, 0.0, 0.3 };
+    ck_assert_status (chaplygin_discrete_poincare (&odd, qp, NULL, q, NULL),
+                      CHAPLYGIN_EDOM);
   }
   /* V+ = 0: E = H^2/(2 (1 + L0^2)) */
   s.E = 1.25 * 1.25 / (2 * 1.25), s.H = 1.25;
@@ -939,10 +961,24 @@ START_TEST (test_step_eh_n)
           ck_assert_uint_eq (done, k);
           ck_assert (same_state (&got, &ref));
         }
+  /* V = -0: a state of E and H alone, whose steps write V = +0 */
+  for (unsigned long m = 1; m <= 3; m++)
+    {
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+      chaplygin_discrete_state st = { 1, 1.0, 0.5, 0.0, 0.0, { 0.0, 0.0 },
+                                      -0.0 }, ref = st, got = st;
+      for (unsigned long k = 0; k < m; k++)
+        ck_assert_ok (chaplygin_discrete_step (&sys, &ref, 0, NULL, &ref,
+                                               NULL));
+      ck_assert_ok (chaplygin_discrete_step_eh_n (&sys, &got, m, NULL));
+      ck_assert (same_state (&got, &ref) && !signbit (got.V));
+    }
   /* orbits whose energy falls through the fast path's floor E >= 2^-900
      for states with H^2 > E (velocities scaled so that E starts just
-     above it): step_eh_n's call-free loop makes the first steps and hands
-     the rest to the general loop */
+     above it): on some of them (18 of the 40 with this seed) step_eh_n's
+     call-free loop makes the first step and hands the rest to
+     step_eh_n_rest */
   for (int c = 0; c < 40; c++)
     {
       const double L0 = tu_uniform (&rng, -3.0, -0.5);
