@@ -97,8 +97,7 @@ int
 chp_far_open_sys (const chaplygin_discrete *sys, chp_far *f)
 {
   CHP_TRY (chp_far_open (sys->L0, sys->Delta, f));
-  if (f->k == 0 && !(fabs (sys->l_end[0]) <= CHP_L_MAX
-                     && fabs (sys->l_end[1]) <= CHP_L_MAX))
+  if (f->k == 0 && chp_system_far (sys))
     return CHAPLYGIN_EDOM;
   return CHAPLYGIN_SUCCESS;
 }

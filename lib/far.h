@@ -1,10 +1,21 @@
 /* far.h -- kernel: the exact power-of-two scaling of the far regime,
    |l| > CHP_L_MAX (far.c; its file comment states the physics and the
-   domain).  Uses eft.h and collision.h. */
+   domain).  Uses eft.h, collision.h and motion.h. */
 #ifndef CHAPLYGIN_FAR_H
 #define CHAPLYGIN_FAR_H
 
+#include <math.h>
+
 #include "chaplygin.h"
+#include "motion.h"
+
+/* Whether the slot of SYS reaches the far regime: |l| > CHP_L_MAX at
+   either end (the test every caller that goes by l_end makes). */
+static inline int
+chp_system_far (const chaplygin_discrete *sys)
+{
+  return fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX;
+}
 
 /* The scaling of one problem: lengths times 2^-k, energies times 4^m,
    quantities linear in H (where the motion is) by a further 2^j; k = 0

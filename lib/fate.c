@@ -96,7 +96,7 @@ fate_coef_init (const chaplygin_discrete *sys, fate_coef *c)
       || !chp_finite4 (sys->C2[0], sys->C2[1], sys->l_end[0], sys->l_end[1])
       || !chp_finite2 (sys->l_err[0], sys->l_err[1]))
     return CHAPLYGIN_EDOM;
-  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
+  if (chp_system_far (sys))
     return CHAPLYGIN_ERANGE;
   const double s = 2.0 * L0 + Delta;    /* l0 + l1 */
   for (int i = 0; i < 2; i++)

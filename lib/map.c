@@ -858,7 +858,7 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   step_work w;
   CHP_TRY (step_begin (&w, sys, in, request, opt, out));
   w.want_event = ev != NULL;
-  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
+  if (chp_system_far (sys))
     return step_far (sys, in, w.request, opt, out, ev);
   int fast_reversal = 0;
   w.fast = w.o.method != CHAPLYGIN_ODE
@@ -1026,6 +1026,8 @@ step_eh_n_rest (const chaplygin_discrete *sys, chaplygin_discrete_state *st,
      by the first step (eh_fast, or step_core's check_state) */
   int status = i > 0 || (n > 0 && lean_state_ok (sys, st))
     ? CHAPLYGIN_SUCCESS : check_state (sys, st);
+  /* not !chp_system_far: NaN ends are not within the cap here (as for
+     lean_state_ok), so that eh_fast never steps them */
   const int in_cap = fabs (sys->l_end[0]) <= CHP_L_MAX
     && fabs (sys->l_end[1]) <= CHP_L_MAX;
   /* the state in registers: dir, E, H, V (V = 0 on the fast path),
@@ -1159,7 +1161,7 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
     return CHAPLYGIN_EINVAL;
   CHP_TRY (check_state (sys, st));
   double D = st->dir > 0 ? 0.0 : sys->Delta, l = sys->L0 + D;
-  if (fabs (sys->l_end[0]) > CHP_L_MAX || fabs (sys->l_end[1]) > CHP_L_MAX)
+  if (chp_system_far (sys))
     {
       /* far (lib/far.c): the scaled state; V times 2^-m, Omega times
          2^-(k+m+j) */
@@ -1250,8 +1252,7 @@ chaplygin_discrete_poincare (const chaplygin_discrete *sys,
     return CHAPLYGIN_EINVAL;
   if (!chp_finite4 (qplus[0], qplus[1], qplus[2], qplus[3]))
     return CHAPLYGIN_EDOM;
-  const int far = fabs (sys->l_end[0]) > CHP_L_MAX
-    || fabs (sys->l_end[1]) > CHP_L_MAX;
+  const int far = chp_system_far (sys);
   if (far || chp_far_speed_needed (sys->L0 + qplus[CHAPLYGIN_D],
                                    qplus[CHAPLYGIN_V],
                                    qplus[CHAPLYGIN_OMEGA]))
