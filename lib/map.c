@@ -269,14 +269,14 @@ step_ode (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
    chp_g_exact and chp_post_collision_energy are inline), so that
    chaplygin_discrete_step_eh_n's loop makes none. */
 static CHP_ALWAYS_INLINE int
-eh_large (const chaplygin_discrete *sys, int k, double E, double H,
+eh_large (const chaplygin_discrete *sys, size_t k, double E, double H,
           double H1, double *E1)
 {
   const double lm = sys->l_end[k];
   const double gm = chp_g_exact (E, H, lm, sys->l_err[k]);
   if (!(gm > 0x1p-40 * chp_one_plus_sq (lm)) || !isfinite (gm))
     return 0;
-  *E1 = chp_post_collision_energy (E, gm, lm, H1, sys->l_end[1 - k]);
+  *E1 = chp_post_collision_energy (E, gm, lm, H1, sys->l_end[k ^ 1]);
   return 1;
 }
 
@@ -287,56 +287,82 @@ eh_large (const chaplygin_discrete *sys, int k, double E, double H,
 enum
 { EH_DECLINED = 0, EH_DONE = 1, EH_LARGE = 2 };
 
-/* The slot end the peg leaves: the start (dir > 0: 0) on a reversal, the
-   far end otherwise. */
-static inline int
-leaving_end (int dir, int reversal)
+/* The index of the slot end the peg starts from: 0 (the front) for
+   dir > 0, 1 for dir < 0. */
+static inline size_t
+start_end (int dir)
 {
-  const int start = dir > 0 ? 0 : 1;
-  return reversal ? start : 1 - start;
+  return dir > 0 ? 0 : 1;
 }
 
-/* The (E, H) step where its classification is certain from E and H with
-   the margin EH_MARGIN: nothing written for EH_DECLINED; *H1 and
-   *reversal for EH_LARGE; *H1, *reversal and *E1 for EH_DONE. */
+/* The slot end the peg leaves: the start on a reversal, the far end
+   otherwise. */
+static inline size_t
+leaving_end (size_t start, int reversal)
+{
+  return reversal ? start : start ^ 1;
+}
+
+/* The bound on E that eh_outcome requires and the caller tests (once for
+   a run of steps: E' <= E for each step made, C1 <= 0). */
+static inline int
+eh_energy_ok (double E)
+{
+  return E <= 0.25 * DBL_MAX;
+}
+
+/* The (E, H) step from the end START (start_end) where its classification
+   is certain from E and H with the margin EH_MARGIN, for E with
+   eh_energy_ok: nothing written for EH_DECLINED; *H1 and *reversal for
+   EH_LARGE; *H1, *reversal and *E1 for EH_DONE. */
 static CHP_ALWAYS_INLINE int
-eh_outcome (const chaplygin_discrete *sys, int dir, double E, double H,
+eh_outcome (const chaplygin_discrete *sys, size_t start, double E, double H,
             double *E1, double *H1, int *reversal)
 {
-  if (!(E > 0.0 && E <= 0.25 * DBL_MAX && fabs (H) <= 0x1p500))
-    return EH_DECLINED;
-  const int start = dir > 0 ? 0 : 1;
+  /* |H| <= 2^500 iff H*H rounded is at most 2^1000 (rounding is monotonic
+     and 2^1000 exact) */
   const double H2 = H * H;
+  if (!(H2 <= 0x1p1000))
+    return EH_DECLINED;
+  /* H^2 <= E and E > 0 in one comparison (E >= the least subnormal iff
+     E > 0); E = 0 and E < 0 fail the test E >= 2^-900 below */
+  const double H2_or_tiny = H2 > 0x1p-1074 ? H2 : 0x1p-1074;
   /* the sign of the least V^2 on the segment, where it is certain: the
-     input of the segment rule (motion.h) */
+     input of the segment rule (motion.h); negative only moving towards
+     l = 0 */
   double least = 1.0;
-  int crosses = 0;
-  if (!(H2 <= E))
+  if (!(H2_or_tiny <= E))
     {
-      const double l0 = sys->l_end[start], l1 = sys->l_end[1 - start];
+      const double l0 = sys->l_end[start], l1 = sys->l_end[start ^ 1];
       const double twoE = 2.0 * E;
       if (!(E >= 0x1p-900
             && H2 < twoE * fma (l0, l0, 1.0) * (1.0 - EH_MARGIN)))
         return EH_DECLINED;
-      crosses = chp_crosses (l0, l1);
-      if (dir * l0 < 0.0)
+      /* dir l0 and dir l1 (exact): towards l = 0 iff dir l0 < 0, and
+         then the path reaches l = 0 iff dir l1 >= 0 */
+      const double d0 = start ? -l0 : l0, d1 = start ? -l1 : l1;
+      if (d0 < 0.0)
         {
-          /* towards l = 0: V^2 least at l = 0 (2E - H^2) or at l1 */
-          const double b = crosses ? twoE : twoE * fma (l1, l1, 1.0);
+          /* V^2 least at l = 0 (2E - H^2) or at l1 */
+          const double b = d1 >= 0.0 ? twoE : twoE * fma (l1, l1, 1.0);
           if (H2 > b * (1.0 + EH_MARGIN))
             least = -1.0;
           else if (!(H2 < b * (1.0 - EH_MARGIN)))
             return EH_DECLINED;
         }
-      else if (!(dir * l0 > 0.0))
+      else if (!(d0 > 0.0))
         return EH_DECLINED;     /* from l = 0 exactly: the spinning test */
     }
-  const int rev = chp_segment_rule (crosses, least) == CHP_SEGMENT_REVERSE;
-  const int k = leaving_end (dir, rev);
+  /* the rule's "crosses" decides only a least V^2 of 0, which the margin
+     excludes */
+  const int rev = chp_segment_rule (0, least) == CHP_SEGMENT_REVERSE;
+  const size_t k = leaving_end (start, rev);
   const double c1h = sys->C1[k] * H;
   *H1 = sys->C2[k] * H;
   *reversal = rev;
-  if (!(fabs (c1h * H) <= 0.5 * E))
+  /* C1 <= 0 (-t^2/2 in chp_collision_coefficients), so C1 H^2 <= 0, and
+     the collision takes at most half the energy iff C1 H^2 >= -E/2 */
+  if (!(c1h * H >= -0.5 * E))
     return EH_LARGE;
   *E1 = fma (c1h, H, E);
   return EH_DONE;
@@ -345,13 +371,13 @@ eh_outcome (const chaplygin_discrete *sys, int dir, double E, double H,
 /* eh_outcome with eh_large's E': 1 if the step is made, 0 if the general
    path must make it. */
 static CHP_ALWAYS_INLINE int
-eh_fast (const chaplygin_discrete *sys, int dir, double E, double H,
+eh_fast (const chaplygin_discrete *sys, size_t start, double E, double H,
          double *E1, double *H1, int *reversal)
 {
-  const int r = eh_outcome (sys, dir, E, H, E1, H1, reversal);
+  const int r = eh_outcome (sys, start, E, H, E1, H1, reversal);
   return r == EH_DONE
     || (r == EH_LARGE
-        && eh_large (sys, leaving_end (dir, *reversal), E, H, *H1, E1));
+        && eh_large (sys, leaving_end (start, *reversal), E, H, *H1, E1));
 }
 
 /* E1, raised by at most 8 ulps until the state (E1, H1) with the peg at
@@ -861,8 +887,9 @@ step_core (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
   if (chp_system_far (sys))
     return step_far (sys, in, w.request, opt, out, ev);
   int fast_reversal = 0;
-  w.fast = w.o.method != CHAPLYGIN_ODE
-    && eh_fast (sys, in->dir, in->E, in->H, &w.E1, &w.H1, &fast_reversal);
+  w.fast = w.o.method != CHAPLYGIN_ODE && eh_energy_ok (in->E)
+    && eh_fast (sys, start_end (in->dir), in->E, in->H, &w.E1, &w.H1,
+                &fast_reversal);
   chp_segment_init (sys, in->dir, &w.seg);
   CHP_TRY (step_classify (&w));
   /* a known V+ may decide otherwise than E and H within 2^-20 of their
@@ -914,7 +941,8 @@ step_lean_large (const chaplygin_discrete *sys,
                  const chaplygin_options *opt, chaplygin_discrete_state *out)
 {
   double E1;
-  if (!eh_large (sys, leaving_end (in->dir, rev), in->E, in->H, H1, &E1))
+  if (!eh_large (sys, leaving_end (start_end (in->dir), rev), in->E, in->H,
+                 H1, &E1))
     return step_general (sys, in, 0, opt, out, NULL);
   return lean_output (in, rev, E1, H1, out);
 }
@@ -982,11 +1010,12 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
       && (!opt || (opt->method == CHAPLYGIN_CLOSED_FORM
                    ? chp_options_valid (opt)
                    : opt->method != CHAPLYGIN_ODE && chp_options_valid (opt)))
-      && lean_state_ok (sys, in))
+      && lean_state_ok (sys, in) && eh_energy_ok (in->E))
     {
       double E1, H1;
       int rev;
-      const int r = eh_outcome (sys, in->dir, in->E, in->H, &E1, &H1, &rev);
+      const int r = eh_outcome (sys, start_end (in->dir), in->E, in->H,
+                               &E1, &H1, &rev);
       if (r == EH_DONE)
         return lean_output (in, rev, E1, H1, out);
       if (r == EH_LARGE)
@@ -1002,16 +1031,20 @@ static CHP_ALWAYS_INLINE unsigned long
 eh_run (const chaplygin_discrete *sys, int *dir, double *E, double *H,
         unsigned long i, unsigned long n)
 {
+  if (!eh_energy_ok (*E))
+    return i;
+  size_t start = start_end (*dir);
   for (; i < n; i++)
     {
       double E1, H1;
       int rev;
-      if (!eh_fast (sys, *dir, *E, *H, &E1, &H1, &rev))
+      if (!eh_fast (sys, start, *E, *H, &E1, &H1, &rev))
         break;
-      *dir = rev ? -*dir : *dir;
+      start ^= (size_t) rev;
       *E = E1;
       *H = H1;
     }
+  *dir = start ? -1 : 1;
   return i;
 }
 

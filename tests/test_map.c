@@ -163,7 +163,11 @@ END_TEST
    weighing C1's error at most once), and within 11 eps where it takes more
    (a sum of nonnegative terms, bound below), H' = C2 H within 3.5 eps; and
    E, H, dir bit-identical whether or not anything
-   else (heading, time, peg, the event) is requested, by either method. */
+   else (heading, time, peg, the event) is requested, by either method.
+   Each state is stepped twice: as made from the phase state (V+ known:
+   the general path) and as (E, H) alone (V = 0: the lean entry of
+   chaplygin_discrete_step and chaplygin_discrete_step_eh_n, which
+   classify from E and H with a margin). */
 START_TEST (test_eh_update)
 {
   /* The (E, H) update against (B.3)/(B.4) in binary128, with the exact
@@ -202,6 +206,16 @@ START_TEST (test_eh_update)
                      "request 0 vs all: E %a/%a H %a/%a", a.E, b.E, a.H, b.H);
       ck_assert_ok (chaplygin_discrete_step (&sys, &st, 0, &QUAD, &b, &ev));
       ck_assert (a.E == b.E && a.H == b.H && a.dir == b.dir);
+      /* (E, H) alone: the lean entry, and step_eh_n's loop (the same
+         bits) */
+      chaplygin_discrete_state st0 = st, c, d;
+      st0.V = 0.0;
+      if (chaplygin_discrete_step (&sys, &st0, 0, NULL, &c, NULL)
+          == CHAPLYGIN_ESPIN)
+        continue;
+      d = st0;
+      ck_assert_ok (chaplygin_discrete_step_eh_n (&sys, &d, 1, NULL));
+      ck_assert (d.E == c.E && d.H == c.H && d.dir == c.dir);
       /* the exact classification, binary128 */
       q128 lf = (q128) L0 + (dir > 0 ? Delta : 0.0);
       q128 ls = (q128) L0 + (dir > 0 ? 0.0 : Delta);
@@ -214,12 +228,14 @@ START_TEST (test_eh_update)
         continue;               /* within rounding of the boundary */
       int rev = toward && H2 > bound;
       ck_assert_int_eq (a.dir, rev ? -dir : dir);
+      ck_assert_int_eq (c.dir, rev ? -dir : dir);
       /* (B.3) or (B.4): the coefficients of the end the peg leaves */
       q128 nm = rev ? ns : nf, np = rev ? nf : ns;
       q128 C1 = -(q128) Delta * Delta / (2 * nm * nm * np);
       q128 C2 = (1 + (q128) L0 * ((q128) L0 + Delta)) / nm;
       q128 dE = C1 * H2;
       ck_assert_rel (a.H, (double) (C2 * H), 3.5 * DBL_EPSILON);
+      ck_assert_rel (c.H, (double) (C2 * H), 3.5 * DBL_EPSILON);
       if (!(-dE <= (q128) st.E / 2))
         {
           /* more than half the energy: E' = E g-/n- + H'^2/(2 n+) (g- at
@@ -231,11 +247,13 @@ START_TEST (test_eh_update)
           if ((q128) st.E + dE > (q128) st.E * 1e-12Q)
             {
               ck_assert_rel (a.E, (double) (st.E + dE), 11 * DBL_EPSILON);
+              ck_assert_rel (c.E, (double) (st.E + dE), 11 * DBL_EPSILON);
               n_large++;
             }
           continue;
         }
       ck_assert_rel (a.E, (double) (st.E + dE), 4 * DBL_EPSILON);
+      ck_assert_rel (c.E, (double) (st.E + dE), 4 * DBL_EPSILON);
       n_checked++;
       n_small_h += st.H * st.H <= st.E;
       n_rev += rev;
@@ -784,6 +802,23 @@ START_TEST (test_step_errors)
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESTATE);
   s.E = 0.0;
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_ESTATE);
+  /* E = 0 (either sign) with H^2 <= E (H = 0, or H^2 underflowing to 0):
+     refused by the lean entry's own test as by the general path */
+  {
+    const double Es[2] = { 0.0, -0.0 }, Hs[3] = { 0.0, -0.0, 1e-200 };
+    for (int e = 0; e < 2; e++)
+      for (int h = 0; h < 3; h++)
+        {
+          chaplygin_discrete_state z = s;
+          z.E = Es[e], z.H = Hs[h];
+          ck_assert_status (chaplygin_discrete_step (&sys, &z, 0, NULL, &o, NULL),
+                            CHAPLYGIN_ESTATE);
+          unsigned long done = 9;
+          ck_assert_status (chaplygin_discrete_step_eh_n (&sys, &z, 3, &done),
+                            CHAPLYGIN_ESTATE);
+          ck_assert (done == 0 && z.E == Es[e] && z.H == Hs[h]);
+        }
+  }
   s.E = NAN;
   ck_assert_status (chaplygin_discrete_step (&sys, &s, 0, NULL, &o, NULL), CHAPLYGIN_EDOM);
   s.E = 1.0, s.peg[1] = INFINITY;
