@@ -378,8 +378,9 @@ typedef struct
 {
   double L0;      /* mass centre ahead of the slot front, units of rho */
   double Delta;   /* slot length, units of rho */
-  /* Derived by chaplygin_discrete_init; indexed by the slot end the peg
-     leaves at the collision: [0] D- = 0 (front), [1] D- = Delta (rear). */
+  /* Derived by chaplygin_discrete_init (read them; the functions rely on
+     them as it sets them); indexed by the slot end the peg leaves at the
+     collision: [0] D- = 0 (front), [1] D- = Delta (rear). */
   double C1[2];   /* energy coefficient, (B.3)/(B.4) */
   double C2[2];   /* momentum coefficient, (B.3)/(B.4) */
   double l_end[2];  /* L0 + D at the ends: L0, L0 + Delta (rounded) */

@@ -154,8 +154,9 @@ check_state (const chaplygin_discrete *sys, const chaplygin_discrete_state *s)
 
 /* check_state's test for the lean (E, H) entry: the system, dir, and the
    fields it only copies (theta, tau, peg); E and H are tested by
-   eh_outcome's range test and V = 0 by the caller (a state that fails
-   either takes step_core, whose check_state reports it); and the slot cap
+   eh_energy_ok and eh_outcome's range tests and V = 0 by the caller (a
+   state that fails any takes step_core, whose check_state reports it);
+   and the slot cap
    |l| <= CHP_L_MAX at both ends.  Conservative, and so one addition a
    field and one comparison for all of them: the sum z of the fields is
    finite only if every field is (and finite fields whose sum overflows
@@ -304,7 +305,8 @@ leaving_end (size_t start, int reversal)
 }
 
 /* The bound on E that eh_outcome requires and the caller tests (once for
-   a run of steps: E' <= E for each step made, C1 <= 0). */
+   a run of steps: each step made has E' <= E, since C1 <= 0 as
+   chaplygin_discrete_init makes it and eh_large's E' is at most E). */
 static inline int
 eh_energy_ok (double E)
 {
@@ -320,7 +322,8 @@ eh_outcome (const chaplygin_discrete *sys, size_t start, double E, double H,
             double *E1, double *H1, int *reversal)
 {
   /* |H| <= 2^500 iff H*H rounded is at most 2^1000 (rounding is monotonic
-     and 2^1000 exact) */
+     and 2^1000 exact; the next double above 2^500 squares to
+     2^1000 (1 + 2^-51) at least) */
   const double H2 = H * H;
   if (!(H2 <= 0x1p1000))
     return EH_DECLINED;
@@ -361,7 +364,8 @@ eh_outcome (const chaplygin_discrete *sys, size_t start, double E, double H,
   *H1 = sys->C2[k] * H;
   *reversal = rev;
   /* C1 <= 0 (-t^2/2 in chp_collision_coefficients), so C1 H^2 <= 0, and
-     the collision takes at most half the energy iff C1 H^2 >= -E/2 */
+     the collision takes at most half the energy iff C1 H^2 >= -E/2
+     (-0.5 E is -(0.5 E) in the default rounding mode) */
   if (!(c1h * H >= -0.5 * E))
     return EH_LARGE;
   *E1 = fma (c1h, H, E);
@@ -1025,8 +1029,9 @@ chaplygin_discrete_step (const chaplygin_discrete *sys,
 }
 
 /* eh_fast's steps I .. N - 1 of (dir, E, H), in place, while it takes
-   them (its outputs are finite: the state stays valid for it): the index
-   of the first step it declines, N if none. */
+   them (for a system from chaplygin_discrete_init its outputs are
+   finite and E' <= E: the state stays valid for it): the index of the
+   first step it declines, N if none. */
 static CHP_ALWAYS_INLINE unsigned long
 eh_run (const chaplygin_discrete *sys, int *dir, double *E, double *H,
         unsigned long i, unsigned long n)
