@@ -479,6 +479,17 @@ int chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
                                        const chaplygin_discrete_state *st,
                                        double q[4]);
 
+/* The start of a run from the post-collision phase state q, in the units
+   of its velocity scaling (chaplygin_velocity_scaling at l0 = L0 + D+):
+   *m, qs (may be NULL: q with V+, Omega+ times 2^m) and *st (from qs, with
+   tau times 2^m), checked to convert back; m = 0 and st the unscaled state
+   wherever E and H are in range. */
+int chaplygin_discrete_scaled_state (const chaplygin_discrete *sys,
+                                     const double q[4], double tau,
+                                     const double peg[2],
+                                     chaplygin_discrete_state *st, int *m,
+                                     double qs[4]);
+
 /* (B.1) and (B.2) along the segment that starts at the post-collision
    state st (the discrete analogue of chaplygin_massless_flow): V, Omega and
    the heading and time increments from the start at slot position D of
@@ -687,6 +698,12 @@ int chaplygin_massless_state_from_phase (double L0, const double q[4],
 int chaplygin_massless_state_to_phase (double L0,
                                        const chaplygin_discrete_state *st,
                                        double q[4]);
+
+/* chaplygin_discrete_scaled_state for the massless skate. */
+int chaplygin_massless_scaled_state (double L0, const double q[4],
+                                     double tau, const double peg[2],
+                                     chaplygin_discrete_state *st, int *m,
+                                     double qs[4]);
 
 /* (B.16) the momentum coefficient of H' = C2 H for a post-collision state
    with peg at Dplus (0 or 1):

@@ -51,3 +51,35 @@ lib_libchaplygin_la_LDFLAGS = -version-info 1:0:0 -export-symbols-regex '^chaply
 include_HEADERS = lib/chaplygin.h
 pkgconfig_DATA = chaplygin.pc
 
+
+## The scene engine (lib/scene/): scenes read, checked and run, the
+## paper's equations by label, the numbers a user writes.  A second
+## installed library, a client of libchaplygin's public interface only,
+## so that the numerical library keeps GSL as its one dependency (the
+## engine needs libinih, GMP and MPFR, and OpenMP for sweeps).  The tests
+## link the convenience library (internal helpers); the installed one
+## exports the engine's public names.
+noinst_LTLIBRARIES += lib/libchaplygin-scene-core.la
+lib_libchaplygin_scene_core_la_SOURCES = \
+	lib/scene/chaplygin-scene.h \
+	lib/scene/engine.h \
+	lib/scene/run.h \
+	lib/scene/report.c \
+	lib/scene/number.c \
+	lib/scene/scene.c \
+	lib/scene/run.c \
+	lib/scene/grid.c
+lib_libchaplygin_scene_core_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
+lib_libchaplygin_scene_core_la_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) \
+	$(OPENMP_CFLAGS)
+lib_libchaplygin_scene_core_la_LIBADD = $(INIH_LIBS) $(MPFR_LIBS) \
+	$(CODE_COVERAGE_LIBS)
+
+lib_LTLIBRARIES += lib/libchaplygin-scene.la
+lib_libchaplygin_scene_la_SOURCES =
+lib_libchaplygin_scene_la_LIBADD = lib/libchaplygin-scene-core.la \
+	lib/libchaplygin.la $(INIH_LIBS) $(MPFR_LIBS) $(CODE_COVERAGE_LIBS)
+lib_libchaplygin_scene_la_LDFLAGS = -version-info 0:0:0 $(OPENMP_CFLAGS) \
+	-export-symbols-regex '^chaplygin_(scene|number|cell|row|text|eq)_'
+include_HEADERS += lib/scene/chaplygin-scene.h
+pkgconfig_DATA += chaplygin-scene.pc

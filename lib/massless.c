@@ -860,3 +860,38 @@ chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
     *dtau = dt;
   return CHAPLYGIN_SUCCESS;
 }
+
+/* chaplygin_massless_scaled_state: chaplygin_discrete_scaled_state for the
+   massless skate (l0 = L0 + D+ in its units; the state by
+   chaplygin_massless_state_from_phase, checked by
+   chaplygin_massless_state_to_phase).
+   Errors: as chaplygin_discrete_scaled_state. */
+int
+chaplygin_massless_scaled_state (double L0, const double q[4], double tau,
+                                 const double peg[2],
+                                 chaplygin_discrete_state *st, int *m,
+                                 double qs[4])
+{
+  double s[4], back[4], taus;
+  int mm, exact;
+  chaplygin_discrete_state out;
+  if (!q || !st || !m)
+    return CHAPLYGIN_EINVAL;
+  s[CHAPLYGIN_D] = q[CHAPLYGIN_D];
+  s[CHAPLYGIN_THETA] = q[CHAPLYGIN_THETA];
+  CHP_TRY (chaplygin_velocity_scaling (L0 + q[CHAPLYGIN_D], q[CHAPLYGIN_V],
+                                       q[CHAPLYGIN_OMEGA], &mm,
+                                       &s[CHAPLYGIN_V], &s[CHAPLYGIN_OMEGA]));
+  taus = tau;
+  if (mm != 0 && tau != 0.0)
+    CHP_TRY (chaplygin_velocity_scale (mm, CHAPLYGIN_SCALE_TIME, tau, &taus,
+                                       &exact));
+  CHP_TRY (chaplygin_massless_state_from_phase (L0, s, taus, peg, &out));
+  CHP_TRY (chaplygin_massless_state_to_phase (L0, &out, back));
+  *st = out;
+  *m = mm;
+  if (qs)
+    for (int i = 0; i < 4; i++)
+      qs[i] = s[i];
+  return CHAPLYGIN_SUCCESS;
+}

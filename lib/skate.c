@@ -342,3 +342,49 @@ chaplygin_discrete_segment_flow (const chaplygin_discrete *sys,
   CHP_TRY (segment_locate (sys, st, &sp));
   return segment_sample (sys, st, &sp, D, leg, &o, V, Omega, dtheta, dtau);
 }
+
+/* chaplygin_discrete_scaled_state: the start of a run from the
+   post-collision phase state q = {D+, V+, theta+, Omega+}, in the units
+   of its velocity scaling: *m of chaplygin_velocity_scaling at
+   l0 = L0 + D+, qs (may be NULL) = q with V+, Omega+ times 2^m exactly,
+   *st = chaplygin_discrete_state_from_phase (qs, tau 2^m, peg), checked to
+   convert back (chaplygin_discrete_state_to_phase), so that the map runs
+   on it.  m = 0 wherever E and H are in range: st is then the unscaled
+   state, bit for bit.  Results in the physical units: a speed, energy or
+   time of the run times 2^(-d m) (chaplygin_velocity_scale with -m).
+   The one sequence (scale, convert, check) of every caller that starts a
+   run from a phase state: the scene engine's runs, basins and sweeps.
+   Errors: CHAPLYGIN_EINVAL (NULL), those of the three functions
+   (CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE, CHAPLYGIN_ERANGE: a start the
+   doubles cannot hold even scaled). */
+int
+chaplygin_discrete_scaled_state (const chaplygin_discrete *sys,
+                                 const double q[4], double tau,
+                                 const double peg[2],
+                                 chaplygin_discrete_state *st, int *m,
+                                 double qs[4])
+{
+  double s[4], back[4], taus;
+  int mm, exact;
+  chaplygin_discrete_state out;
+  if (!sys || !q || !st || !m)
+    return CHAPLYGIN_EINVAL;
+  s[CHAPLYGIN_D] = q[CHAPLYGIN_D];
+  s[CHAPLYGIN_THETA] = q[CHAPLYGIN_THETA];
+  CHP_TRY (chaplygin_velocity_scaling (sys->L0 + q[CHAPLYGIN_D],
+                                       q[CHAPLYGIN_V], q[CHAPLYGIN_OMEGA],
+                                       &mm, &s[CHAPLYGIN_V],
+                                       &s[CHAPLYGIN_OMEGA]));
+  taus = tau;
+  if (mm != 0 && tau != 0.0)
+    CHP_TRY (chaplygin_velocity_scale (mm, CHAPLYGIN_SCALE_TIME, tau, &taus,
+                                       &exact));
+  CHP_TRY (chaplygin_discrete_state_from_phase (sys, s, taus, peg, &out));
+  CHP_TRY (chaplygin_discrete_state_to_phase (sys, &out, back));
+  *st = out;
+  *m = mm;
+  if (qs)
+    for (int i = 0; i < 4; i++)
+      qs[i] = s[i];
+  return CHAPLYGIN_SUCCESS;
+}

@@ -3,10 +3,11 @@
 
 Run by the build (python/local.mk), never by hand:
 
-    gen.py HEADER EXTRA_HEADER OUTDIR PYOUT
+    gen.py HEADER EXTRA_HEADERS OUTDIR PYOUT
 
-reads the public header HEADER (lib/chaplygin.h) and the header of the
-binding's own C functions EXTRA_HEADER (python/src/chp_python.h), and writes
+reads the public header HEADER (lib/chaplygin.h) and the comma-separated
+EXTRA_HEADERS (the scene engine's lib/scene/chaplygin-scene.h and the header
+of the binding's own C functions python/src/chp_python.h), and writes
 
   OUTDIR/vec.h, OUTDIR/vec.c
       one C loop per function of HEADER that returns int,
@@ -685,8 +686,11 @@ def main(argv):
     version = argv[5] if len(argv) > 5 else 'unknown'
     with open(header) as fh:
         htext = fh.read()
-    with open(extra) as fh:
-        etext = fh.read()
+    etext = ''
+    for path in extra.split(','):       # the binding's other headers
+        with open(path) as fh:
+            etext += fh.read() + '\n'
+
     funcs, structs, enums, options_default = parse(htext)
     loops = [f for f in funcs if looped(f)]
 
@@ -713,8 +717,8 @@ def main(argv):
     ffi.cdef(cdef_text(etext))
     ffi.cdef('\n'.join(c_proto(f) for f in loops))
     ffi.set_source('chaplygin._chaplygin_cffi',
-                   '#include "chaplygin.h"\n#include "chp_python.h"\n'
-                   '#include "vec.h"\n')
+                   '#include "chaplygin.h"\n#include "chaplygin-scene.h"\n'
+                   '#include "chp_python.h"\n#include "vec.h"\n')
     tmp = os.path.join(outdir, 'module.c.tmp')
     ffi.emit_c_code(tmp)        # (cffi says "generating ...")
     os.replace(tmp, os.path.join(outdir, 'module.c'))

@@ -26,7 +26,7 @@ PY_GENERATED = python/gen/module.c python/gen/vec.c python/gen/vec.h \
 EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \
 	$(PY_TESTS) \
 	python/tests/run-pytest.in python/tests/cvalues.c \
-	python/src/chp_python.h python/src/errstream.h python/src/orbit.c \
+	python/src/chp_python.h python/src/orbit.c \
 	python/src/scene_api.c python/bench/bench.py python/bench/cbench.c \
 	python/examples/fig2a.py python/examples/fig3.py
 
@@ -40,37 +40,33 @@ nodist_chaplygin_pyexec_PYTHON = python/chaplygin/_generated.py
 chaplygin_pyexec_LTLIBRARIES = python/chaplygin/_chaplygin_cffi.la
 nodist_python_chaplygin__chaplygin_cffi_la_SOURCES = python/gen/module.c
 python_chaplygin__chaplygin_cffi_la_CPPFLAGS = $(AM_CPPFLAGS) \
-	-I$(srcdir)/python/src -Ipython/gen $(PYTHON_CPPFLAGS)
+	-I$(srcdir)/python/src -I$(srcdir)/lib/scene -Ipython/gen \
+	$(PYTHON_CPPFLAGS)
 python_chaplygin__chaplygin_cffi_la_CFLAGS = $(CODE_COVERAGE_CFLAGS)
 python_chaplygin__chaplygin_cffi_la_LDFLAGS = -module -avoid-version \
 	-shared -export-symbols-regex '^PyInit__chaplygin_cffi$$' \
 	$(OPENMP_CFLAGS)
 python_chaplygin__chaplygin_cffi_la_LIBADD = python/libchp-py.la \
-	lib/libchaplygin.la $(INIH_LIBS) $(MPFR_LIBS) $(GSL_LIBS) \
+	lib/libchaplygin-scene.la lib/libchaplygin.la $(GSL_LIBS) \
 	$(CODE_COVERAGE_LIBS) -lm
 
-# Our C: the generated loops, the orbits, and `chaplygin run' from
-# tools/ (the program's own files, their messages redirected by
-# errstream.h into a stream of scene_api.c).
+# Our C: the generated loops, the orbits, and the columns of a scene run
+# by the scene engine (lib/scene/, through its public header).
 noinst_LTLIBRARIES += python/libchp-py.la
-python_libchp_py_la_SOURCES = python/src/chp_python.h \
-	python/src/errstream.h python/src/orbit.c python/src/scene_api.c \
-	tools/scene.c tools/scene.h tools/run.c tools/run.h tools/sweep.c \
-	tools/sweep.h tools/progress.c tools/progress.h tools/number.c \
-	tools/number.h tools/bounds.c tools/bounds.h tools/provenance.c \
-	tools/provenance.h tools/scaled.c tools/scaled.h
+python_libchp_py_la_SOURCES = python/src/chp_python.h python/src/orbit.c \
+	python/src/scene_api.c
 nodist_python_libchp_py_la_SOURCES = python/gen/vec.c python/gen/vec.h
 python_libchp_py_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/python/src \
-	-I$(srcdir)/tools -Ipython/gen \
-	-include $(srcdir)/python/src/errstream.h
-python_libchp_py_la_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS) $(INIH_CFLAGS) \
-	$(OPENMP_CFLAGS)
+	-I$(srcdir)/lib/scene -Ipython/gen
+python_libchp_py_la_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 
 python/gen.stamp: $(srcdir)/lib/chaplygin.h $(srcdir)/python/gen.py \
-		$(srcdir)/python/src/chp_python.h
+		$(srcdir)/python/src/chp_python.h \
+		$(srcdir)/lib/scene/chaplygin-scene.h
 	$(AM_V_GEN)$(MKDIR_P) python/gen python/chaplygin \
 	  && $(PYTHON) $(srcdir)/python/gen.py $(srcdir)/lib/chaplygin.h \
-	    $(srcdir)/python/src/chp_python.h python/gen \
+	    $(srcdir)/lib/scene/chaplygin-scene.h,$(srcdir)/python/src/chp_python.h \
+	    python/gen \
 	    python/chaplygin/_generated.py $(PACKAGE_VERSION) >/dev/null \
 	  && touch $@
 $(PY_GENERATED): python/gen.stamp

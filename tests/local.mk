@@ -33,6 +33,23 @@ UNIT_CHECKS = \
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh
 
+# The scene engine (lib/scene/): its reader and numbers against its
+# internal structure, its public interface from outside.
+SCENE_TEST_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
+SCENE_TEST_LDADD = lib/libchaplygin-scene-core.la $(TEST_LDADD) \
+	$(INIH_LIBS) $(MPFR_LIBS) $(OPENMP_CFLAGS)
+SCENE_CHECKS = tests/test_scene tests/test_number
+check_PROGRAMS += $(SCENE_CHECKS)
+TESTS += $(SCENE_CHECKS)
+tests_test_scene_SOURCES = tests/test_scene.c
+tests_test_scene_CPPFLAGS = $(SCENE_TEST_CPPFLAGS)
+tests_test_scene_CFLAGS = $(TEST_CFLAGS)
+tests_test_scene_LDADD = $(SCENE_TEST_LDADD)
+tests_test_number_SOURCES = tests/test_number.c
+tests_test_number_CPPFLAGS = $(SCENE_TEST_CPPFLAGS)
+tests_test_number_CFLAGS = $(TEST_CFLAGS)
+tests_test_number_LDADD = $(SCENE_TEST_LDADD)
+
 # thread safety: several OpenMP threads against a serial run
 tests_test_threads_SOURCES = tests/test_threads.c
 tests_test_threads_CFLAGS = $(TEST_CFLAGS) $(OPENMP_CFLAGS)

@@ -16,7 +16,9 @@
  *
  * The options are parsed by hand (no getopt state): an option is given as
  * "--name value" or "--name=value"; the value may begin with '-' (so
- * "--V -1" works); "--" ends the options; the last occurrence wins.
+ * "--V -1" works); "--" ends the options.  Scenes are read, checked and
+ * run by the scene engine (chaplygin-scene.h); this file parses the
+ * command line and writes what the engine delivers (csv.c).
  */
 #include <config.h>
 
@@ -28,13 +30,12 @@
 #include <string.h>
 
 #include "chaplygin.h"
+#include "chaplygin-scene.h"
 #include "cli.h"
+#include "csv.h"
 #include "eq.h"
-#include "number.h"
 #include "output.h"
 #include "plot.h"
-#include "run.h"
-#include "scene.h"
 #include "sweep.h"
 
 enum exit_code
@@ -168,87 +169,34 @@ static const char usage_text[] =
   "\n"
   "A scene with a [sweep] section prints the sweep's CSV (see sweep --help).\n"
   "\n"
-  "Options of skate (NUMBER, N: as 'man chaplygin' says under NUMBERS):\n"
-  "  --L0 NUMBER        mass centre ahead of the slot front       [1]\n"
-  "  --Delta NUMBER     slot length, > 0                          [1/3]\n"
-  "  --V NUMBER         initial velocity along the slot, != 0     [1]\n"
-  "                     (V > 0: peg at D = 0; V < 0: peg at D = Delta)\n"
-  "  --Omega NUMBER     initial angular rate                      [0.5]\n"
-  "  --theta NUMBER     initial heading (radians)                 [0]\n"
-  "  --collisions N     number of collisions, integer 0..1e9        [20]\n"
-  "  --method M         heading and time between collisions by\n"
-  "                     closed-form (elliptic integrals), quadrature\n"
-  "                     (adaptive Gauss-Kronrod) or ode (RK8(9) on (3.1))\n"
-  "                                                            [closed-form]\n"
-  "  --tol NUMBER       relative tolerance of quadrature and ode,\n"
-  "                     1e-15 <= tol < 1 (unused by closed-form)  [1e-12]\n"
-  "  --every K, --stop-H NUMBER, --stop-tau NUMBER, --stop-fate (no value),\n"
-  "  --max-rows N       as [run] every, stop_H, stop_tau, stop_fate = yes,\n"
-  "                     max_rows of a scene\n"
-  "  -o FILE, --no-provenance, --print-scene   as for run\n"
-  "  -h, --help         print this text and exit\n"
-  "The defaults are the set-up of the paper's Figure 6.  The initial peg is\n"
-  "at the origin of the plane and the initial time is 0.  A value may be\n"
-  "given as \"--name value\" or \"--name=value\".  The output of skate is that\n"
-  "of run per collision with outputs = E,H,theta,tau,peg:\n"
-  "  n,D,reversal,E,H,theta,tau,peg_x,peg_y\n"
+  "Options of skate: --KEY VALUE (or --KEY=VALUE) for any key of a scene's\n"
+  "[parameters], [initial] and [run] (a '-' in KEY reads as '_', and a\n"
+  "unique beginning of KEY will do: --stop-H, --tol), over the set-up of\n"
+  "the paper's Figure 6 (below); a yes/no key alone means yes\n"
+  "(--stop-fate); -o FILE, --no-provenance, --print-scene as for run;\n"
+  "-h, --help.  The initial peg is at the origin of the plane and the\n"
+  "initial time is 0.  The output of skate is that of run:\n"
+  "  n,D,reversal,E,H,theta,tau,peg_x,peg_y  (with the default outputs)\n"
+  "Defaults of skate:\n"
+  "@SKATE_DEFAULTS@"
   "\n"
   "Exit status: 0 success; 1 the library failed during the run (e.g. the\n"
   "motion ends in the spinning equilibrium; the rows before stay written),\n"
   "or writing failed; 2 a usage error or an invalid scene (the message names\n"
   "the file, the line, the [section] and key).\n";
 
-/* The settings of "skate".  The *_arg strings are the text given on the
-   command line, for messages (NULL: the default). */
-typedef struct
-{
-  double L0, Delta, V, Omega, theta, tol, stop_H, stop_tau;
-  long collisions, every, max_rows;
-  chaplygin_method method;
-  int stop_fate, no_provenance, print_scene;
-  const char *Delta_arg;
-  const char *output;           /* NULL: standard output */
-} skate_args;
-
-/* What an option takes. */
-typedef enum
-{
-  OPT_L0,
-  OPT_DELTA,
-  OPT_V,
-  OPT_OMEGA,
-  OPT_THETA,
-  OPT_COLLISIONS,
-  OPT_METHOD,
-  OPT_TOL,
-  OPT_EVERY,
-  OPT_STOP_H,
-  OPT_STOP_TAU,
-  OPT_MAX_ROWS,
-  OPT_OUTPUT
-} skate_option;
-
-typedef struct
-{
-  const char *name;       /* without the leading "--" */
-  skate_option id;
-} option_entry;
-
-static const option_entry skate_options[] = {
-  { "L0", OPT_L0 },
-  { "Delta", OPT_DELTA },
-  { "V", OPT_V },
-  { "Omega", OPT_OMEGA },
-  { "theta", OPT_THETA },
-  { "collisions", OPT_COLLISIONS },
-  { "method", OPT_METHOD },
-  { "tol", OPT_TOL },
-  { "every", OPT_EVERY },
-  { "stop-H", OPT_STOP_H },
-  { "stop-tau", OPT_STOP_TAU },
-  { "max-rows", OPT_MAX_ROWS },
-  { "output", OPT_OUTPUT }
+/* The set-up of the paper's Figure 6: the scene of "skate" where its
+   options do not say otherwise. */
+static const char *const skate_defaults[][3] = {
+  { "scene", "model", "discrete" },
+  { "parameters", "L0", "1" },
+  { "parameters", "Delta", "1/3" },
+  { "initial", "V", "1" },
+  { "initial", "Omega", "0.5" },
+  { "run", "collisions", "20" },
+  { "run", "outputs", "E,H,theta,tau,peg" }
 };
+#define N_SKATE_DEFAULTS (sizeof skate_defaults / sizeof skate_defaults[0])
 
 static void
 usage_hint (void)
@@ -256,133 +204,98 @@ usage_hint (void)
   fputs ("Try 'chaplygin --help' for more information.\n", stderr);
 }
 
+/* The usage text, with the defaults of skate from skate_defaults. */
 static int
 print_help (void)
 {
-  fputs (usage_text, stdout);
+  const char *mark = strstr (usage_text, "@SKATE_DEFAULTS@");
+  fwrite (usage_text, 1, (size_t) (mark - usage_text), stdout);
+  for (size_t i = 1; i < N_SKATE_DEFAULTS; i++)
+    printf ("  [%s] %s = %s\n", skate_defaults[i][0], skate_defaults[i][1],
+            skate_defaults[i][2]);
+  fputs (mark + strlen ("@SKATE_DEFAULTS@"), stdout);
   return cli_finish_stdout ();
 }
 
+/* The scene key that the option name NAME (LEN bytes, '-' read as '_')
+   names: an exact name of [parameters], [initial] or [run], else the one
+   such key NAME begins; -1 if none, -2 if several. */
 static int
-parse_method (const char *text, chaplygin_method *out)
+skate_key (const char *name, size_t len)
 {
-  if (strcmp (text, "closed-form") == 0)
-    *out = CHAPLYGIN_CLOSED_FORM;
-  else if (strcmp (text, "quadrature") == 0)
-    *out = CHAPLYGIN_QUADRATURE;
-  else if (strcmp (text, "ode") == 0)
-    *out = CHAPLYGIN_ODE;
-  else
-    return -1;
-  return 0;
+  int found = -1, n = 0;
+  for (size_t k = 0; k < chaplygin_scene_key_count (); k++)
+    {
+      const char *key = chaplygin_scene_key_name (k);
+      const char *sec = chaplygin_scene_key_section (k);
+      if (strcmp (sec, "parameters") != 0 && strcmp (sec, "initial") != 0
+          && strcmp (sec, "run") != 0)
+        continue;
+      size_t i = 0;
+      while (i < len && key[i] && (key[i] == name[i]
+                                   || (key[i] == '_' && name[i] == '-')))
+        i++;
+      if (i < len)
+        continue;
+      if (!key[len])
+        return (int) k;                 /* exact */
+      found = (int) k;
+      n++;
+    }
+  return n == 1 ? found : n > 1 ? -2 : -1;
 }
 
-/* Store VALUE, the value of option ID (named NAME on the command line), in
-   ARGS.  Returns EXIT_OK or EXIT_USAGE (after a message). */
-static int
-set_option (skate_args *args, skate_option id, const char *name,
-            const char *value)
+/* The settings of "skate": the scene as triples, and the program's own. */
+#define SKATE_MAX_KEYS 64
+typedef struct
 {
-  double x = 0.0;
+  const char *section[SKATE_MAX_KEYS], *key[SKATE_MAX_KEYS];
+  const char *value[SKATE_MAX_KEYS];
+  size_t n;
+  const char *output;           /* NULL: standard output */
+  int no_provenance, print_scene;
+} skate_args;
 
-  switch (id)
+/* The option ARG (its value, if it takes one, from ARGV[*I]) into ARGS.
+   Returns -1 to go on, or an exit status after a message. */
+static int
+skate_option (const char *arg, int argc, char **argv, int *i,
+              skate_args *args)
+{
+  const char *name = arg + 2, *eq = strchr (name, '=');
+  size_t len = eq ? (size_t) (eq - name) : strlen (name);
+  char shown[128];
+  int k = skate_key (name, len);
+  if (k < 0)
     {
-    case OPT_COLLISIONS:
-    case OPT_EVERY:
-      {
-        const long lo = id == OPT_EVERY ? 1 : 0;
-        long *n = id == OPT_EVERY ? &args->every : &args->collisions;
-        if (number_integer (value, lo, SCENE_COLLISIONS_MAX, n) != 0)
-          {
-            fprintf (stderr, "chaplygin: --%s '%s': not an integer in "
-                     "%ld..%ld\n", name, value, lo, SCENE_COLLISIONS_MAX);
-            return EXIT_USAGE;
-          }
-        return EXIT_OK;
-      }
-    case OPT_MAX_ROWS:
-      return cli_max_rows (value, &args->max_rows);
-    case OPT_OUTPUT:
-      args->output = value;
-      return EXIT_OK;
-    case OPT_METHOD:
-      if (parse_method (value, &args->method) != 0)
-        {
-          fprintf (stderr, "chaplygin: --%s '%s': unknown method (expected "
-                   "closed-form, quadrature or ode)\n", name, value);
-          return EXIT_USAGE;
-        }
-      return EXIT_OK;
-    case OPT_L0:
-    case OPT_DELTA:
-    case OPT_V:
-    case OPT_OMEGA:
-    case OPT_THETA:
-    case OPT_TOL:
-    case OPT_STOP_H:
-    case OPT_STOP_TAU:
-      break;
-    }
-
-  int r = number_real (value, &x);
-  if (r != NUMBER_OK)
-    {
-      fprintf (stderr, "chaplygin: --%s '%s' %s\n", name, value,
-               number_problem (r));
+      fprintf (stderr, "chaplygin: skate: %s option '--%s'\n",
+               k == -2 ? "ambiguous" : "unknown",
+               chaplygin_text_shown (shown, sizeof shown, name, 60));
+      usage_hint ();
       return EXIT_USAGE;
     }
-
-  switch (id)
+  const char *words = chaplygin_scene_key_words ((size_t) k);
+  const char *value = eq ? eq + 1 : NULL;
+  if (!value && words && strcmp (words, "no, yes") == 0)
+    value = "yes";              /* --stop-fate */
+  else if (!value && *i < argc)
+    value = argv[(*i)++];
+  else if (!value)
     {
-    case OPT_L0:
-      args->L0 = x;
-      break;
-    case OPT_DELTA:
-      args->Delta = x;
-      args->Delta_arg = value;
-      break;
-    case OPT_V:
-      if (x == 0.0)
-        {
-          fprintf (stderr, "chaplygin: --%s '%s': V must be nonzero (the "
-                   "initial state is just after a collision)\n", name, value);
-          return EXIT_USAGE;
-        }
-      args->V = x;
-      break;
-    case OPT_OMEGA:
-      args->Omega = x;
-      break;
-    case OPT_THETA:
-      args->theta = x;
-      break;
-    case OPT_TOL:
-      if (!(x >= 1e-15 && x < 1.0))
-        {
-          fprintf (stderr, "chaplygin: --%s '%s': tolerance must satisfy "
-                   "1e-15 <= tol < 1\n", name, value);
-          return EXIT_USAGE;
-        }
-      args->tol = x;
-      break;
-    case OPT_STOP_H:
-    case OPT_STOP_TAU:
-      if (!(x > 0))
-        {
-          fprintf (stderr, "chaplygin: --%s '%s': must be > 0\n", name,
-                   value);
-          return EXIT_USAGE;
-        }
-      *(id == OPT_STOP_H ? &args->stop_H : &args->stop_tau) = x;
-      break;
-    case OPT_COLLISIONS:
-    case OPT_METHOD:
-    case OPT_EVERY:
-    case OPT_MAX_ROWS:
-    case OPT_OUTPUT:
-      break;
+      fprintf (stderr, "chaplygin: skate: option '--%s' requires a value\n",
+               chaplygin_scene_key_name ((size_t) k));
+      usage_hint ();
+      return EXIT_USAGE;
     }
-  return EXIT_OK;
+  if (args->n == SKATE_MAX_KEYS)
+    {
+      fputs ("chaplygin: skate: too many options\n", stderr);
+      return EXIT_USAGE;
+    }
+  args->section[args->n] = chaplygin_scene_key_section ((size_t) k);
+  args->key[args->n] = chaplygin_scene_key_name ((size_t) k);
+  args->value[args->n++] = value;
+  return -1;
 }
 
 /* Parse the arguments of "skate" (ARGV[0] is the first one after the
@@ -391,202 +304,118 @@ set_option (skate_args *args, skate_option id, const char *name,
 static int
 parse_skate (int argc, char **argv, skate_args *args)
 {
-  int i = 0;
-
+  int i = 0, m, rc;
+  const char *value;
   while (i < argc)
     {
-      const char *arg = argv[i];
-      i++;
-
-      if (strcmp (arg, "--") == 0)
-        {
-          if (i < argc)
-            {
-              fprintf (stderr, "chaplygin: skate: unexpected argument '%s'\n",
-                       argv[i]);
-              usage_hint ();
-              return EXIT_USAGE;
-            }
-          break;
-        }
+      const char *arg = argv[i++];
+      if (strcmp (arg, "--") == 0 && i == argc)
+        break;
       if (strcmp (arg, "--help") == 0 || strcmp (arg, "-h") == 0)
         return print_help ();
-      if (strcmp (arg, "--stop-fate") == 0)
-        {
-          args->stop_fate = 1;
-          continue;
-        }
       if (strcmp (arg, "--no-provenance") == 0)
+        args->no_provenance = 1;
+      else if (strcmp (arg, "--print-scene") == 0)
+        args->print_scene = 1;
+      else if ((m = cli_option ("skate", "--output", "-o", argc, argv, &i,
+                                &value)) != 0)
         {
-          args->no_provenance = 1;
-          continue;
+          if (m < 0)
+            return EXIT_USAGE;
+          args->output = value;
         }
-      if (strcmp (arg, "--print-scene") == 0)
+      else if (strncmp (arg, "--", 2) == 0 && arg[2])
         {
-          args->print_scene = 1;
-          continue;
+          if ((rc = skate_option (arg, argc, argv, &i, args)) >= 0)
+            return rc;
         }
-      if (strncmp (arg, "-o", 2) == 0)
-        {
-          /* -o FILE, -oFILE: --output */
-          const char *v = arg[2] ? arg + 2 : i < argc ? argv[i++] : NULL;
-          if (!v || !*v)
-            {
-              fputs ("chaplygin: skate: option '-o' requires a file name\n",
-                     stderr);
-              usage_hint ();
-              return EXIT_USAGE;
-            }
-          args->output = v;
-          continue;
-        }
-      if (strncmp (arg, "--", 2) != 0)
-        {
-          if (arg[0] == '-' && arg[1] != '\0')
-            fprintf (stderr, "chaplygin: skate: unknown option '%s'\n", arg);
-          else
-            fprintf (stderr, "chaplygin: skate: unexpected argument '%s'\n",
-                     arg);
-          usage_hint ();
-          return EXIT_USAGE;
-        }
-
-      /* "--name" or "--name=value". */
-      const char *name = arg + 2;
-      const char *eq = strchr (name, '=');
-      size_t len = eq ? (size_t) (eq - name) : strlen (name);
-      const option_entry *opt = NULL;
-      for (size_t k = 0; k < sizeof skate_options / sizeof skate_options[0];
-           k++)
-        if (strlen (skate_options[k].name) == len
-            && strncmp (skate_options[k].name, name, len) == 0)
-          {
-            opt = &skate_options[k];
-            break;
-          }
-      if (!opt)
-        {
-          fprintf (stderr, "chaplygin: skate: unknown option '--%.*s'\n",
-                   (int) (len < INT_MAX ? len : INT_MAX), name);
-          usage_hint ();
-          return EXIT_USAGE;
-        }
-
-      const char *value;
-      if (eq)
-        value = eq + 1;
-      else if (i < argc)
-        value = argv[i++];
       else
         {
-          fprintf (stderr, "chaplygin: skate: option '--%s' requires a "
-                   "value\n", opt->name);
+          char shown[128];
+          fprintf (stderr, "chaplygin: skate: %s '%s'\n", arg[0] == '-'
+                   && arg[1] ? "unknown option" : "unexpected argument",
+                   chaplygin_text_shown (shown, sizeof shown, arg, 60));
           usage_hint ();
           return EXIT_USAGE;
         }
-
-      int rc = set_option (args, opt->id, opt->name, value);
-      if (rc != EXIT_OK)
-        return rc;
     }
   return -1;
 }
 
-/* Write SC (from PATH, the scene's name in messages; INPUT: the scene
-   file, NULL if none) as OPT says to OUTPUT (NULL or "-": standard
-   output): the row limit checked before the output is opened, the output
-   renamed into place on success (output.h).  Returns the exit status. */
-static int
-write_run (const scene *sc, const char *path, const char *input,
-           const run_options *opt, const char *output_name)
+/* The defaults of skate_defaults for the keys ARGS does not give. */
+static void
+skate_complete (skate_args *args)
 {
-  int rc = sc->sweep != SWEEP_NONE ? sweep_check (sc, path, 0, 1)
-    : run_check (sc, path, opt->compare);
-  if (rc != EXIT_OK)
-    return rc;
+  size_t given = args->n;
+  for (size_t d = 0; d < N_SKATE_DEFAULTS; d++)
+    {
+      size_t j = 0;
+      while (j < given && strcmp (args->key[j], skate_defaults[d][1]) != 0)
+        j++;
+      if (j == given && args->n < SKATE_MAX_KEYS)
+        {
+          args->section[args->n] = skate_defaults[d][0];
+          args->key[args->n] = skate_defaults[d][1];
+          args->value[args->n++] = skate_defaults[d][2];
+        }
+    }
+}
+
+/* Write SC as RUN says to OUTPUT_NAME (NULL or "-": standard output; INPUT:
+   the scene file, NULL if none, which the output may not be): the row
+   limit checked before the output is opened, the output renamed into
+   place on success (output.h).  Returns the exit status. */
+static int
+write_run (const chaplygin_scene *sc, const char *input,
+           const chaplygin_run_options *run, const char *command,
+           const char *output_name, chaplygin_scene_report *rep)
+{
+  if (chaplygin_scene_check (sc, run, rep) != CHAPLYGIN_SCENE_OK)
+    {
+      fprintf (stderr, "chaplygin: %s\n", rep->message);
+      return csv_exit_status (rep->status);
+    }
   output out;
-  rc = output_open (&out, output_name, input);
+  int rc = output_open (&out, output_name, input);
   if (rc != EXIT_OK)
     return rc;
-  rc = scene_run (sc, path, opt, out.stream);
+  csv_options opt = { command, NULL, "chaplygin run" };
+  rc = csv_run (sc, run, out.stream, &opt, rep);
   if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
     rc = EXIT_FAILURE_LIB;
   return rc;
 }
 
-/* "chaplygin skate": the options validated here (messages naming them),
-   then the per-collision run of a scene with the same skate and outputs
-   E,H,theta,tau,peg (run.c: one mechanism for both). */
+/* "chaplygin skate": the scene of its options, run per collision as
+   "chaplygin run" runs a scene file. */
 static int
 run_skate (int argc, char **argv)
 {
-  skate_args args = { 1.0, 1.0 / 3.0, 1.0, 0.5, 0.0, 1e-12, NAN, NAN, 20L,
-                      1L, SCENE_MAX_ROWS_DEFAULT, CHAPLYGIN_CLOSED_FORM, 0, 0,
-                      0, NULL, NULL };
+  static skate_args args;
+  chaplygin_scene_report rep;
   int rc = parse_skate (argc, argv, &args);
   if (rc >= 0)
     return rc;
-
-  chaplygin_discrete sys;
-  int status = chaplygin_discrete_init (&sys, args.L0, args.Delta);
-  if (status != CHAPLYGIN_SUCCESS)
+  skate_complete (&args);
+  chaplygin_scene *sc = cli_new_scene ();
+  if (!sc)
+    return EXIT_FAILURE_LIB;
+  if (chaplygin_scene_read_pairs (sc, args.n, args.section, args.key,
+                                  args.value, "skate", &rep) != 0)
     {
-      if (args.Delta_arg)
-        fprintf (stderr, "chaplygin: --Delta '%s' (with --L0 %.17g): %s\n",
-                 args.Delta_arg, args.L0, chaplygin_strerror (status));
-      else
-        fprintf (stderr, "chaplygin: --Delta %.17g (with --L0 %.17g): %s\n",
-                 args.Delta, args.L0, chaplygin_strerror (status));
-      return EXIT_USAGE;
+      fprintf (stderr, "chaplygin: %s\n", rep.message);
+      rc = csv_exit_status (rep.status);
     }
-
-  /* the state as the run forms it: in the units of its velocity scaling
-     where it is tiny or huge (run.c) */
-  double q[4] = { args.V > 0.0 ? 0.0 : args.Delta, args.V, args.theta,
-                  args.Omega };
-  chaplygin_discrete_state st;
-  int m;
-  status = chaplygin_velocity_scaling (args.L0 + q[CHAPLYGIN_D], args.V,
-                                       args.Omega, &m, &q[CHAPLYGIN_V],
-                                       &q[CHAPLYGIN_OMEGA]);
-  if (status == CHAPLYGIN_SUCCESS)
-    status = chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st);
-  if (status != CHAPLYGIN_SUCCESS)
+  else if (args.print_scene)
+    rc = cli_print_scene (sc);
+  else
     {
-      fprintf (stderr, "chaplygin: initial state --L0 %.17g --Delta %.17g "
-               "--V %.17g --Omega %.17g --theta %.17g: %s\n", args.L0,
-               args.Delta, args.V, args.Omega, args.theta,
-               chaplygin_strerror (status));
-      return EXIT_USAGE;
+      chaplygin_run_options run = { 0, 0, 1, 0, NULL, NULL, NULL, NULL };
+      rc = write_run (sc, NULL, &run, args.no_provenance ? NULL
+                      : cli_command (), args.output, &rep);
     }
-
-  static scene sc;              /* large: keep it off the stack */
-  memset (&sc, 0, sizeof sc);
-  sc.model = SCENE_DISCRETE;
-  sc.L0 = args.L0;
-  sc.Delta = args.Delta;
-  sc.L = NAN;
-  sc.V = args.V;
-  sc.Omega = args.Omega;
-  sc.theta = args.theta;
-  sc.collisions = args.collisions;
-  sc.duration = NAN;
-  sc.samples = 0;
-  sc.outputs = SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA | SCENE_OUT_TAU
-    | SCENE_OUT_PEG;
-  sc.method = args.method;
-  sc.tolerance = args.tol;
-  sc.every = args.every;
-  sc.stop_fate = args.stop_fate;
-  sc.stop_H = args.stop_H;
-  sc.stop_tau = args.stop_tau;
-  sc.max_rows = args.max_rows;
-  sc.sweep = SWEEP_NONE;
-  sc.view = PLOT_PANELS;
-  if (args.print_scene)
-    return cli_print_scene (&sc);
-  run_options opt = { 0, args.no_provenance ? NULL : cli_command (), NULL };
-  return write_run (&sc, "skate", NULL, &opt, args.output);
+  chaplygin_scene_free (sc);
+  return rc;
 }
 
 /* The arguments of "run". */
@@ -660,28 +489,30 @@ static int
 run_scene (int argc, char **argv)
 {
   run_args args = { NULL, NULL, NULL, 0, 0, 0, 0 };
+  chaplygin_scene_report rep;
   int rc = parse_run (argc, argv, &args);
   if (rc >= 0)
     return rc;
-
-  static scene sc;              /* large: keep it off the stack */
-  const char *name;
-  rc = cli_load_scene (args.scene_path, args.max_rows, &sc, &name);
-  if (rc != EXIT_OK)
-    return rc;
-  if (args.print_scene)
-    return cli_print_scene (&sc);
-
-  run_stats stats;
-  memset (&stats, 0, sizeof stats);
-  run_options opt = { args.compare,
-                      args.no_provenance ? NULL : cli_command (), &stats };
-  rc = write_run (&sc, name, args.scene_path, &opt, args.output);
-  if (args.stats)
-    fprintf (stderr, "chaplygin: stats: steps=%lu, heading_evals=%lu, "
-             "closed_form_evals=%lu, path_quadratures=%lu\n", stats.steps,
-             stats.heading_evals, stats.closed_form_evals,
-             stats.path_quadratures);
+  chaplygin_scene *sc = cli_new_scene ();
+  if (!sc)
+    return EXIT_FAILURE_LIB;
+  rc = cli_load_scene (args.scene_path, args.max_rows, sc);
+  if (rc == EXIT_OK && args.print_scene)
+    rc = cli_print_scene (sc);
+  else if (rc == EXIT_OK)
+    {
+      chaplygin_run_options run = { args.compare, 0, 1, 0, NULL, NULL, NULL,
+                                    NULL };
+      memset (&rep, 0, sizeof rep);
+      rc = write_run (sc, args.scene_path, &run, args.no_provenance ? NULL
+                      : cli_command (), args.output, &rep);
+      if (args.stats)
+        fprintf (stderr, "chaplygin: stats: steps=%lu, heading_evals=%lu, "
+                 "closed_form_evals=%lu, path_quadratures=%lu\n", rep.steps,
+                 rep.heading_evals, rep.closed_form_evals,
+                 rep.path_quadratures);
+    }
+  chaplygin_scene_free (sc);
   return rc;
 }
 

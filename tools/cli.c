@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "number.h"
 
 #define COMMAND_MAX 2048
 
@@ -102,35 +101,39 @@ cli_scene_given (const char *cmd, const char *path)
 }
 
 int
-cli_load_scene (const char *path, const char *max_rows, scene *sc,
-                const char **name)
+cli_load_scene (const char *path, const char *max_rows, chaplygin_scene *sc)
 {
-  char err[SCENE_ERRLEN];
-  const char *shown = strcmp (path, "-") == 0 ? "(standard input)" : path;
+  chaplygin_scene_report rep;
   int r = strcmp (path, "-") == 0
-    ? scene_read (stdin, shown, sc, err, sizeof err)
-    : scene_load (path, sc, err, sizeof err);
-  if (name)
-    *name = shown;
-  if (r != 0)
+    ? chaplygin_scene_read_stream (sc, stdin, "(standard input)", &rep)
+    : chaplygin_scene_read_file (sc, path, &rep);
+  if (r != CHAPLYGIN_SCENE_OK)
     {
-      fprintf (stderr, "chaplygin: %s\n", err);
+      fprintf (stderr, "chaplygin: %s\n", rep.message);
       return 2;
     }
-  return max_rows ? cli_max_rows (max_rows, &sc->max_rows) : 0;
+  return max_rows ? cli_max_rows (max_rows, sc) : 0;
 }
 
 int
-cli_max_rows (const char *text, long *n)
+cli_max_rows (const char *text, chaplygin_scene *sc)
 {
-  int r = number_integer (text, 1, SCENE_MAX_ROWS_MAX, n);
-  if (r != NUMBER_OK)
+  chaplygin_scene_report rep;
+  if (chaplygin_scene_set (sc, "max_rows", text, &rep) != 0)
     {
-      fprintf (stderr, "chaplygin: --max-rows '%s' %s (an integer in "
-               "1..%ld)\n", text, number_problem (r), SCENE_MAX_ROWS_MAX);
+      fprintf (stderr, "chaplygin: --max-rows: %s\n", rep.message);
       return 2;
     }
   return 0;
+}
+
+chaplygin_scene *
+cli_new_scene (void)
+{
+  chaplygin_scene *sc = chaplygin_scene_new ();
+  if (!sc)
+    fputs ("chaplygin: out of memory\n", stderr);
+  return sc;
 }
 
 int
@@ -146,8 +149,8 @@ cli_finish_stdout (void)
 }
 
 int
-cli_print_scene (const scene *sc)
+cli_print_scene (const chaplygin_scene *sc)
 {
-  scene_write (sc, stdout, "");
+  chaplygin_scene_write (sc, stdout, "");
   return cli_finish_stdout ();
 }

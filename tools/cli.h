@@ -6,7 +6,7 @@
 #ifndef CHAPLYGIN_TOOLS_CLI_H
 #define CHAPLYGIN_TOOLS_CLI_H
 
-#include "scene.h"
+#include "chaplygin-scene.h"
 
 /* The whole command line, kept by main for the provenance lines. */
 void cli_set_command (int argc, char **argv);
@@ -28,20 +28,22 @@ int cli_scene_operand (const char *cmd, const char *arg, const char **path);
    after a message. */
 int cli_scene_given (const char *cmd, const char *path);
 
-/* Read the scene PATH ("-": standard input) into *SC, with MAX_ROWS (the
-   text of --max-rows, NULL if not given) for its max_rows.  Returns 0, or
-   2 after a message.  *NAME (may be NULL) receives the name for
-   messages. */
-int cli_load_scene (const char *path, const char *max_rows, scene *sc,
-                    const char **name);
+/* Read the scene PATH ("-": standard input, named "(standard input)")
+   into SC, with MAX_ROWS (the text of --max-rows, NULL if not given) for
+   its max_rows.  Returns 0, or 2 after a message. */
+int cli_load_scene (const char *path, const char *max_rows,
+                    chaplygin_scene *sc);
 
-/* --max-rows TEXT: an integer 1 .. 2^53 - 1 (number.h) into *N.  Returns
+/* --max-rows TEXT on SC (the scene's [run] max_rows, replaced).  Returns
    0, or 2 after a message. */
-int cli_max_rows (const char *text, long *n);
+int cli_max_rows (const char *text, chaplygin_scene *sc);
 
 /* --print-scene: SC as a scene file on standard output.  Returns the exit
    status. */
-int cli_print_scene (const scene *sc);
+int cli_print_scene (const chaplygin_scene *sc);
+
+/* A new scene object, or NULL after a message. */
+chaplygin_scene *cli_new_scene (void);
 
 /* Flush standard output; 0, or 1 after a message on a write error. */
 int cli_finish_stdout (void);

@@ -32,7 +32,7 @@
 
 #include "chaplygin.h"
 #include "eq.h"
-#include "number.h"
+#include "chaplygin-scene.h"
 
 enum
 {
@@ -195,9 +195,9 @@ real_in (eq_ctx *c, const char *name, double *x)
   if (!a)
     return fail_usage (c, "missing input %s", name);
   a->used = 1;
-  s = number_real (a->text, x);
-  if (s != NUMBER_OK)
-    return fail_usage (c, "%s = '%s' %s", name, a->text, number_problem (s));
+  s = chaplygin_number_real (a->text, x);
+  if (s != CHAPLYGIN_NUMBER_OK)
+    return fail_usage (c, "%s = '%s' %s", name, a->text, chaplygin_number_problem (s));
   show (c, "%s = %.17g", name, *x);
   return 0;
 }
@@ -227,12 +227,12 @@ int_in (eq_ctx *c, const char *name, long lo, long hi, long *n)
   if (!a)
     return fail_usage (c, "missing input %s", name);
   a->used = 1;
-  s = number_integer (a->text, lo, hi, n);
-  if (s == NUMBER_RANGE || (s == NUMBER_OK && (*n < lo || *n > hi)))
+  s = chaplygin_number_integer (a->text, lo, hi, n);
+  if (s == CHAPLYGIN_NUMBER_RANGE || (s == CHAPLYGIN_NUMBER_OK && (*n < lo || *n > hi)))
     return fail_usage (c, "%s = '%s' is not an integer in %ld..%ld", name,
                        a->text, lo, hi);
-  if (s != NUMBER_OK)
-    return fail_usage (c, "%s = '%s' %s", name, a->text, number_problem (s));
+  if (s != CHAPLYGIN_NUMBER_OK)
+    return fail_usage (c, "%s = '%s' %s", name, a->text, chaplygin_number_problem (s));
   show (c, "%s = %ld", name, *n);
   return 0;
 }
@@ -246,7 +246,7 @@ dir_in (eq_ctx *c, const char *name, int *dir)
 
   if (c->failed)
     return -1;
-  if (a && number_integer (a->text, -1, 1, &d) == NUMBER_OK && d != 0)
+  if (a && chaplygin_number_integer (a->text, -1, 1, &d) == CHAPLYGIN_NUMBER_OK && d != 0)
     {
       a->used = 1;
       *dir = (int) d;

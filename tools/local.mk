@@ -1,17 +1,14 @@
 ## tools/local.mk -- the command-line program, its tests, the scene
 ## fuzzer, the figures.
 bin_PROGRAMS = tools/chaplygin
-tools_chaplygin_SOURCES = tools/chaplygin.c tools/scene.c tools/scene.h \
-	tools/run.c tools/run.h tools/sweep.c tools/sweep.h \
-	tools/sweep-main.c tools/progress.c tools/progress.h tools/eq.c \
-	tools/eq.h tools/number.c tools/number.h tools/cli.c tools/cli.h \
-	tools/output.c tools/output.h tools/provenance.c tools/provenance.h \
-	tools/bounds.c tools/bounds.h tools/plot.c tools/plot.h \
-	tools/scaled.c tools/scaled.h
+tools_chaplygin_SOURCES = tools/chaplygin.c tools/csv.c tools/csv.h \
+	tools/sweep-main.c tools/sweep.h tools/progress.c tools/progress.h \
+	tools/eq.c tools/eq.h tools/cli.c tools/cli.h tools/output.c \
+	tools/output.h tools/provenance.c tools/provenance.h tools/plot.c \
+	tools/plot.h
 nodist_tools_chaplygin_SOURCES = tools/plot-style.h
-tools_chaplygin_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) $(OPENMP_CFLAGS)
-tools_chaplygin_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_builddir)/tools \
-	-DCHAPLYGIN_SCENES_DIR='"$(scenesdir)"'
+tools_chaplygin_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene \
+	-I$(top_builddir)/tools -DCHAPLYGIN_SCENES_DIR='"$(scenesdir)"'
 # The figures' style (doc/figures/style.gp, also that of `make bench')
 # as a C string for `chaplygin plot'.
 BUILT_SOURCES = tools/plot-style.h
@@ -23,8 +20,7 @@ tools/plot-style.h: $(srcdir)/doc/figures/style.gp
 	    $(srcdir)/doc/figures/style.gp; \
 	  echo ';'; } > $@.tmp && mv $@.tmp $@
 CLEANFILES += tools/plot-style.h
-tools_chaplygin_LDFLAGS = $(OPENMP_CFLAGS)
-tools_chaplygin_LDADD = lib/libchaplygin.la $(INIH_LIBS) $(MPFR_LIBS) \
+tools_chaplygin_LDADD = lib/libchaplygin-scene.la lib/libchaplygin.la \
 	$(CODE_COVERAGE_LIBS) -lm
 # The man page names the installed scenes: @pkgdatadir@ substituted here,
 # so that its EXAMPLES work from an installation.  The manual's "Program
@@ -36,28 +32,20 @@ tools/chaplygin.1: $(srcdir)/tools/chaplygin.1.in Makefile
 CLEANFILES += tools/chaplygin.1
 EXTRA_DIST += tools/chaplygin.1.in
 
-# The scene parser's unit tests, and the fuzz target replaying its corpus
-# (the same source as the libFuzzer build of `make fuzz').
-check_PROGRAMS += tools/test-scene tools/fuzz-scene tools/test-number \
-	tools/scaled-cmp
+# The fuzz target of the scene engine's reader, replaying its corpus (the
+# same source as the libFuzzer build of `make fuzz'), and the comparison
+# of scaled runs.
+check_PROGRAMS += tools/fuzz-scene tools/scaled-cmp
 tools_scaled_cmp_SOURCES = tools/scaled-cmp.c
 tools_scaled_cmp_LDADD = $(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
-tools_test_number_SOURCES = tools/test-number.c tools/number.c tools/number.h
-tools_test_number_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS)
-tools_test_number_LDADD = $(CHECK_LIBS) $(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
-tools_test_scene_SOURCES = tools/test-scene.c tools/scene.c tools/scene.h \
-	tools/number.c tools/number.h
-tools_test_scene_CFLAGS = $(AM_CFLAGS) $(CHECK_CFLAGS) $(INIH_CFLAGS)
-tools_test_scene_LDADD = lib/libchaplygin-core.la $(CHECK_LIBS) \
-	$(INIH_LIBS) $(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
-tools_fuzz_scene_SOURCES = tools/fuzz-scene.c tools/scene.c tools/scene.h \
-	tools/number.c tools/number.h
-tools_fuzz_scene_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS)
-tools_fuzz_scene_LDADD = lib/libchaplygin-core.la $(INIH_LIBS) \
-	$(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
+tools_fuzz_scene_SOURCES = tools/fuzz-scene.c
+tools_fuzz_scene_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
+tools_fuzz_scene_LDADD = lib/libchaplygin-scene-core.la \
+	lib/libchaplygin-core.la $(INIH_LIBS) $(MPFR_LIBS) $(OPENMP_CFLAGS) \
+	$(CODE_COVERAGE_LIBS) -lm
 
 CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
-	tools/test-scene tools/test-number tools/fuzz-replay.sh \
+	tools/fuzz-replay.sh \
 	tools/test-scenes.sh tools/test-eq.sh tools/test-manpage.sh \
 	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
 	tools/test-scaled.sh
@@ -73,14 +61,15 @@ EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sw
 # FUZZ_SECONDS on a copy of the corpus; new inputs land in fuzz-work/.
 FUZZ_SECONDS = 60
 FUZZ_CC = clang
-fuzz: $(srcdir)/tools/fuzz-scene.c $(srcdir)/tools/scene.c \
-	$(srcdir)/tools/number.c
+fuzz: $(srcdir)/tools/fuzz-scene.c lib/libchaplygin-scene-core.la \
+		lib/libchaplygin-core.la
 	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=undefined \
-	  -DCHAPLYGIN_LIBFUZZER -I$(builddir) -I$(srcdir)/lib -I$(srcdir)/tools \
+	  -fno-sanitize-recover=undefined -DCHAPLYGIN_LIBFUZZER \
+	  -I$(builddir) -I$(srcdir)/lib -I$(srcdir)/lib/scene \
 	  $(INIH_CFLAGS) -o fuzz-scene-libfuzzer $(srcdir)/tools/fuzz-scene.c \
-	  $(srcdir)/tools/scene.c $(srcdir)/tools/number.c $(INIH_LIBS) \
-	  $(MPFR_LIBS)
+	  $(addprefix $(srcdir)/lib/scene/,report.c number.c scene.c run.c \
+	    grid.c) lib/.libs/libchaplygin-core.a $(GSL_LIBS) $(INIH_LIBS) \
+	  $(MPFR_LIBS) -lm
 	mkdir -p fuzz-work && cp $(srcdir)/tools/fuzz-corpus/* fuzz-work/
 	./fuzz-scene-libfuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	  -dict=$(srcdir)/tools/fuzz-scene.dict fuzz-work

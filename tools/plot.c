@@ -1,8 +1,8 @@
 /* plot.c -- "chaplygin plot SCENE.ini -o FILE.png": the standard figure of
    a scene, drawn by gnuplot.
 
-   The scene runs here (run.c, sweep.c) with what the figure needs (every
-   output, dense samples between collisions), its CSV written straight into
+   The scene runs here (the scene engine, csv.c) with what the figure needs
+   (every output, dense samples between collisions), its CSV written straight into
    gnuplot's standard input as inline data blocks ($d, ...), followed by
    the plot commands; gnuplot (GNUPLOT, default "gnuplot", started with -d:
    no initialisation file) writes the image to its standard output, which
@@ -47,13 +47,12 @@
 #include <unistd.h>
 
 #include "chaplygin.h"
+#include "chaplygin-scene.h"
 #include "cli.h"
+#include "csv.h"
 #include "output.h"
 #include "plot-style.h"
 #include "plot.h"
-#include "run.h"
-#include "scene.h"
-#include "sweep.h"
 
 enum
 {
@@ -64,9 +63,52 @@ enum
 
 /* Dense samples per segment where the scene has none: the curves of the
    panels between collisions. */
-#define PLOT_SAMPLES 24
+#define PLOT_SAMPLES "24"
 /* At most this many basin boundaries are drawn. */
 #define BOUNDARIES_MAX 4096
+#define Y_MAX 64
+
+/* What the script needs of a scene (from the engine's accessors). */
+typedef struct
+{
+  const chaplygin_scene *sc;
+  int model, compare, phase_space;
+  char kind[16];                /* "" (not a sweep), sigma4, ... */
+  char title[128];              /* "" if none */
+  const char *name;
+  double x_min, x_max, y_min, y_max, nx, ny, L0, Delta, Omega, collisions;
+  double y[Y_MAX];
+  size_t n_y;
+} figure_scene;
+
+/* FS from the scene SC. */
+static void
+figure_scene_of (const chaplygin_scene *sc, figure_scene *fs)
+{
+  char text[32];
+  static const char *const numbers[] = { "x_min", "x_max", "y_min", "y_max",
+                                         "nx", "ny", "L0", "Delta", "Omega",
+                                         "collisions" };
+  double *field[] = { &fs->x_min, &fs->x_max, &fs->y_min, &fs->y_max,
+                      &fs->nx, &fs->ny, &fs->L0, &fs->Delta, &fs->Omega,
+                      &fs->collisions };
+  memset (fs, 0, sizeof *fs);
+  fs->sc = sc;
+  fs->name = chaplygin_scene_name (sc);
+  fs->model = chaplygin_scene_model (sc);
+  fs->compare = chaplygin_scene_text (sc, "compare", text, sizeof text) == 0;
+  fs->phase_space = chaplygin_scene_text (sc, "view", text, sizeof text) == 0
+    && strcmp (text, "phase-space") == 0;
+  if (chaplygin_scene_text (sc, "kind", fs->kind, sizeof fs->kind) != 0)
+    fs->kind[0] = '\0';
+  if (chaplygin_scene_text (sc, "title", fs->title, sizeof fs->title) != 0)
+    fs->title[0] = '\0';
+  for (size_t i = 0; i < sizeof numbers / sizeof numbers[0]; i++)
+    if (chaplygin_scene_number (sc, numbers[i], field[i]) != 0)
+      *field[i] = NAN;
+  if (chaplygin_scene_list (sc, "y", fs->y, Y_MAX, &fs->n_y) != 0)
+    fs->n_y = 0;
+}
 
 static const char usage_text[] =
   "Usage: chaplygin plot SCENE.ini -o FILE [--format png|svg] [--max-rows N]\n"
@@ -124,36 +166,37 @@ gp_string (FILE *gp, const char *text)
 /* The run of SC (COMPARE: its companion) as the data block $NAME.
    Returns the exit status of the run. */
 static int
-data_block (FILE *gp, const char *name, const scene *sc, const char *path,
+data_block (FILE *gp, const char *name, const chaplygin_scene *sc,
             int compare)
 {
-  run_options opt = { compare, NULL, NULL };
+  chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL };
+  csv_options opt = { NULL, NULL, NULL };
   fprintf (gp, "$%s << EOD\n", name);
-  int rc = scene_run (sc, path, &opt, gp);
+  int rc = csv_run (sc, &run, gp, &opt, NULL);
   fputs ("EOD\n", gp);
   return rc;
 }
 
 /* The heading of the figure: the title, else the scene's name. */
 static void
-figure_title (FILE *gp, const scene *sc, const char *path)
+figure_title (FILE *gp, const figure_scene *fs)
 {
-  const char *slash = strrchr (path, '/');
-  gp_string (gp, sc->title[0] ? sc->title : slash ? slash + 1 : path);
+  const char *slash = strrchr (fs->name, '/');
+  gp_string (gp, fs->title[0] ? fs->title : slash ? slash + 1 : fs->name);
 }
 
 /* The panels of a run: $d the skate (dense), $c the massless skate per
    collision, $s the smooth sleigh (the scene itself, or the companion). */
 static void
-panels_script (FILE *gp, const scene *sc, const char *path, int have_skate,
+panels_script (FILE *gp, const figure_scene *fs, int have_skate,
                int have_smooth)
 {
-  const int massless = sc->model == SCENE_MASSLESS;
+  const int massless = fs->model == CHAPLYGIN_SCENE_MASSLESS;
   const char *len = massless ? " (slot lengths)" : "/ρ";
   const char *both = have_skate ? "$d" : "$s";
 
   fputs ("set multiplot layout 2,3 title ", gp);
-  figure_title (gp, sc, path);
+  figure_title (gp, fs);
   fputs (" noenhanced\n", gp);
   fprintf (gp, "set title '(a) path%s'; set size ratio -1\n",
            have_skate ? "" : " of the contact point C");
@@ -204,14 +247,13 @@ panels_script (FILE *gp, const scene *sc, const char *path, int have_skate,
 
 /* The (S, E/E_f, H) curves of the dense run $d (and the smooth $s). */
 static void
-phase_space_script (FILE *gp, const scene *sc, const char *path,
-                    int have_smooth)
+phase_space_script (FILE *gp, const figure_scene *fs, int have_smooth)
 {
   fputs ("stats $d using (Ef = column('E')) nooutput\n", gp);
   if (have_smooth)
     fputs ("stats $s using 'E' every ::0::0 nooutput; Es = STATS_max\n", gp);
   fputs ("set title ", gp);
-  figure_title (gp, sc, path);
+  figure_title (gp, fs);
   fputs (" noenhanced\n"
          "set xlabel 'S'; set ylabel 'E/E_f'; set zlabel 'H' rotate\n"
          "set view 60, 30; set key top left\n"
@@ -230,18 +272,17 @@ phase_space_script (FILE *gp, const scene *sc, const char *path,
 
 /* The figure of the sweep $d. */
 static void
-sweep_script (FILE *gp, const scene *sc, const char *path,
-              const double *boundary, size_t n_boundary)
+sweep_script (FILE *gp, const figure_scene *fs, const double *boundary,
+              size_t n_boundary)
 {
   fputs ("set title ", gp);
-  figure_title (gp, sc, path);
+  figure_title (gp, fs);
   fputs (" noenhanced\n", gp);
-  switch (sc->sweep)
+  if (strcmp (fs->kind, "sigma4") == 0)
     {
-    case SWEEP_SIGMA4:
-      fprintf (gp, "array Y[%zu]\n", sc->n_y);
-      for (size_t i = 0; i < sc->n_y; i++)
-        fprintf (gp, "Y[%zu] = %.17g\n", i + 1, sc->y[i]);
+      fprintf (gp, "array Y[%zu]\n", fs->n_y);
+      for (size_t i = 0; i < fs->n_y; i++)
+        fprintf (gp, "Y[%zu] = %.17g\n", i + 1, fs->y[i]);
       fputs ("set xlabel 'L_0/Δ'; set ylabel 'σ_4'\n"
              "set yrange [-3:3]; set key top left\n"
              "plot for [i = 1:|Y|] $d using 'x':(column('y') == Y[i] ? "
@@ -249,23 +290,25 @@ sweep_script (FILE *gp, const scene *sc, const char *path,
              "sprintf('(1/Δ)^2 = %g', Y[i]), "
              "1 with lines dt 3 lc rgb 'black' notitle, "
              "-1 with lines dt 3 lc rgb 'black' notitle\n", gp);
-      break;
-    case SWEEP_STABILITY:
+    }
+  else if (strcmp (fs->kind, "stability") == 0)
+    {
       fprintf (gp, "set xrange [%.17g:%.17g]; set yrange [%.17g:%.17g]\n",
-               sc->x_min, sc->x_max, sc->y_min, sc->y_max);
+               fs->x_min, fs->x_max, fs->y_min, fs->y_max);
       fputs ("set xlabel 'L_0/Δ'; set ylabel '(1/Δ)^2'\n"
              "set palette defined (0 'white', 1 '#b0b0b0', 2 '#7fa7d9', "
              "3 '#2c4f7c')\n"
              "set cbrange [-0.5:3.5]; set palette maxcolors 4\n"
              "set cbtics ('unstable' 0, 'V*>0 stable' 1, 'V*<0 stable' 2, "
              "'both' 3)\n", gp);
-      if (sc->nx >= 2 && sc->ny >= 2)
+      if (fs->nx >= 2 && fs->ny >= 2)
         fputs ("plot $d using 'x':'y':'region' with image\n", gp);
       else
         fputs ("plot $d using 'x':'y':'region' with points pt 5 ps 2 "
                "lc palette\n", gp);
-      break;
-    case SWEEP_BASINS:
+    }
+  else
+    {
       fputs ("set xlabel 'initial V^+'; set ylabel 'fate'\n"
              "set ytics ('V* < 0' -1, 'spin' 0, 'V* > 0' 1, 'undecided' 2)\n"
              "stats $d using 'fate' nooutput\n"
@@ -275,9 +318,6 @@ sweep_script (FILE *gp, const scene *sc, const char *path,
                  "nohead dt 3 lc rgb '#888888'\n", boundary[i], boundary[i]);
       fputs ("plot $d using 'V0':'fate' with points pt 7 ps 0.3 "
              "lc rgb '#1f3b73'\n", gp);
-      break;
-    case SWEEP_NONE:
-      break;
     }
 }
 
@@ -380,87 +420,127 @@ finish_gnuplot (pid_t pid)
    smooth sleigh as $s), the massless skate per collision ($c). */
 typedef struct
 {
-  scene drawn;
-  scene per_collision;
+  chaplygin_scene *drawn;
+  chaplygin_scene *per_collision;
   int have_skate, have_smooth, have_collisions;
 } figure_runs;
 
-/* The runs of the figure of SC; all within the row limit, else the exit
-   status 2 after a message. */
+/* SC's KEY set to VALUE; 0, or 2 after the engine's message. */
 static int
-plan_figure (const scene *sc, const char *path, figure_runs *f)
+set_key (chaplygin_scene *sc, const char *key, const char *value)
 {
-  f->drawn = *sc;
-  f->have_skate = sc->sweep == SWEEP_NONE && sc->model != SCENE_SMOOTH;
-  f->have_smooth = sc->sweep == SWEEP_NONE
-    && (sc->model == SCENE_SMOOTH || sc->compare);
-  f->have_collisions = sc->model == SCENE_MASSLESS && sc->sweep == SWEEP_NONE;
-  if (sc->sweep != SWEEP_NONE)
-    return sweep_check (sc, path, 0, 1);
-  /* every output; the skates dense */
-  f->drawn.outputs = SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA
-    | SCENE_OUT_TAU | SCENE_OUT_V | SCENE_OUT_OMEGA | SCENE_OUT_PATH
-    | SCENE_OUT_G | (f->have_skate ? SCENE_OUT_PEG : 0u);
-  if (f->have_skate && f->drawn.samples <= 0)
-    f->drawn.samples = PLOT_SAMPLES;
-  f->per_collision = f->drawn;
-  f->per_collision.samples = 0;
-  int rc = run_check (&f->drawn, path, 0);
+  chaplygin_scene_report rep;
+  if (chaplygin_scene_set (sc, key, value, &rep) == CHAPLYGIN_SCENE_OK)
+    return EXIT_OK;
+  fprintf (stderr, "chaplygin: %s\n", rep.message);
+  return EXIT_USAGE;
+}
+
+/* Whether the run of SC (COMPARE: its companion) is within the row limit:
+   0, else 2 after the engine's message. */
+static int
+check_run (const chaplygin_scene *sc, int compare)
+{
+  chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL };
+  chaplygin_scene_report rep;
+  if (chaplygin_scene_check (sc, &run, &rep) == CHAPLYGIN_SCENE_OK)
+    return EXIT_OK;
+  fprintf (stderr, "chaplygin: %s\n", rep.message);
+  return csv_exit_status (rep.status);
+}
+
+/* The runs of the figure of FS: every output; the skates dense (and the
+   massless skate per collision too); all within the row limit, else the
+   exit status 2 after a message. */
+static int
+plan_figure (const figure_scene *fs, figure_runs *f)
+{
+  const int sweep = fs->kind[0] != '\0';
+  double samples = 0.0;
+  f->have_skate = !sweep && fs->model != CHAPLYGIN_SCENE_SMOOTH;
+  f->have_smooth = !sweep && (fs->model == CHAPLYGIN_SCENE_SMOOTH
+                              || fs->compare);
+  f->have_collisions = fs->model == CHAPLYGIN_SCENE_MASSLESS && !sweep;
+  f->drawn = chaplygin_scene_dup (fs->sc);
+  f->per_collision = chaplygin_scene_dup (fs->sc);
+  if (!f->drawn || !f->per_collision)
+    {
+      fputs ("chaplygin: out of memory\n", stderr);
+      return EXIT_FAILED;
+    }
+  if (sweep)
+    return check_run (f->drawn, 0);
+  int rc = set_key (f->drawn, "outputs", f->have_skate
+                    ? "E,H,theta,tau,peg,V,Omega,path,G"
+                    : "E,H,theta,tau,V,Omega,path,G");
+  (void) chaplygin_scene_number (f->drawn, "samples", &samples);
+  if (rc == EXIT_OK && f->have_skate && samples <= 0)
+    rc = set_key (f->drawn, "samples", PLOT_SAMPLES);
+  if (rc == EXIT_OK)
+    {
+      chaplygin_scene_free (f->per_collision);
+      f->per_collision = chaplygin_scene_dup (f->drawn);
+      rc = f->per_collision ? set_key (f->per_collision, "samples", "0")
+        : EXIT_FAILED;
+    }
+  if (rc == EXIT_OK)
+    rc = check_run (f->drawn, 0);
   if (rc == EXIT_OK && f->have_smooth && f->have_skate)
-    rc = run_check (&f->drawn, path, 1);
+    rc = check_run (f->drawn, 1);
   if (rc == EXIT_OK && f->have_collisions)
-    rc = run_check (&f->per_collision, path, 0);
+    rc = check_run (f->per_collision, 0);
   return rc;
 }
 
-/* The basin boundaries of a basins sweep SC, at most BOUNDARIES_MAX (none
+/* The basin boundaries of a basins sweep FS, at most BOUNDARIES_MAX (none
    where the library does not give them). */
 static size_t
-basin_boundaries (const scene *sc, double *V)
+basin_boundaries (const figure_scene *fs, double *V)
 {
   chaplygin_discrete sys;
   size_t count = 0;
-  if (chaplygin_discrete_init (&sys, sc->L0, sc->Delta) != CHAPLYGIN_SUCCESS
-      || chaplygin_discrete_basin_boundaries (&sys, sc->Omega, sc->x_min,
-                                              sc->x_max, (size_t) sc->nx,
-                                              (unsigned long) sc->collisions,
+  if (chaplygin_discrete_init (&sys, fs->L0, fs->Delta) != CHAPLYGIN_SUCCESS
+      || chaplygin_discrete_basin_boundaries (&sys, fs->Omega, fs->x_min,
+                                              fs->x_max, (size_t) fs->nx,
+                                              (unsigned long) fs->collisions,
                                               V, BOUNDARIES_MAX, &count)
          != CHAPLYGIN_SUCCESS)
     return 0;
   return count < BOUNDARIES_MAX ? count : BOUNDARIES_MAX;
 }
 
-/* The whole script of the figure F of SC to GP: the style, the terminal,
+/* The whole script of the figure F of FS to GP: the style, the terminal,
    the data, the plot.  Returns the exit status of the runs. */
 static int
-write_script (FILE *gp, const figure_runs *f, const scene *sc,
-              const char *path, image_format format)
+write_script (FILE *gp, const figure_runs *f, const figure_scene *fs,
+              image_format format)
 {
+  const int sweep = fs->kind[0] != '\0';
   fputs (plot_style, gp);
   fputs ("set encoding utf8\n", gp);
   if (format == FORMAT_SVG)
     fputs ("set terminal svg size 1200,760 font 'DejaVu Sans,10' "
            "linewidth 1.3 background rgb 'white'\n", gp);
   int rc = EXIT_OK;
-  if (f->have_skate || sc->sweep != SWEEP_NONE)
-    rc = data_block (gp, "d", &f->drawn, path, 0);
+  if (f->have_skate || sweep)
+    rc = data_block (gp, "d", f->drawn, 0);
   if (rc == EXIT_OK && f->have_collisions)
-    rc = data_block (gp, "c", &f->per_collision, path, 0);
+    rc = data_block (gp, "c", f->per_collision, 0);
   if (rc == EXIT_OK && f->have_smooth)
-    rc = data_block (gp, "s", &f->drawn, path, f->have_skate);
+    rc = data_block (gp, "s", f->drawn, f->have_skate);
   if (rc != EXIT_OK)
     return rc;
-  if (sc->sweep != SWEEP_NONE)
+  if (sweep)
     {
       static double boundary[BOUNDARIES_MAX];
-      size_t n = sc->sweep == SWEEP_BASINS ? basin_boundaries (sc, boundary)
-        : 0;
-      sweep_script (gp, sc, path, boundary, n);
+      size_t n = strcmp (fs->kind, "basins") == 0
+        ? basin_boundaries (fs, boundary) : 0;
+      sweep_script (gp, fs, boundary, n);
     }
-  else if (sc->view == PLOT_PHASE_SPACE)
-    phase_space_script (gp, sc, path, f->have_smooth);
+  else if (fs->phase_space)
+    phase_space_script (gp, fs, f->have_smooth);
   else
-    panels_script (gp, sc, path, f->have_skate, f->have_smooth);
+    panels_script (gp, fs, f->have_skate, f->have_smooth);
   return rc;
 }
 
@@ -476,6 +556,45 @@ choose_format (const char *text, const char *file)
   if (strcasecmp (name, "svg") == 0)
     return FORMAT_SVG;
   return FORMAT_NONE;
+}
+
+/* The figure FS of the runs RUNS drawn by gnuplot into OUTPUT_NAME (INPUT:
+   the scene file).  Returns the exit status. */
+static int
+draw (const figure_scene *fs, const figure_runs *runs, const char *input,
+      const char *output_name, image_format format)
+{
+  output out;
+  int rc = output_open (&out, output_name, input);
+  if (rc != EXIT_OK)
+    return rc;
+  FILE *gp = NULL;
+  pid_t pid = start_gnuplot (fileno (out.stream), &gp);
+  if (pid < 0)
+    {
+      output_close (&out, 0);
+      return EXIT_FAILED;
+    }
+  /* gnuplot may stop reading: a write error then, not SIGPIPE */
+  struct sigaction ignore, saved;
+  memset (&ignore, 0, sizeof ignore);
+  ignore.sa_handler = SIG_IGN;
+  sigaction (SIGPIPE, &ignore, &saved);
+  rc = write_script (gp, runs, fs, format);
+  if ((fclose (gp) != 0 || finish_gnuplot (pid) != 0) && rc == EXIT_OK)
+    rc = EXIT_FAILED;
+  sigaction (SIGPIPE, &saved, NULL);
+
+  struct stat st;
+  if (rc == EXIT_OK && out.temp && fstat (fileno (out.stream), &st) == 0
+      && st.st_size == 0)
+    {
+      fprintf (stderr, "chaplygin: plot: gnuplot wrote no image\n");
+      rc = EXIT_FAILED;
+    }
+  if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
+    rc = EXIT_FAILED;
+  return rc;
 }
 
 int
@@ -549,44 +668,19 @@ plot_main (int argc, char **argv)
       return EXIT_USAGE;
     }
 
-  static scene sc;                  /* large: keep them off the stack */
-  static figure_runs runs;
-  const char *name;
-  int rc = cli_load_scene (scene_path, max_rows, &sc, &name);
+  figure_scene fs;
+  figure_runs runs = { NULL, NULL, 0, 0, 0 };
+  chaplygin_scene *sc = cli_new_scene ();
+  int rc = sc ? cli_load_scene (scene_path, max_rows, sc) : EXIT_FAILED;
   if (rc == EXIT_OK)
-    rc = plan_figure (&sc, name, &runs);
-  if (rc != EXIT_OK)
-    return rc;
-
-  output out;
-  rc = output_open (&out, output_name, scene_path);
-  if (rc != EXIT_OK)
-    return rc;
-  FILE *gp = NULL;
-  pid_t pid = start_gnuplot (fileno (out.stream), &gp);
-  if (pid < 0)
     {
-      output_close (&out, 0);
-      return EXIT_FAILED;
+      figure_scene_of (sc, &fs);
+      rc = plan_figure (&fs, &runs);
     }
-  /* gnuplot may stop reading: a write error then, not SIGPIPE */
-  struct sigaction ignore, saved;
-  memset (&ignore, 0, sizeof ignore);
-  ignore.sa_handler = SIG_IGN;
-  sigaction (SIGPIPE, &ignore, &saved);
-  rc = write_script (gp, &runs, &sc, name, format);
-  if ((fclose (gp) != 0 || finish_gnuplot (pid) != 0) && rc == EXIT_OK)
-    rc = EXIT_FAILED;
-  sigaction (SIGPIPE, &saved, NULL);
-
-  struct stat st;
-  if (rc == EXIT_OK && out.temp && fstat (fileno (out.stream), &st) == 0
-      && st.st_size == 0)
-    {
-      fprintf (stderr, "chaplygin: plot: gnuplot wrote no image\n");
-      rc = EXIT_FAILED;
-    }
-  if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
-    rc = EXIT_FAILED;
+  if (rc == EXIT_OK)
+    rc = draw (&fs, &runs, scene_path, output_name, format);
+  chaplygin_scene_free (runs.drawn);
+  chaplygin_scene_free (runs.per_collision);
+  chaplygin_scene_free (sc);
   return rc;
 }

@@ -1,39 +1,42 @@
 /* provenance.c -- the '#' lines that trace an output (provenance.h). */
 #include <config.h>
 
-#include <stdarg.h>
 #include <string.h>
 
 #include "provenance.h"
 
 /* The method line of SC (COMPARE: its companion). */
 static void
-method_line (FILE *out, const scene *sc, int compare)
+method_line (FILE *out, const chaplygin_scene *sc, int compare)
 {
-  static const char *const methods[] = { "closed-form", "quadrature", "ode" };
-  if (sc->sweep == SWEEP_BASINS)
+  char kind[32] = "", method[32] = "";
+  double tolerance = 0.0;
+  (void) chaplygin_scene_text (sc, "kind", kind, sizeof kind);
+  (void) chaplygin_scene_text (sc, "method", method, sizeof method);
+  if (strcmp (kind, "basins") == 0)
     fputs ("# method: the return map on (V+^2, H) "
            "(chaplygin_discrete_fate_phase)\n", out);
-  else if (sc->sweep != SWEEP_NONE)
+  else if (kind[0])
     fputs ("# method: formulas (no integration)\n", out);
-  else if (compare || sc->model != SCENE_DISCRETE)
+  else if (compare || chaplygin_scene_model (sc) != CHAPLYGIN_SCENE_DISCRETE)
     fputs ("# method: closed-form (the only method of this model)\n", out);
-  else if (sc->method == CHAPLYGIN_CLOSED_FORM)
+  else if (strcmp (method, "closed-form") == 0
+           || chaplygin_scene_number (sc, "tolerance", &tolerance) != 0)
     fputs ("# method: closed-form (tolerance not used)\n", out);
   else
-    fprintf (out, "# method: %s, tolerance %.17g\n",
-             methods[sc->method], sc->tolerance);
+    fprintf (out, "# method: %s, tolerance %.17g\n", method, tolerance);
 }
 
 void
-provenance_header (FILE *out, const char *command, const char *path,
-                   const scene *sc, int compare, int m)
+provenance_header (FILE *out, const char *command,
+                   const chaplygin_scene *sc, int compare, int m)
 {
   char buf[1024];
   fprintf (out, "# chaplygin %s: %s\n", PACKAGE_VERSION,
-           scene_shown (buf, sizeof buf, command, sizeof buf));
+           chaplygin_text_shown (buf, sizeof buf, command, sizeof buf));
   fprintf (out, "# scene file: %s%s\n",
-           scene_shown (buf, sizeof buf, path, sizeof buf),
+           chaplygin_text_shown (buf, sizeof buf, chaplygin_scene_name (sc),
+                                 sizeof buf),
            compare ? " (its smooth companion)" : "");
   method_line (out, sc, compare);
   fputs ("# numbers: %.17g, read back exactly; lines from '#' on are "
@@ -46,16 +49,5 @@ provenance_header (FILE *out, const char *command, const char *path,
              "inf\n", m);
   fputs ("# the effective scene (every key in use, defaults included; "
          "chaplygin run --print-scene):\n", out);
-  scene_write (sc, out, "#   ");
-}
-
-void
-provenance_end (FILE *out, const char *fmt, ...)
-{
-  va_list ap;
-  fputs ("# end: ", out);
-  va_start (ap, fmt);
-  vfprintf (out, fmt, ap);
-  va_end (ap);
-  fputc ('\n', out);
+  chaplygin_scene_write (sc, out, "#   ");
 }

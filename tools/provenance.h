@@ -1,6 +1,6 @@
-/* provenance.h -- the '#' lines of an output that trace it: the program's
+/* provenance.h -- the '#' lines that trace an output: the program's
    version, the command, the scene file, the method and the effective scene
-   after the CSV header line, and a last line saying how the output ended.
+   after the CSV header line (the last line, "# end: ...", is csv.c's).
    Comment lines after the header line: gnuplot, numpy.genfromtxt
    (names=True, comments='#'), pandas (comment='#') and R (comment.char =
    "#") read the columns from the first line and skip the rest. */
@@ -9,17 +9,12 @@
 
 #include <stdio.h>
 
-#include "scene.h"
+#include "chaplygin-scene.h"
 
 /* The provenance lines of the output of COMMAND (the command line) for the
-   scene SC read from PATH (COMPARE: its smooth companion); M != 0: the run
-   is computed in the units of the velocity scaling 2^M (run.c), a line
-   says so. */
-void provenance_header (FILE *out, const char *command, const char *path,
-                        const scene *sc, int compare, int m);
-
-/* The last line: "# end: " and FMT (printf). */
-void provenance_end (FILE *out, const char *fmt, ...)
-  __attribute__ ((format (printf, 2, 3)));
+   scene SC (COMPARE: its smooth companion); M != 0: the run is computed in
+   the units of the velocity scaling 2^M, a line says so. */
+void provenance_header (FILE *out, const char *command,
+                        const chaplygin_scene *sc, int compare, int m);
 
 #endif

@@ -2,7 +2,8 @@
    line, then sweep_run (sweep.c) on the output (output.c).  Everything is
    checked (arguments, scene, sweep, row limit) before the output is
    opened; -o FILE is then written as a temporary file renamed over FILE
-   on success (even for an empty shard: the header line alone).
+   on success (even for an empty shard: the header line alone).  The
+   sweep itself is the scene engine's (chaplygin_scene_run).
 
    Exit status: 0 success (points where the library failed are rows with a
    status); 1 output error (also: -o FILE cannot be created); 2 usage error
@@ -14,14 +15,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <unistd.h>
 
+#include "chaplygin-scene.h"
 #include "cli.h"
-#include "number.h"
+#include "csv.h"
 #include "output.h"
-#include "scene.h"
 #include "sweep.h"
 
 enum
@@ -95,8 +94,8 @@ parse_shard (const char *text, int *shard, int *nshards)
     {
       memcpy (first, text, (size_t) (slash - text));
       first[slash - text] = '\0';
-      if (number_integer (first, 0, SHARDS_MAX, &i) != NUMBER_OK
-          || number_integer (slash + 1, 1, SHARDS_MAX, &n) != NUMBER_OK)
+      if (chaplygin_number_integer (first, 0, SHARDS_MAX, &i) != CHAPLYGIN_NUMBER_OK
+          || chaplygin_number_integer (slash + 1, 1, SHARDS_MAX, &n) != CHAPLYGIN_NUMBER_OK)
         i = -1;
     }
   if (i < 0)
@@ -122,11 +121,11 @@ static int
 parse_threads (const char *text, int *threads)
 {
   long v;
-  int r = number_integer (text, 1, THREADS_MAX, &v);
-  if (r != NUMBER_OK)
+  int r = chaplygin_number_integer (text, 1, THREADS_MAX, &v);
+  if (r != CHAPLYGIN_NUMBER_OK)
     {
       fprintf (stderr, "chaplygin: sweep: --threads '%s' %s (an integer "
-               "in 1..%ld)\n", text, number_problem (r), THREADS_MAX);
+               "in 1..%ld)\n", text, chaplygin_number_problem (r), THREADS_MAX);
       return EXIT_USAGE;
     }
   *threads = (int) v;
@@ -214,43 +213,57 @@ parse_sweep_args (int argc, char **argv, sweep_args *args)
   return cli_scene_given ("sweep", args->scene_path) != 0 ? EXIT_USAGE : -1;
 }
 
+/* Run the sweep of SC as ARGS say, to the output (renamed into place on
+   success).  Returns the exit status. */
+static int
+write_sweep (const chaplygin_scene *sc, const sweep_args *args)
+{
+  chaplygin_run_options run = { 0, args->shard, args->nshards, args->threads,
+                                NULL, NULL, NULL, NULL };
+  chaplygin_scene_report rep;
+  if (chaplygin_scene_check (sc, &run, &rep) != CHAPLYGIN_SCENE_OK)
+    {
+      fprintf (stderr, "chaplygin: %s\n", rep.message);
+      return csv_exit_status (rep.status);
+    }
+  output out;
+  int rc = output_open (&out, args->output, args->scene_path);
+  if (rc != EXIT_OK)
+    return rc;
+  char label[32];
+  if (args->nshards > 1)
+    snprintf (label, sizeof label, "sweep %d/%d", args->shard, args->nshards);
+  else
+    snprintf (label, sizeof label, "sweep");
+  csv_options opt = { args->no_provenance ? NULL : cli_command (), out.name,
+                      isatty (fileno (out.stream)) ? NULL : label };
+  rc = csv_run (sc, &run, out.stream, &opt, NULL);
+  if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
+    rc = EXIT_OUTPUT;
+  return rc;
+}
+
 int
 sweep_main (int argc, char **argv)
 {
   sweep_args args = { NULL, NULL, 0, 1, 0, NULL, 0, 0 };
+  char kind[32];
   int rc = parse_sweep_args (argc, argv, &args);
   if (rc >= 0)
     return rc;
-
-  static scene sc;              /* large: keep it off the stack */
-  const char *name;
-  rc = cli_load_scene (args.scene_path, args.max_rows, &sc, &name);
-  if (rc != EXIT_OK)
-    return rc;
-  if (sc.sweep == SWEEP_NONE)
+  chaplygin_scene *sc = cli_new_scene ();
+  if (!sc)
+    return EXIT_OUTPUT;
+  rc = cli_load_scene (args.scene_path, args.max_rows, sc);
+  if (rc == EXIT_OK
+      && chaplygin_scene_text (sc, "kind", kind, sizeof kind) != 0)
     {
-      fprintf (stderr, "chaplygin: %s: no [sweep] section\n", name);
-      return EXIT_USAGE;
+      fprintf (stderr, "chaplygin: %s: no [sweep] section\n",
+               chaplygin_scene_name (sc));
+      rc = EXIT_USAGE;
     }
-  if (args.print_scene)
-    return cli_print_scene (&sc);
-  rc = sweep_check (&sc, name, args.shard, args.nshards);
-  if (rc != EXIT_OK)
-    return rc;
-
-#ifdef _OPENMP
-  if (args.threads > 0)
-    omp_set_num_threads (args.threads);
-#endif
-
-  output out;
-  rc = output_open (&out, args.output, args.scene_path);
-  if (rc != EXIT_OK)
-    return rc;
-  rc = sweep_run (&sc, name, args.shard, args.nshards,
-                  args.no_provenance ? NULL : cli_command (), out.stream,
-                  out.name);
-  if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
-    rc = EXIT_OUTPUT;
+  if (rc == EXIT_OK)
+    rc = args.print_scene ? cli_print_scene (sc) : write_sweep (sc, &args);
+  chaplygin_scene_free (sc);
   return rc;
 }

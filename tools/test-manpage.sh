@@ -1,7 +1,8 @@
 #!/bin/sh
 # test-manpage.sh -- TAP: the program's reference (tools/chaplygin.1.in, and
 # the manual's chapter generated from it) covers what the program does:
-#  1. every scene key of the parser (tools/scene.c) is a tag of SCENE FILES;
+#  1. every scene key of the scene engine (the key table of
+#     lib/scene/scene.c) is a tag of SCENE FILES;
 #  2. every CSV column the program writes (runs of every model with every
 #     output, dense and per collision, the three sweeps, eq) is named in
 #     OUTPUT or COMMANDS;
@@ -29,7 +30,7 @@ section () {
 }
 
 # 1: scene keys
-keys=$(grep -o '{ SEC_[A-Z]*, "[A-Za-z0-9_]*" }' "$top_srcdir/tools/scene.c" | sed 's/.*"\(.*\)".*/\1/' | sort -u)
+keys=$(grep -o '\[K_[A-Z0-9_]*\] = { SEC_[A-Z]*, "[A-Za-z0-9_]*"' "$top_srcdir/lib/scene/scene.c" | sed 's/.*"\(.*\)".*/\1/' | sort -u)
 tags=$(section "SCENE FILES" | awk '/^\.TP/ { getline; print }' \
   | sed -e 's/^\.BR* //' -e 's/"//g' -e 's/\\fR//g; s/\\fB//g' | tr ', ' '\n\n')
 missing=""
@@ -37,7 +38,7 @@ for k in $keys; do
   echo "$tags" | grep -qx "$k" || missing="$missing $k"
 done
 ok=1; test -n "$keys" && test -z "$missing" && ok=0
-result "$ok" "every scene key of tools/scene.c is documented${missing:+ (missing:$missing)}"
+result "$ok" "every scene key of lib/scene/scene.c is documented${missing:+ (missing:$missing)}"
 
 # 2: CSV columns of every kind of output
 cat > "$tmp/d.ini" <<'EOF'

@@ -13,19 +13,22 @@
    and keep_all 0 the discrete orbit is chaplygin_discrete_step_eh_n (bit
    for bit the same as n steps).  Returns the number of failed orbits.
 
-   chp_py_scene_run: `chaplygin run' of tools/chaplygin.c, the CSV into
-   memory.  The scene is the file PATH (text == NULL) or the LEN bytes at
-   TEXT (called PATH in messages).  *csv receives the CSV (malloc'd,
-   *csv_len bytes, NUL-terminated), *err the messages that the program would
-   print on stderr (malloc'd, NUL-terminated); free both with chp_py_free.
-   Returns the program's exit status: 0 success, 1 a library failure during
-   the run (the rows before it are in *csv), 2 a scene that does not parse
-   or that the model rejects; -1 if memory ran out. */
+   chp_py_scene_run: `chaplygin run' of a scene through the scene engine
+   (chaplygin-scene.h): the scene file PATH, or (PATH NULL) the N triples
+   SECTION, KEY, VALUE (called NAME in messages); COMPARE: the smooth
+   companion; POLL (may be NULL), called now and then, stops the run
+   (ESTOPPED) where it returns nonzero.  *table receives the rows delivered
+   (also on failure: the rows before it), column by column; free it with
+   chp_py_table_free.  Returns the engine's status (REP has the report).
+   chp_py_table_*: its columns (name, kind), rows, and column J's arrays:
+   x (REAL) or n (INTEGER, STATUS), e (NULL while every e is 0: a real is
+   x 2^e) and missing. */
 #ifndef CHP_PYTHON_H
 #define CHP_PYTHON_H
 
 #include <stddef.h>
 #include "chaplygin.h"
+#include "chaplygin-scene.h"
 
 size_t chp_py_discrete_orbit (const chaplygin_discrete *sys, size_t m,
                               const void *init, ptrdiff_t init_stride,
@@ -42,9 +45,19 @@ size_t chp_py_massless_orbit (double L0, size_t m, const void *init,
                               chaplygin_discrete_event *ev, int *status,
                               unsigned long *done);
 
-int chp_py_scene_run (const char *path, const char *text, size_t len,
-                      int compare, char **csv, size_t *csv_len, char **err);
+typedef struct chp_py_table chp_py_table;
 
-void chp_py_free (void *p);
+int chp_py_scene_run (const char *path, size_t n, const char *const *section,
+                      const char *const *key, const char *const *value,
+                      const char *name, int compare, int (*poll) (void),
+                      chp_py_table **table, chaplygin_scene_report *rep);
+void chp_py_table_free (chp_py_table *t);
+size_t chp_py_table_columns (const chp_py_table *t);
+size_t chp_py_table_rows (const chp_py_table *t);
+const char *chp_py_table_name (const chp_py_table *t, size_t j);
+int chp_py_table_kind (const chp_py_table *t, size_t j);
+void chp_py_table_data (const chp_py_table *t, size_t j, double **x,
+                        long long **n, int **e, unsigned char **missing);
+
 
 #endif

@@ -1,4 +1,4 @@
-/* test-number.c -- tools/number.c: the numbers a user writes.
+/* test-number.c -- lib/scene/number.c: the numbers a user writes.
 
    References come from other routes than the one under test: rationals
    against hexadecimal constants written out by hand, or against glibc's
@@ -14,15 +14,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "number.h"
+#include "chaplygin-scene.h"
 
 /* TEXT must read as exactly WANT (same bits, so -0 differs from +0). */
 static void
 real_is (const char *text, double want)
 {
   double x = 12345.678;
-  int s = number_real (text, &x);
-  ck_assert_msg (s == NUMBER_OK, "'%s': status %d", text, s);
+  int s = chaplygin_number_real (text, &x);
+  ck_assert_msg (s == CHAPLYGIN_NUMBER_OK, "'%s': status %d", text, s);
   ck_assert_msg (memcmp (&x, &want, sizeof x) == 0,
                  "'%s' read as %a, expected %a", text, x, want);
 }
@@ -32,7 +32,7 @@ static void
 real_fails (const char *text, int status)
 {
   double x = 12345.678;
-  int s = number_real (text, &x);
+  int s = chaplygin_number_real (text, &x);
   ck_assert_msg (s == status, "'%s': status %d, expected %d", text, s,
                  status);
   ck_assert_msg (x == 12345.678, "'%s': output written on failure", text);
@@ -42,8 +42,8 @@ static void
 integer_is (const char *text, long lo, long hi, long want)
 {
   long n = -7;
-  int s = number_integer (text, lo, hi, &n);
-  ck_assert_msg (s == NUMBER_OK && n == want, "'%s': status %d, %ld", text,
+  int s = chaplygin_number_integer (text, lo, hi, &n);
+  ck_assert_msg (s == CHAPLYGIN_NUMBER_OK && n == want, "'%s': status %d, %ld", text,
                  s, n);
 }
 
@@ -51,7 +51,7 @@ static void
 integer_fails (const char *text, long lo, long hi, int status)
 {
   long n = -7;
-  int s = number_integer (text, lo, hi, &n);
+  int s = chaplygin_number_integer (text, lo, hi, &n);
   ck_assert_msg (s == status && n == -7, "'%s': status %d (expected %d), "
                  "%ld", text, s, status, n);
 }
@@ -83,9 +83,9 @@ START_TEST (constants)
   real_is ("1e-400", 0.0);
   real_is ("4.9406564584124654e-324", 0x1p-1074);
   real_is ("1.7976931348623157e308", DBL_MAX);
-  real_fails ("1e309", NUMBER_RANGE);
-  real_fails ("-1e999", NUMBER_RANGE);
-  real_fails ("0x1p1024", NUMBER_RANGE);
+  real_fails ("1e309", CHAPLYGIN_NUMBER_RANGE);
+  real_fails ("-1e999", CHAPLYGIN_NUMBER_RANGE);
+  real_fails ("0x1p1024", CHAPLYGIN_NUMBER_RANGE);
 }
 END_TEST
 
@@ -99,9 +99,9 @@ START_TEST (not_numbers)
   };
   size_t i;
   for (i = 0; i < sizeof bad / sizeof *bad; i++)
-    real_fails (bad[i], NUMBER_SYNTAX);
-  real_fails ("1/0", NUMBER_ZERO_DIV);
-  real_fails ("-7/000", NUMBER_ZERO_DIV);
+    real_fails (bad[i], CHAPLYGIN_NUMBER_SYNTAX);
+  real_fails ("1/0", CHAPLYGIN_NUMBER_ZERO_DIV);
+  real_fails ("-7/000", CHAPLYGIN_NUMBER_ZERO_DIV);
 }
 END_TEST
 
@@ -173,9 +173,9 @@ START_TEST (rationals)
   text = malloc (strlen (p) + 4);
   ck_assert_ptr_nonnull (text);
   sprintf (text, "%s/1", p);
-  real_fails (text, NUMBER_RANGE);
+  real_fails (text, CHAPLYGIN_NUMBER_RANGE);
   sprintf (text, "-%s/7", p);
-  real_fails (text, NUMBER_RANGE);
+  real_fails (text, CHAPLYGIN_NUMBER_RANGE);
   free (text);
   free (p);
   /* DBL_MAX exactly; DBL_MAX + ulp/2 - 1, which rounds to it; and
@@ -197,7 +197,7 @@ START_TEST (rationals)
               "946555547851940402630657488671505820681908902000708383676273"
               "854845817711531764475730270069855571366959622842914819860834"
               "936475292719074168444365510704342711559699508093042880177904"
-              "174497792/1", NUMBER_RANGE);
+              "174497792/1", CHAPLYGIN_NUMBER_RANGE);
 }
 END_TEST
 
@@ -210,40 +210,40 @@ START_TEST (integers)
   integer_is ("-1", -1, 1, -1);
   integer_is ("+1", -1, 1, 1);
   integer_is ("1e9", 0, 1000000000, 1000000000);
-  integer_fails ("1.5", 0, 10, NUMBER_NOT_INTEGER);
-  integer_fails ("1/3", 0, 10, NUMBER_NOT_INTEGER);
-  integer_fails ("1e-3", 0, 10, NUMBER_NOT_INTEGER);
-  integer_fails ("11", 0, 10, NUMBER_RANGE);
-  integer_fails ("-1", 0, 10, NUMBER_RANGE);
-  integer_fails ("1e400", 0, 10, NUMBER_RANGE);
-  integer_fails ("abc", 0, 10, NUMBER_SYNTAX);
+  integer_fails ("1.5", 0, 10, CHAPLYGIN_NUMBER_NOT_INTEGER);
+  integer_fails ("1/3", 0, 10, CHAPLYGIN_NUMBER_NOT_INTEGER);
+  integer_fails ("1e-3", 0, 10, CHAPLYGIN_NUMBER_NOT_INTEGER);
+  integer_fails ("11", 0, 10, CHAPLYGIN_NUMBER_RANGE);
+  integer_fails ("-1", 0, 10, CHAPLYGIN_NUMBER_RANGE);
+  integer_fails ("1e400", 0, 10, CHAPLYGIN_NUMBER_RANGE);
+  integer_fails ("abc", 0, 10, CHAPLYGIN_NUMBER_SYNTAX);
   /* The exact value decides, not its rounding: each of these rounds to an
      integer double. */
-  integer_fails ("1000.0000000000000001", 0, 10000, NUMBER_NOT_INTEGER);
-  integer_fails ("1e-400", 0, 10, NUMBER_NOT_INTEGER);
-  integer_fails ("0x1.00000000000000001p10", 0, 10000, NUMBER_NOT_INTEGER);
+  integer_fails ("1000.0000000000000001", 0, 10000, CHAPLYGIN_NUMBER_NOT_INTEGER);
+  integer_fails ("1e-400", 0, 10, CHAPLYGIN_NUMBER_NOT_INTEGER);
+  integer_fails ("0x1.00000000000000001p10", 0, 10000, CHAPLYGIN_NUMBER_NOT_INTEGER);
   integer_fails ("10000000000000000001/10000000000000000000", 0, 10,
-                 NUMBER_NOT_INTEGER);
+                 CHAPLYGIN_NUMBER_NOT_INTEGER);
   integer_is ("1000.000000000000000000", 0, 10000, 1000);
   integer_is ("0x3e8.000p0", 0, 10000, 1000);
   integer_is ("10000000000000000000/10000000000000000", 0, 10000, 1000);
   integer_is ("-0", -1, 1, 0);
   /* 2^53 + 1 reads as 2^53: integers from 2^53 on are refused. */
-  integer_fails ("9007199254740993", 0, LONG_MAX, NUMBER_RANGE);
-  integer_fails ("9007199254740992", 0, LONG_MAX, NUMBER_RANGE);
+  integer_fails ("9007199254740993", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
+  integer_fails ("9007199254740992", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
   integer_is ("9007199254740991", 0, LONG_MAX, 9007199254740991L);
 }
 END_TEST
 
 START_TEST (problems)
 {
-  ck_assert_str_eq (number_problem (NUMBER_SYNTAX),
+  ck_assert_str_eq (chaplygin_number_problem (CHAPLYGIN_NUMBER_SYNTAX),
                     "is not a number (a decimal or hex float, or p/q)");
-  ck_assert_str_eq (number_problem (NUMBER_RANGE), "is out of range");
-  ck_assert_str_eq (number_problem (NUMBER_ZERO_DIV), "divides by zero");
-  ck_assert_str_eq (number_problem (NUMBER_NOT_INTEGER), "is not an integer");
-  ck_assert_str_eq (number_problem (NUMBER_OK), "is a number");
-  ck_assert_str_eq (number_problem (99), "is not a number");
+  ck_assert_str_eq (chaplygin_number_problem (CHAPLYGIN_NUMBER_RANGE), "is out of range");
+  ck_assert_str_eq (chaplygin_number_problem (CHAPLYGIN_NUMBER_ZERO_DIV), "divides by zero");
+  ck_assert_str_eq (chaplygin_number_problem (CHAPLYGIN_NUMBER_NOT_INTEGER), "is not an integer");
+  ck_assert_str_eq (chaplygin_number_problem (CHAPLYGIN_NUMBER_OK), "is a number");
+  ck_assert_str_eq (chaplygin_number_problem (99), "is not a number");
 }
 END_TEST
 
@@ -254,8 +254,8 @@ END_TEST
 static void
 format_is (double x, long e, const char *want)
 {
-  char buf[NUMBER_TEXT_MAX];
-  ck_assert_int_eq (number_format (buf, sizeof buf, x, e), 0);
+  char buf[CHAPLYGIN_NUMBER_TEXT_MAX];
+  ck_assert_int_eq (chaplygin_number_format (buf, sizeof buf, x, e), 0);
   ck_assert_str_eq (buf, want);
 }
 
@@ -286,10 +286,10 @@ START_TEST (formats)
         format_is (x[i], es[j], want);
       }
   char small[8];
-  ck_assert_int_eq (number_format (small, sizeof small, 1.0, 0), -1);
-  char buf[NUMBER_TEXT_MAX];
-  ck_assert_int_eq (number_format (buf, sizeof buf, INFINITY, 0), -1);
-  ck_assert_int_eq (number_format (buf, sizeof buf, NAN, 0), -1);
+  ck_assert_int_eq (chaplygin_number_format (small, sizeof small, 1.0, 0), -1);
+  char buf[CHAPLYGIN_NUMBER_TEXT_MAX];
+  ck_assert_int_eq (chaplygin_number_format (buf, sizeof buf, INFINITY, 0), -1);
+  ck_assert_int_eq (chaplygin_number_format (buf, sizeof buf, NAN, 0), -1);
 }
 END_TEST
 

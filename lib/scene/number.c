@@ -1,4 +1,5 @@
-/* number.c -- reading the numbers a user writes (number.h).
+/* number.c -- the numbers a user writes (chaplygin-scene.h, "Numbers"),
+   read and formatted in the C locale whatever the caller's.
 
    Decimal and hexadecimal constants go to strtod, which rounds correctly
    (glibc); an exact rational goes to GMP and MPFR, since no double
@@ -11,19 +12,21 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <gmp.h>
 #include <mpfr.h>
 
-#include "number.h"
+#include "chaplygin-scene.h"
+#include "engine.h"
 
 /* Integers are read through doubles, which hold every integer below 2^53
    exactly; from 2^53 on, 2^53 + 1 would read as 2^53: refused. */
 #define EXACT_INTEGER_LIMIT 9007199254740992.0
 
-/* The characters a strtod constant of number.h may hold: decimal and hex
+/* The characters a strtod constant may hold: decimal and hex
    digits (e, E among them), the hex prefix and exponent letters, signs and
    the point.  Excluding every other letter excludes "nan" and "inf". */
 static const char strtod_chars[] = "0123456789abcdefABCDEFxXpP+-.";
@@ -50,13 +53,13 @@ read_constant (const char *text, double *x, int *exact)
   double v;
 
   if (text[strspn (text, strtod_chars)] != '\0')
-    return NUMBER_SYNTAX;
+    return CHAPLYGIN_NUMBER_SYNTAX;
   errno = 0;
   v = strtod (text, &end);
   if (end == text || *end != '\0')
-    return NUMBER_SYNTAX;
+    return CHAPLYGIN_NUMBER_SYNTAX;
   if (!isfinite (v))
-    return NUMBER_RANGE;
+    return CHAPLYGIN_NUMBER_RANGE;
   if (exact)
     {
       mpfr_t f;
@@ -67,7 +70,7 @@ read_constant (const char *text, double *x, int *exact)
       mpfr_clear (f);
     }
   *x = v;
-  return NUMBER_OK;
+  return CHAPLYGIN_NUMBER_OK;
 }
 
 /* P/Q rounded to the nearest double; P is TEXT up to SLASH; *EXACT (may
@@ -77,7 +80,7 @@ read_rational (const char *text, const char *slash, double *x, int *exact)
 {
   const char *p = text, *q = slash + 1;
   size_t np = (size_t) (slash - text);
-  int negative = 0, status = NUMBER_OK, inexact;
+  int negative = 0, status = CHAPLYGIN_NUMBER_OK, inexact;
   char *num;
   mpq_t r;
   mpfr_t f;
@@ -90,13 +93,13 @@ read_rational (const char *text, const char *slash, double *x, int *exact)
       np--;
     }
   if (!is_digits (p, np) || !is_digits (q, strlen (q)))
-    return NUMBER_SYNTAX;
+    return CHAPLYGIN_NUMBER_SYNTAX;
   if (q[strspn (q, "0")] == '\0')
-    return NUMBER_ZERO_DIV;
+    return CHAPLYGIN_NUMBER_ZERO_DIV;
 
   num = malloc (np + 1);
   if (!num)
-    return NUMBER_RANGE;
+    return CHAPLYGIN_NUMBER_RANGE;
   memcpy (num, p, np);
   num[np] = '\0';
   mpq_init (r);
@@ -116,7 +119,7 @@ read_rational (const char *text, const char *slash, double *x, int *exact)
   inexact = mpfr_set_q (f, r, MPFR_RNDN);
   inexact = mpfr_subnormalize (f, inexact, MPFR_RNDN);
   if (mpfr_inf_p (f))
-    status = NUMBER_RANGE;
+    status = CHAPLYGIN_NUMBER_RANGE;
   else
     {
       /* -0/5 is -0, as strtod reads "-0". */
@@ -143,46 +146,59 @@ read_real (const char *text, double *x, int *exact)
 }
 
 int
-number_real (const char *text, double *x)
+chaplygin_number_real (const char *text, double *x)
 {
-  return read_real (text, x, NULL);
+  c_locale l;
+  if (!text || !x)
+    return CHAPLYGIN_NUMBER_SYNTAX;
+  if (c_locale_enter (&l) != 0)
+    return CHAPLYGIN_NUMBER_RANGE;
+  int status = read_real (text, x, NULL);
+  c_locale_leave (&l);
+  return status;
 }
 
 int
-number_integer (const char *text, long lo, long hi, long *x)
+chaplygin_number_integer (const char *text, long lo, long hi, long *x)
 {
   double v;
   int exact = 0;
-  int status = read_real (text, &v, &exact);
+  c_locale l;
 
-  if (status != NUMBER_OK)
+  if (!text || !x)
+    return CHAPLYGIN_NUMBER_SYNTAX;
+  if (c_locale_enter (&l) != 0)
+    return CHAPLYGIN_NUMBER_RANGE;
+  int status = read_real (text, &v, &exact);
+  c_locale_leave (&l);
+  if (status != CHAPLYGIN_NUMBER_OK)
     return status;
   if (v != floor (v))
-    return NUMBER_NOT_INTEGER;
+    return CHAPLYGIN_NUMBER_NOT_INTEGER;
   if (fabs (v) >= EXACT_INTEGER_LIMIT || v < (double) lo || v > (double) hi)
-    return NUMBER_RANGE;
+    return CHAPLYGIN_NUMBER_RANGE;
   /* "1000.0000000000000001" and "1e-400" round to integers; they are not
      integers */
   if (!exact)
-    return NUMBER_NOT_INTEGER;
+    return CHAPLYGIN_NUMBER_NOT_INTEGER;
   *x = (long) v;
-  return NUMBER_OK;
+  return CHAPLYGIN_NUMBER_OK;
 }
 
 const char *
-number_problem (int status)
+chaplygin_number_problem (int status)
 {
   switch (status)
     {
-    case NUMBER_OK:
+    case CHAPLYGIN_NUMBER_OK:
       return "is a number";
-    case NUMBER_SYNTAX:
+    case CHAPLYGIN_NUMBER_SYNTAX:
       return "is not a number (a decimal or hex float, or p/q)";
-    case NUMBER_RANGE:
+    case CHAPLYGIN_NUMBER_RANGE:
       return "is out of range";
-    case NUMBER_ZERO_DIV:
+    case CHAPLYGIN_NUMBER_ZERO_DIV:
       return "divides by zero";
-    case NUMBER_NOT_INTEGER:
+    case CHAPLYGIN_NUMBER_NOT_INTEGER:
       return "is not an integer";
     default:
       return "is not a number";
@@ -190,14 +206,16 @@ number_problem (int status)
 }
 
 int
-number_format (char *buf, size_t size, double x, long e)
+chaplygin_number_format (char *buf, size_t size, double x, long e)
 {
   /* the widest exponent range: x 2^e is exact for any e of a double's
      scaling (|e| <= 2^30); the caller's range is restored */
   const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
   mpfr_t t;
   int n = -1;
-  if (!isfinite (x) || size < NUMBER_TEXT_MAX)
+  c_locale l;
+  if (!buf || !isfinite (x) || size < CHAPLYGIN_NUMBER_TEXT_MAX
+      || c_locale_enter (&l) != 0)
     return -1;
   mpfr_set_emin (mpfr_get_emin_min ());
   mpfr_set_emax (mpfr_get_emax_max ());
@@ -208,5 +226,98 @@ number_format (char *buf, size_t size, double x, long e)
   mpfr_clear (t);
   mpfr_set_emin (emin);
   mpfr_set_emax (emax);
+  c_locale_leave (&l);
   return n > 0 && (size_t) n < size ? 0 : -1;
+}
+
+const char *
+number_shortest (double x, char *buf, size_t size)
+{
+  c_locale l;
+  int in_c = c_locale_enter (&l) == 0;
+  for (int digits = 15; digits <= 17; digits++)
+    {
+      snprintf (buf, size, "%.*g", digits, x);
+      if (strtod (buf, NULL) == x)
+        break;
+    }
+  if (in_c)
+    c_locale_leave (&l);
+  return buf;
+}
+
+/* The name of the library's STATUS (the suffix of its name in
+   chaplygin.h: SUCCESS, ERANGE, ...), or NULL if unknown. */
+static const char *
+status_name (long long status)
+{
+  static const char *const names[] = { "SUCCESS", "EINVAL", "EDOM",
+                                       "ESTATE", "ESPIN", "ERANGE",
+                                       "ENOCONV", "ENOMEM" };
+  if (status >= 0 && (size_t) status < sizeof names / sizeof names[0])
+    return names[status];
+  return NULL;
+}
+
+/* chaplygin_cell_text, in the caller's locale (the C locale). */
+static int
+cell_text (char *buf, size_t size, const chaplygin_cell *cell, int kind)
+{
+  int n;
+  const char *name;
+  if (cell->missing)
+    n = snprintf (buf, size, "%s", "");
+  else if (kind == CHAPLYGIN_COLUMN_INTEGER)
+    n = snprintf (buf, size, "%lld", cell->n);
+  else if (kind == CHAPLYGIN_COLUMN_STATUS)
+    n = (name = status_name (cell->n)) ? snprintf (buf, size, "%s", name)
+      : snprintf (buf, size, "%lld", cell->n);
+  else if (cell->e == 0 || !isfinite (cell->x))
+    n = snprintf (buf, size, "%.17g", cell->x);
+  else
+    n = chaplygin_number_format (buf, size, cell->x, cell->e) == 0
+      ? (int) strlen (buf) : -1;
+  return n >= 0 && (size_t) n < size ? n : -1;
+}
+
+int
+chaplygin_cell_text (char *buf, size_t size, const chaplygin_cell *cell,
+                     int kind)
+{
+  c_locale l;
+  if (!buf || !cell || size < CHAPLYGIN_NUMBER_TEXT_MAX
+      || c_locale_enter (&l) != 0)
+    return -1;
+  int n = cell_text (buf, size, cell, kind);
+  c_locale_leave (&l);
+  return n;
+}
+
+int
+chaplygin_row_text (char *buf, size_t size, size_t ncols,
+                    const chaplygin_column *columns,
+                    const chaplygin_cell *cells)
+{
+  char one[CHAPLYGIN_NUMBER_TEXT_MAX];
+  size_t len = 0;
+  c_locale l;
+  if (!buf || size == 0 || (ncols > 0 && (!columns || !cells))
+      || c_locale_enter (&l) != 0)
+    return -1;
+  buf[0] = '\0';
+  for (size_t i = 0; i < ncols; i++)
+    {
+      int n = cell_text (one, sizeof one, &cells[i], columns[i].kind);
+      if (n < 0 || len + (size_t) n + (i > 0) >= size)
+        {
+          c_locale_leave (&l);
+          return -1;
+        }
+      if (i > 0)
+        buf[len++] = ',';
+      memcpy (buf + len, one, (size_t) n + 1);
+      len += (size_t) n;
+    }
+  c_locale_leave (&l);
+  return (int) len;
 }

@@ -1,0 +1,475 @@
+/* grid.c -- the parameter sweeps of the paper's Figures 2(a), 2(b) and 3
+   (a scene's [sweep]), computed in parallel with OpenMP and split across
+   processes or machines by shards.
+
+   Every point of a sweep has a global index k, and its row depends on k
+   alone, so the rows are the same for any number of threads, and the
+   shards' rows concatenated in shard order are the rows of the unsharded
+   sweep.  Shard s of N holds the k in [floor(s T/N), floor((s+1) T/N)),
+   T the number of points.  The rows are computed a block at a time by
+   all threads and delivered in order from the calling thread (OpenMP's
+   master) while the next block is computed.
+
+   Grid values: v_j = lo + (hi - lo) (j/(n - 1)), j = 0 .. n-1, with
+   v_0 = lo and v_(n-1) = hi exactly (n = 1: lo alone); this is the grid of
+   chaplygin_discrete_basins.  A cell is missing where a value was not
+   computed.
+
+   Columns by [sweep] kind:
+
+   sigma4 (Fig. 2(a)), k = i nx + j for y = the i-th value of the [sweep]
+   y list and x = x_j (x = L0/Delta, y = (1/Delta)^2):
+     k,y,x,sigma4,status
+       sigma4  (3.10) for the direction [sweep] dir; missing unless
+               status is SUCCESS
+       status  the library's status at this point (ERANGE where sigma4
+               is infinite, at y = 0 with x = -1 for dir +1 or x = 0 for
+               dir -1)
+
+   stability (Fig. 2(b)), k = i nx + j for y = y_i, x = x_j:
+     k,x,y,region,forward,backward
+       region    forward + 2 backward (0..3)
+       forward   1 if the straight-line motion V* > 0 is stable by (3.11)
+       backward  1 if V* < 0 is stable by (3.12)
+     (the three are missing if the library rejects the point; that cannot
+     happen for a grid of finite x and y >= 0)
+
+   basins (Fig. 3), k = j for the initial V+ = x_j, the post-collision
+   state {D+, V+, theta+ = 0, Omega+ = [initial] Omega} of the skate with
+   [parameters] L0, Delta (D+ = 0 for V+ > 0, Delta for V+ < 0), iterated
+   at most [run] collisions times by chaplygin_discrete_fate_phase:
+     k,V0,fate,collisions,reversals,E_final,V_final,status
+       fate        -1 backward, 0 spin, 1 forward, 2 undecided
+                   (chaplygin_fate_kind)
+       collisions  collisions iterated until the fate is certain
+       reversals   velocity reversals on the way
+       E_final     final energy (B.10) (undecided: E after the collisions)
+       V_final     final velocity (spin: 0; undecided: V+ after them)
+       status      the library's status at this point (the fate cells are
+                   missing unless SUCCESS).  A grid point V+ = 0 (not a
+                   state just after a collision) is not passed to the
+                   library: its status is ESTATE.
+
+   A shard with more points than [run] max_rows is refused before any row
+   (ELIMIT). */
+#include <config.h>
+
+#include <inttypes.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "chaplygin.h"
+#include "chaplygin-scene.h"
+#include "engine.h"
+#include "run.h"
+
+#define BLOCK_POINTS 32768          /* points computed per block (two
+                                       blocks in memory: 16 MB) */
+#define CHUNK_POINTS 64             /* OpenMP dynamic chunk */
+#define ROW_CELLS 8                 /* cells of the widest row (basins) */
+
+/* A sweep ready to compute: the scene and what is derived from it. */
+typedef struct
+{
+  const scene *sc;
+  uint64_t nx;                /* x grid points */
+  uint64_t total;             /* T: points in the whole sweep */
+  uint64_t first, count;      /* the shard's points */
+  chaplygin_discrete sys;     /* basins: the skate */
+} sweep_plan;
+
+/* ------------------------------------------------------------------ */
+/* The points                                                          */
+/* ------------------------------------------------------------------ */
+
+/* The I-th of N points from LO to HI, both ends exact (N = 1: LO); the
+   grid of chaplygin_discrete_basins, with a fallback for HI - LO
+   overflowing. */
+static double
+grid_value (double lo, double hi, uint64_t n, uint64_t i)
+{
+  if (i == 0)
+    return lo;
+  if (i == n - 1)
+    return hi;
+  double t = (double) i / (double) (n - 1);
+  double width = hi - lo;
+  if (isfinite (width))
+    return lo + width * t;
+  return lo * (1.0 - t) + hi * t;
+}
+
+/* floor(S T / N) for S <= N, exactly and without overflow:
+   T = q N + r gives S q + floor(S r / N), S r < N^2 <= 1e12. */
+static uint64_t
+shard_start (uint64_t total, uint64_t s, uint64_t n)
+{
+  uint64_t q = total / n, r = total % n;
+  return s * q + s * r / n;
+}
+
+/* Cells of a row. */
+static void
+put_int (chaplygin_cell *c, long long n)
+{
+  memset (c, 0, sizeof *c);
+  c->n = n;
+}
+
+static void
+put_real (chaplygin_cell *c, double x)
+{
+  memset (c, 0, sizeof *c);
+  c->x = x;
+}
+
+static void
+put_missing (chaplygin_cell *c)
+{
+  memset (c, 0, sizeof *c);
+  c->missing = 1;
+}
+
+static void
+put_scaled (chaplygin_cell *c, int m, chaplygin_scale_kind kind, double x)
+{
+  memset (c, 0, sizeof *c);
+  cell_scaled (c, m, kind, x);
+}
+
+/* The row of sigma4 point K into ROW. */
+static void
+sigma4_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+{
+  const scene *sc = plan->sc;
+  double y = sc->y[k / plan->nx];
+  double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
+  double sigma4 = 0.0;
+  int status = chaplygin_sweep_sigma4 (sc->dir, y, 1, &x, &sigma4, NULL);
+  put_int (&row[0], (long long) k);
+  put_real (&row[1], y);
+  put_real (&row[2], x);
+  if (status == CHAPLYGIN_SUCCESS)
+    put_real (&row[3], sigma4);
+  else
+    put_missing (&row[3]);
+  put_int (&row[4], status);
+}
+
+/* The row of stability point K into ROW. */
+static void
+stability_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+{
+  const scene *sc = plan->sc;
+  uint64_t ny = (uint64_t) sc->ny;
+  double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
+  double y = grid_value (sc->y_min, sc->y_max, ny, k / plan->nx);
+  unsigned char region = 0;
+  int status = chaplygin_sweep_stability (1, &x, 1, &y, &region);
+  put_int (&row[0], (long long) k);
+  put_real (&row[1], x);
+  put_real (&row[2], y);
+  for (int i = 3; i < 6; i++)
+    put_missing (&row[i]);
+  if (status == CHAPLYGIN_SUCCESS)
+    {
+      put_int (&row[3], region);
+      put_int (&row[4], region & 1);
+      put_int (&row[5], region >> 1 & 1);
+    }
+}
+
+/* The row of basins point K into ROW.  A tiny or huge V+, Omega+ (E or H
+   out of range) is run in the units of its velocity scaling, and E_final,
+   V_final are delivered in the physical ones, exactly (cell_scaled), as a
+   run delivers them. */
+static void
+basins_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+{
+  const scene *sc = plan->sc;
+  double V = grid_value (sc->x_min, sc->x_max, plan->nx, k);
+  int status = CHAPLYGIN_ESTATE, m = 0;
+  chaplygin_fate fate;
+  if (V != 0.0)
+    {
+      const double D = V > 0.0 ? 0.0 : plan->sys.Delta;
+      double qplus[4] = { D, 0.0, 0.0, 0.0 };
+      status = chaplygin_velocity_scaling (plan->sys.L0 + D, V, sc->Omega,
+                                           &m, &qplus[CHAPLYGIN_V],
+                                           &qplus[CHAPLYGIN_OMEGA]);
+      if (status == CHAPLYGIN_SUCCESS)
+        status = chaplygin_discrete_fate_phase (&plan->sys, qplus,
+                                                (unsigned long) sc->collisions,
+                                                NULL, 0, &fate);
+    }
+  put_int (&row[0], (long long) k);
+  put_real (&row[1], V);
+  for (int i = 2; i < 7; i++)
+    put_missing (&row[i]);
+  put_int (&row[7], status);
+  if (status != CHAPLYGIN_SUCCESS)
+    return;
+  put_int (&row[2], fate.kind);
+  put_int (&row[3], (long long) fate.collisions);
+  put_int (&row[4], (long long) fate.reversals);
+  put_scaled (&row[5], m, CHAPLYGIN_SCALE_ENERGY, fate.E_final);
+  put_scaled (&row[6], m, CHAPLYGIN_SCALE_SPEED, fate.V_final);
+}
+
+/* The row of point K into ROW. */
+static void
+point_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+{
+  switch (plan->sc->sweep)
+    {
+    case SWEEP_SIGMA4:
+      sigma4_row (plan, k, row);
+      break;
+    case SWEEP_STABILITY:
+      stability_row (plan, k, row);
+      break;
+    case SWEEP_BASINS:
+      basins_row (plan, k, row);
+      break;
+    case SWEEP_NONE:
+      break;
+    }
+}
+
+size_t
+grid_columns (const scene *sc, chaplygin_column *col)
+{
+  static const chaplygin_column sigma4[] = {
+    { "k", CHAPLYGIN_COLUMN_INTEGER }, { "y", CHAPLYGIN_COLUMN_REAL },
+    { "x", CHAPLYGIN_COLUMN_REAL }, { "sigma4", CHAPLYGIN_COLUMN_REAL },
+    { "status", CHAPLYGIN_COLUMN_STATUS }
+  };
+  static const chaplygin_column stability[] = {
+    { "k", CHAPLYGIN_COLUMN_INTEGER }, { "x", CHAPLYGIN_COLUMN_REAL },
+    { "y", CHAPLYGIN_COLUMN_REAL }, { "region", CHAPLYGIN_COLUMN_INTEGER },
+    { "forward", CHAPLYGIN_COLUMN_INTEGER },
+    { "backward", CHAPLYGIN_COLUMN_INTEGER }
+  };
+  static const chaplygin_column basins[] = {
+    { "k", CHAPLYGIN_COLUMN_INTEGER }, { "V0", CHAPLYGIN_COLUMN_REAL },
+    { "fate", CHAPLYGIN_COLUMN_INTEGER },
+    { "collisions", CHAPLYGIN_COLUMN_INTEGER },
+    { "reversals", CHAPLYGIN_COLUMN_INTEGER },
+    { "E_final", CHAPLYGIN_COLUMN_REAL }, { "V_final", CHAPLYGIN_COLUMN_REAL },
+    { "status", CHAPLYGIN_COLUMN_STATUS }
+  };
+  const chaplygin_column *c = sc->sweep == SWEEP_SIGMA4 ? sigma4
+    : sc->sweep == SWEEP_STABILITY ? stability : basins;
+  size_t n = sc->sweep == SWEEP_SIGMA4 ? 5
+    : sc->sweep == SWEEP_STABILITY ? 6 : 8;
+  memcpy (col, c, n * sizeof *c);
+  return n;
+}
+
+/* ------------------------------------------------------------------ */
+/* Checking the sweep                                                  */
+/* ------------------------------------------------------------------ */
+
+/* PLAN of the shard OPT names of the sweep of SC (valid).  Returns OK, or
+   EMODEL where the library rejects the skate of a basins sweep, or ELIMIT
+   where the shard has more points than max_rows. */
+static int
+plan_sweep (const scene *sc, const chaplygin_run_options *opt,
+            sweep_plan *plan, chaplygin_scene_report *rep)
+{
+  memset (plan, 0, sizeof *plan);
+  plan->sc = sc;
+  plan->nx = (uint64_t) sc->nx;
+  plan->total = plan->nx * (sc->sweep == SWEEP_SIGMA4 ? (uint64_t) sc->n_y
+                            : sc->sweep == SWEEP_STABILITY
+                            ? (uint64_t) sc->ny : 1);
+  if (sc->sweep == SWEEP_BASINS)
+    {
+      int status = chaplygin_discrete_init (&plan->sys, sc->L0, sc->Delta);
+      if (status != CHAPLYGIN_SUCCESS)
+        {
+          if (rep)
+            rep->library_status = status;
+          return report_fail (rep, CHAPLYGIN_SCENE_EMODEL, "%s: [parameters] "
+                              "L0 = %.17g, Delta = %.17g: %s", sc->name,
+                              sc->L0, sc->Delta, chaplygin_strerror (status));
+        }
+    }
+  uint64_t s = (uint64_t) opt->shard, n = (uint64_t) opt->nshards;
+  plan->first = shard_start (plan->total, s, n);
+  plan->count = shard_start (plan->total, s + 1, n) - plan->first;
+  chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
+  return report_limit (rep, sc->name, n > 1 ? "the shard" : "the sweep",
+                       (double) plan->count, (int) grid_columns (sc, col),
+                       sc->max_rows, "split it (--shard i/N) or raise the "
+                       "limit ([run] max_rows, or --max-rows)");
+}
+
+int
+grid_check (const scene *sc, const chaplygin_run_options *opt,
+            chaplygin_scene_report *rep)
+{
+  sweep_plan plan;
+  return plan_sweep (sc, opt, &plan, rep);
+}
+
+/* ------------------------------------------------------------------ */
+/* Computing and delivering                                            */
+/* ------------------------------------------------------------------ */
+
+/* The number of the calling OpenMP thread (0 without OpenMP). */
+static int
+thread_number (void)
+{
+#ifdef _OPENMP
+  return omp_get_thread_num ();
+#else
+  return 0;
+#endif
+}
+
+/* The flag that ends a sweep, read and set by any thread. */
+static int
+get_stop (int *stop)
+{
+  int v;
+#ifdef _OPENMP
+#pragma omp atomic read
+#endif
+  v = *stop;
+  return v;
+}
+
+static void
+set_stop (int *stop)
+{
+#ifdef _OPENMP
+#pragma omp atomic write
+#endif
+  *stop = 1;
+}
+
+/* Deliver the N rows of NCOLS cells at CELLS through S, in order: 0, or -1
+   where the caller asks to stop. */
+static int
+deliver (sink *s, const chaplygin_cell *cells, int n, size_t ncols)
+{
+  for (int i = 0; i < n; i++)
+    {
+      memcpy (s->row, cells + (size_t) i * ROW_CELLS,
+              ncols * sizeof *cells);
+      s->ncols = ncols;
+      if (sink_row (s, 0) != 0)
+        return -1;
+    }
+  return 0;
+}
+
+/* Compute the shard of PLAN block by block (all threads) and deliver its
+   rows through S (the master thread, while the next block is computed).
+   Returns OK, ESTOPPED or ENOMEM. */
+static int
+run_blocks (const sweep_plan *plan, sink *s, int threads)
+{
+  const uint64_t count = plan->count;
+  const uint64_t block = count < BLOCK_POINTS ? count : BLOCK_POINTS;
+  const uint64_t nblocks = block > 0 ? (count + block - 1) / block : 0;
+  chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
+  const size_t ncols = grid_columns (plan->sc, col);
+  chaplygin_cell *cells[2] = { NULL, NULL };
+  int nfill[2] = { 0, 0 };
+  int stop = 0;                 /* read and written atomically */
+  uint64_t done = 0;
+
+  for (int b = 0; b < 2 && block > 0; b++)
+    if (!(cells[b] = malloc ((size_t) block * ROW_CELLS * sizeof **cells)))
+      {
+        free (cells[0]);
+        return CHAPLYGIN_SCENE_ENOMEM;
+      }
+  for (uint64_t b = 0; b <= nblocks && !get_stop (&stop); b++)
+    {
+      /* compute block b while block b - 1 is delivered */
+      chaplygin_cell *fill = b < nblocks ? cells[b % 2] : NULL;
+      const int drain = b > 0 ? (int) ((b - 1) % 2) : -1;
+      const uint64_t base = plan->first + b * block;
+      const int n = fill ? (int) (count - b * block < block
+                                  ? count - b * block : block) : 0;
+      if (fill)
+        nfill[b % 2] = n;
+#ifdef _OPENMP
+#pragma omp parallel num_threads (threads > 0 ? threads : omp_get_max_threads ())
+#endif
+      {
+#ifdef _OPENMP
+#pragma omp master
+#endif
+        if (drain >= 0 && deliver (s, cells[drain], nfill[drain], ncols) != 0)
+          set_stop (&stop);
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, CHUNK_POINTS)
+#endif
+        for (int i = 0; i < n; i++)
+          {
+            if (get_stop (&stop))
+              continue;
+            point_row (plan, base + (uint64_t) i,
+                       fill + (size_t) i * ROW_CELLS);
+            uint64_t now;
+#ifdef _OPENMP
+#pragma omp atomic capture
+#endif
+            now = ++done;
+            if (thread_number () == 0 && now % CHUNK_POINTS == 0
+                && sink_progress (s, (double) now, (double) count) != 0)
+              set_stop (&stop);
+          }
+      }
+      if (!get_stop (&stop) && n > 0
+          && sink_progress (s, (double) (b * block + (uint64_t) n),
+                            (double) count) != 0)
+        set_stop (&stop);
+    }
+  (void) threads;
+  free (cells[0]);
+  free (cells[1]);
+  return get_stop (&stop) ? CHAPLYGIN_SCENE_ESTOPPED : CHAPLYGIN_SCENE_OK;
+}
+
+int
+grid_run (const scene *sc, const chaplygin_run_options *opt,
+          chaplygin_scene_report *rep)
+{
+  sweep_plan plan;
+  sink s;
+  int rc = plan_sweep (sc, opt, &plan, rep);
+  if (rc != CHAPLYGIN_SCENE_OK)
+    return rc;
+  memset (&s, 0, sizeof s);
+  s.opt = opt;
+  s.rep = rep;
+  s.max_rows = sc->max_rows;
+  if (sink_begin (&s) != 0)
+    return report_fail (rep, CHAPLYGIN_SCENE_ESTOPPED, "%s: stopped by the "
+                        "caller", sc->name);
+  rc = run_blocks (&plan, &s, opt->threads);
+  if (rc == CHAPLYGIN_SCENE_ENOMEM)
+    return report_fail (rep, rc, "out of memory");
+  if (rc != CHAPLYGIN_SCENE_OK)
+    return report_fail (rep, rc, "%s: stopped by the caller", sc->name);
+  if (plan.count > 0)
+    snprintf (rep->end, sizeof rep->end, "complete: %" PRIu64 " points, k = "
+              "%" PRIu64 " .. %" PRIu64 " of %" PRIu64, plan.count,
+              plan.first, plan.first + plan.count - 1, plan.total);
+  else
+    snprintf (rep->end, sizeof rep->end, "complete: 0 points of %" PRIu64,
+              plan.total);
+  return CHAPLYGIN_SCENE_OK;
+}

@@ -1,0 +1,168 @@
+/* csv.c -- a run of the scene engine as CSV (csv.h). */
+#include <config.h>
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "csv.h"
+#include "progress.h"
+#include "provenance.h"
+
+/* A row's text: at most CHAPLYGIN_COLUMNS_MAX numbers of
+   CHAPLYGIN_NUMBER_TEXT_MAX bytes. */
+#define ROW_TEXT (CHAPLYGIN_COLUMNS_MAX * CHAPLYGIN_NUMBER_TEXT_MAX)
+
+typedef struct
+{
+  FILE *out;
+  const chaplygin_scene *sc;
+  const chaplygin_run_options *run;
+  const csv_options *opt;
+  chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
+  size_t ncols;
+  int write_errno;              /* a write failed with this (EIO if 0) */
+  int write_failed;
+  progress bar;
+  int bar_started;
+} csv_sink;
+
+/* A write of S failed: remember errno, stop the run. */
+static int
+write_failed (csv_sink *s)
+{
+  if (!s->write_failed)
+    s->write_errno = errno ? errno : EIO;
+  s->write_failed = 1;
+  return 1;
+}
+
+/* The header line and the provenance lines. */
+static int
+csv_begin (void *user, const chaplygin_scene_report *rep)
+{
+  csv_sink *s = user;
+  errno = 0;
+  for (size_t i = 0; i < s->ncols; i++)
+    if (fputs (i ? "," : "", s->out) == EOF
+        || fputs (s->col[i].name, s->out) == EOF)
+      return write_failed (s);
+  if (fputc ('\n', s->out) == EOF)
+    return write_failed (s);
+  if (s->opt->command)
+    provenance_header (s->out, s->opt->command, s->sc, s->run->compare,
+                       rep->scaling);
+  return ferror (s->out) ? write_failed (s) : 0;
+}
+
+static int
+csv_row (void *user, size_t ncols, const chaplygin_cell *row)
+{
+  csv_sink *s = user;
+  char text[ROW_TEXT];
+  int n = chaplygin_row_text (text, sizeof text, ncols, s->col, row);
+  errno = 0;
+  if (n < 0)
+    {
+      errno = EOVERFLOW;
+      return write_failed (s);
+    }
+  text[n] = '\n';
+  if (fwrite (text, 1, (size_t) n + 1, s->out) != (size_t) n + 1)
+    return write_failed (s);
+  return 0;
+}
+
+static int
+csv_progress (void *user, double done, double total)
+{
+  csv_sink *s = user;
+  if (!s->opt->bar_label)
+    return 0;
+  if (!s->bar_started)
+    {
+      progress_init (&s->bar, stderr, s->opt->bar_label, total);
+      s->bar_started = 1;
+    }
+  progress_update (&s->bar, done);
+  return 0;
+}
+
+int
+csv_exit_status (int status)
+{
+  switch (status)
+    {
+    case CHAPLYGIN_SCENE_OK:
+      return 0;
+    case CHAPLYGIN_SCENE_EINVAL:
+    case CHAPLYGIN_SCENE_ESCENE:
+    case CHAPLYGIN_SCENE_EMODEL:
+    case CHAPLYGIN_SCENE_ELIMIT:
+      return 2;
+    default:
+      return 1;
+    }
+}
+
+/* The write error of S, said. */
+static int
+say_write_error (const csv_sink *s)
+{
+  if (s->opt->out_name)
+    fprintf (stderr, "chaplygin: error writing to %s: %s\n",
+             s->opt->out_name, strerror (s->write_errno));
+  else
+    fprintf (stderr, "chaplygin: error writing output: %s\n",
+             strerror (s->write_errno));
+  return 1;
+}
+
+int
+csv_run (const chaplygin_scene *sc, const chaplygin_run_options *run,
+         FILE *out, const csv_options *opt, chaplygin_scene_report *rep)
+{
+  static chaplygin_scene_report own;
+  chaplygin_run_options r = *run;
+  csv_sink s;
+  if (!rep)
+    rep = &own;
+  memset (&s, 0, sizeof s);
+  s.out = out;
+  s.sc = sc;
+  s.run = &r;
+  s.opt = opt;
+  if (chaplygin_scene_columns (sc, run, s.col, CHAPLYGIN_COLUMNS_MAX,
+                               &s.ncols) != CHAPLYGIN_SCENE_OK)
+    s.ncols = 0;
+  r.begin = csv_begin;
+  r.row = csv_row;
+  r.progress = csv_progress;
+  r.user = &s;
+  int status = chaplygin_scene_run (sc, &r, rep);
+  if (s.bar_started)
+    progress_finish (&s.bar);
+  if (s.write_failed)
+    return say_write_error (&s);
+  if (status != CHAPLYGIN_SCENE_OK && status != CHAPLYGIN_SCENE_ERUN)
+    {
+      fprintf (stderr, "chaplygin: %s\n", rep->message);
+      return csv_exit_status (status);
+    }
+  if (rep->early)
+    fprintf (stderr, "chaplygin: %s\n", rep->note);
+  if (opt->command && rep->end[0])
+    fprintf (out, "# end: %s\n", rep->end);
+  errno = 0;
+  if ((fflush (out) != 0 || ferror (out)) && status == CHAPLYGIN_SCENE_OK)
+    {
+      write_failed (&s);
+      return say_write_error (&s);
+    }
+  if (status == CHAPLYGIN_SCENE_ERUN)
+    {
+      fprintf (stderr, "chaplygin: %s\n", rep->message);
+      return 1;
+    }
+  return 0;
+}
