@@ -68,7 +68,11 @@ lib_libchaplygin_scene_core_la_SOURCES = \
 	lib/scene/number.c \
 	lib/scene/scene.c \
 	lib/scene/run.c \
-	lib/scene/grid.c
+	lib/scene/grid.c \
+	lib/scene/eq.h \
+	lib/scene/eq.c \
+	lib/scene/eq-eval.c \
+	lib/scene/eq-table.c
 lib_libchaplygin_scene_core_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
 lib_libchaplygin_scene_core_la_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) \
 	$(OPENMP_CFLAGS)

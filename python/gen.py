@@ -219,6 +219,13 @@ def cdef_text(text):
     return '\n'.join(t for kind, t in scan(text) if kind == 'decl') + '\n'
 
 
+def int_defines(text):
+    """The #define lines of TEXT that give a name an integer: cffi's cdef
+    takes them (array lengths of the other headers' structures)."""
+    return ''.join(m.group(0) + '\n' for m in re.finditer(
+        r'^#define [A-Z][A-Z0-9_]* [0-9]+$', text, re.M))
+
+
 class Param:
     def __init__(self, cname, kind, ctype, dims=None, const=False):
         self.cname = cname
@@ -714,7 +721,7 @@ def main(argv):
     import cffi
     ffi = cffi.FFI()
     ffi.cdef(cdef_text(htext))
-    ffi.cdef(cdef_text(etext))
+    ffi.cdef(int_defines(etext) + cdef_text(etext))
     ffi.cdef('\n'.join(c_proto(f) for f in loops))
     ffi.set_source('chaplygin._chaplygin_cffi',
                    '#include "chaplygin.h"\n#include "chaplygin-scene.h"\n'

@@ -14,7 +14,8 @@ PY_PACKAGE = python/chaplygin/__init__.py python/chaplygin/_core.py \
 	python/chaplygin/_groups.py python/chaplygin/discrete.py \
 	python/chaplygin/smooth.py python/chaplygin/massless.py \
 	python/chaplygin/printed.py python/chaplygin/sweep.py \
-	python/chaplygin/scene.py python/chaplygin/vectorised.py
+	python/chaplygin/scene.py python/chaplygin/vectorised.py \
+	python/chaplygin/equation.py
 PY_TESTS = python/tests/conftest.py \
 	python/tests/test_reachable.py python/tests/test_values.py \
 	python/tests/test_eq.py python/tests/test_errors.py \

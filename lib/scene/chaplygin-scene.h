@@ -283,6 +283,97 @@ int chaplygin_row_text (char *buf, size_t size, size_t ncols,
                         const chaplygin_column *columns,
                         const chaplygin_cell *cells);
 
+/** @section Equations by label
+ *
+ * Each numbered equation of the paper (a label: "3.10", "A.2", "B.16")
+ * evaluated at the caller's inputs through the library functions that
+ * implement it, with the paper's printed form beside the corrected one
+ * where an erratum gives it as a formula: what `chaplygin eq` prints and
+ * chaplygin.eq returns.  The labels, their inputs and outputs come from the
+ * registry of the paper's labels (lib/labels.txt). */
+typedef struct
+{
+  const char *label;            /* "3.10" */
+  const char *title;
+  const char *inputs;           /* usage: names, [name=default], (a | b) */
+  const char *outputs;
+  const char *functions;        /* the library functions, comma-separated */
+  const char *errata;           /* erratum ids, space-separated, or "-" */
+  const char *paper;            /* what the audit of the paper found */
+  const char *example;          /* an example call: NAME=VALUE ... */
+} chaplygin_eq_entry;
+
+/* The number of labels; the I-th in the paper's order (NULL past the
+   last); the entry of LABEL, written "3.10", "(3.10)", "b.2" or "B.2"
+   (NULL if there is none). */
+size_t chaplygin_eq_count (void);
+const chaplygin_eq_entry *chaplygin_eq_entry_at (size_t i);
+const chaplygin_eq_entry *chaplygin_eq_find (const char *label);
+
+/* The kinds of an output's value. */
+enum
+{
+  CHAPLYGIN_EQ_REAL = 0,        /* x */
+  CHAPLYGIN_EQ_INT = 1,         /* n */
+  CHAPLYGIN_EQ_WORD = 2         /* word */
+};
+
+/* Whether an output has a printed form (an erratum's formula). */
+enum
+{
+  CHAPLYGIN_EQ_PRINTED_NONE = 0,
+  CHAPLYGIN_EQ_PRINTED_VALUE = 1,       /* px (pn) */
+  CHAPLYGIN_EQ_PRINTED_UNDEFINED = 2    /* pstatus: undefined here */
+};
+
+typedef struct
+{
+  const char *name;
+  int kind;                     /* CHAPLYGIN_EQ_REAL, _INT, _WORD */
+  double x;
+  long n;
+  const char *word;
+  const char *function;         /* the library function that computed it */
+  const char *method;           /* how: "formula", "closed-form", ... */
+  int printed;                  /* CHAPLYGIN_EQ_PRINTED_* */
+  double px;                    /* the printed form's value */
+  long pn;
+  int pstatus;                  /* the printed form's status */
+  const char *pfunction;        /* the function evaluating it */
+  const char *perratum;         /* its erratum */
+  int has_rel;                  /* 1: rel is |printed - value|/|value| */
+  double rel;                   /* (inf where the value is 0) */
+} chaplygin_eq_output;
+
+#define CHAPLYGIN_EQ_MAX_OUTPUTS 24
+#define CHAPLYGIN_EQ_MAX_SHOWN 24
+
+typedef struct
+{
+  const chaplygin_eq_entry *entry;
+  int n_out;
+  chaplygin_eq_output out[CHAPLYGIN_EQ_MAX_OUTPUTS];
+  int n_shown;                  /* the inputs as read, for the report */
+  char shown[CHAPLYGIN_EQ_MAX_SHOWN][192];
+  const char *note;             /* a remark on this evaluation, or NULL */
+  char method[64];              /* the heading and time method of the call
+                                   (an output's method may point here) */
+  int status;                   /* OK, EINVAL (the inputs: unknown label,
+                                   missing, unknown or unused input, not a
+                                   number), EMODEL (the library rejects
+                                   them: EINVAL, EDOM, ESTATE), ERUN (the
+                                   library failed otherwise) */
+  int library_status;           /* EMODEL, ERUN */
+  char message[512];
+} chaplygin_eq_result;
+
+/* Evaluate LABEL at the N inputs NAMES[i] = VALUES[i] (numbers as
+   chaplygin_number_real reads them; words for method and prec) into
+   *RES.  Every input given must be used.  Returns RES->status. */
+int chaplygin_eq_eval (const char *label, size_t n,
+                       const char *const *names, const char *const *values,
+                       chaplygin_eq_result *res);
+
 /** @section Numbers
  *
  * The numbers a user writes, read one way everywhere: a decimal or

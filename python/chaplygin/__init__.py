@@ -27,7 +27,9 @@ what happens to failing elements).  discrete.orbit and massless.orbit
 iterate the return map along many orbits, discrete.fate / fate_phase /
 basins classify final motions, sweep.sigma4 / sweep.stability are the
 sweeps of Fig. 2, and run_scene runs a scene file (or a dict with the same
-sections and keys) as `chaplygin run` does and returns its CSV columns.
+sections and keys) as `chaplygin run` does and returns its columns, and
+eq evaluates any of the paper's numbered equations by label as `chaplygin
+eq` does (labels lists them).
 
 The numbers are the C library's, bit for bit: the package only converts
 arguments and results.  lib and ffi (cffi) reach the C functions directly.
@@ -36,7 +38,8 @@ arguments and results.  lib and ffi (cffi) reach the C functions directly.
 from . import _core
 from ._core import (ChaplyginError, InvalidArgumentError, DomainError,
                     StateError, SpinError, RangeError, NoConvergenceError,
-                    OutOfMemoryError, SceneError, Struct, error_class,
+                    OutOfMemoryError, SceneError, EquationError, Struct,
+                    error_class,
                     ERRORS, as_columns)
 from . import _generated
 
@@ -61,5 +64,6 @@ _export(globals(), '')
 
 from . import discrete, smooth, massless, printed, sweep, scene, vectorised
 from .scene import run_scene
+from .equation import eq, labels
 
 del _ctype, _cls, _name, _value

@@ -212,6 +212,11 @@ class SceneError(ChaplyginError, ValueError):
     exit status 2); message: the program's message."""
 
 
+class EquationError(ChaplyginError, ValueError):
+    """chaplygin.eq: an unknown label, or inputs that do not fit it
+    (missing, unknown, unused, not a number); message: the program's."""
+
+
 _ERROR_CLASSES = {
     'EINVAL': InvalidArgumentError, 'EDOM': DomainError,
     'ESTATE': StateError, 'ESPIN': SpinError, 'ERANGE': RangeError,

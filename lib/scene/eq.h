@@ -1,0 +1,135 @@
+/* eq.h -- the evaluation of the paper's equations by label (not
+   installed): what the machinery (eq.c), the evaluators (eq-eval.c) and
+   the table of labels (eq-table.c) share. */
+#ifndef CHAPLYGIN_SCENE_EQ_H
+#define CHAPLYGIN_SCENE_EQ_H
+
+#include <stddef.h>
+
+#include "chaplygin.h"
+#include "chaplygin-scene.h"
+#include "engine.h"
+
+#define EQ_MAX_ARGS 24
+
+typedef struct
+{
+  const char *name;
+  size_t name_len;
+  const char *text;
+  int used;
+} eq_arg;
+
+/* One evaluation: the inputs given, the options of the heading and time
+   methods, the result being filled. */
+typedef struct eq_ctx
+{
+  chaplygin_eq_result *res;
+  eq_arg args[EQ_MAX_ARGS];
+  int n_args;
+  chaplygin_options opt;
+  char *method;                 /* the heading/time method of this call
+                                   (res->method) */
+  const char *note;             /* a remark on this evaluation, or NULL */
+  int failed;
+} eq_ctx;
+
+/* A label: what the user sees, and its evaluator. */
+typedef struct
+{
+  chaplygin_eq_entry info;
+  int (*eval) (eq_ctx *);
+} eq_label;
+
+/* The evaluators (eq-eval.c). */
+int eq_2_1 (eq_ctx *c);
+int eq_2_2 (eq_ctx *c);
+int eq_2_3 (eq_ctx *c);
+int eq_2_4 (eq_ctx *c);
+int eq_3_1 (eq_ctx *c);
+int eq_3_2 (eq_ctx *c);
+int eq_3_3 (eq_ctx *c);
+int eq_3_4 (eq_ctx *c);
+int eq_3_5 (eq_ctx *c);
+int eq_3_6 (eq_ctx *c);
+int eq_3_7 (eq_ctx *c);
+int eq_3_8 (eq_ctx *c);
+int eq_3_9 (eq_ctx *c);
+int eq_3_10 (eq_ctx *c);
+int eq_3_11 (eq_ctx *c);
+int eq_3_12 (eq_ctx *c);
+int eq_3_13 (eq_ctx *c);
+int eq_3_14 (eq_ctx *c);
+int eq_3_15 (eq_ctx *c);
+int eq_4_1 (eq_ctx *c);
+int eq_A_1 (eq_ctx *c);
+int eq_A_2 (eq_ctx *c);
+int eq_A_3 (eq_ctx *c);
+int eq_A_4 (eq_ctx *c);
+int eq_A_5 (eq_ctx *c);
+int eq_A_6 (eq_ctx *c);
+int eq_B_1 (eq_ctx *c);
+int eq_B_2 (eq_ctx *c);
+int eq_B_3 (eq_ctx *c);
+int eq_B_4 (eq_ctx *c);
+int eq_B_5 (eq_ctx *c);
+int eq_B_6 (eq_ctx *c);
+int eq_B_7 (eq_ctx *c);
+int eq_B_8 (eq_ctx *c);
+int eq_B_9 (eq_ctx *c);
+int eq_B_10 (eq_ctx *c);
+int eq_B_11 (eq_ctx *c);
+int eq_B_12 (eq_ctx *c);
+int eq_B_13 (eq_ctx *c);
+int eq_B_14 (eq_ctx *c);
+int eq_B_15 (eq_ctx *c);
+int eq_B_16 (eq_ctx *c);
+int eq_B_17 (eq_ctx *c);
+
+/* The table (eq-table.c), in the paper's order. */
+extern const eq_label eq_labels[];
+extern const size_t eq_n_labels;
+
+/* Failures: the caller's inputs (usage), or the library's STATUS from
+   FUNCTION (0: none).  Each records the first failure and returns -1
+   (lib: 0 on success). */
+int eq_fail_usage (eq_ctx *c, const char *fmt, ...) ENGINE_PRINTF (2, 3);
+int eq_lib (eq_ctx *c, const char *function, int status);
+
+/* Inputs.  eq_given: whether NAME is given; the readers take the input
+   NAME (required, or DEFLT where it is not given), mark it used, and show
+   it in the report. */
+int eq_given (eq_ctx *c, const char *name);
+void eq_show (eq_ctx *c, const char *fmt, ...) ENGINE_PRINTF (2, 3);
+int eq_real_in (eq_ctx *c, const char *name, double *x);
+int eq_real_opt (eq_ctx *c, const char *name, double deflt, double *x);
+int eq_int_in (eq_ctx *c, const char *name, long lo, long hi, long *n);
+int eq_dir_in (eq_ctx *c, const char *name, int *dir);
+/* A direction given as DIR_NAME, or as the sign of V (the input V_NAME),
+   which must then agree with it. */
+int eq_dir_from (eq_ctx *c, const char *dir_name, double V,
+                 const char *V_name, int *dir);
+/* The method options method, tol, prec (all optional) into c->opt and
+   c->method. */
+int eq_method_in (eq_ctx *c);
+/* Which of two sets of inputs is given: 1 for the first (any of A1, A2
+   given, or none of B1, B2), 0 for the second; -1 (a usage failure) if
+   names of both are given. */
+int eq_choose (eq_ctx *c, const char *a1, const char *a2, const char *b1,
+               const char *b2);
+
+/* Outputs: a value of the library's FUNCTION (METHOD: how it computed
+   it), and the printed form's value of output NAME. */
+extern const char EQ_FORMULA[];
+void eq_put_real (eq_ctx *c, const char *name, double x,
+                  const char *function, const char *method);
+void eq_put_int (eq_ctx *c, const char *name, long n, const char *function,
+                 const char *method);
+void eq_put_word (eq_ctx *c, const char *name, const char *word,
+                  const char *function, const char *method);
+void eq_printed_real (eq_ctx *c, const char *name, int status, double x,
+                      const char *erratum, const char *function);
+void eq_printed_int (eq_ctx *c, const char *name, int status, long n,
+                     const char *erratum, const char *function);
+
+#endif /* CHAPLYGIN_SCENE_EQ_H */

@@ -1,0 +1,194 @@
+"""The paper's numbered equations by label, as `chaplygin eq` evaluates
+them.
+
+    r = chaplygin.eq('3.10', L0=1, Delta='1/3', dir=-1)
+    r.sigma4                  # 1.1666666666666665, the value
+    r['sigma4']               # the same
+    r.outputs                 # {'sigma4': 1.1666666666666665}
+    r.functions               # {'sigma4': 'chaplygin_discrete_sigma4'}
+    chaplygin.eq('2.1', L=1, V=1, Omega=0.5).printed   # the printed forms
+    chaplygin.labels()        # every label, in the paper's order
+
+Labels, inputs and outputs are those of the registry of the paper's labels
+(lib/labels.txt) that the scene engine evaluates (chaplygin_eq_eval): the
+program and this function give the same numbers, bit for bit.  Inputs are
+keywords: numbers (int, float: read back exactly), fractions.Fraction (as
+p/q, exactly) or strings as `chaplygin eq` takes them ('1/3', 'quadrature');
+dir is +1 or -1.  Every input given must be used by the label.
+
+Errors: an unknown label or inputs that do not fit it raise EquationError;
+inputs the library rejects (outside the domain) and failures of the
+library raise the exception of the library's status (DomainError, ...).
+"""
+import fractions
+import numbers
+
+import numpy as np
+
+from ._core import _ffi, _lib, EquationError, error_class
+
+__all__ = ['eq', 'labels', 'Equation', 'Label']
+
+_KINDS = {0: 'real', 1: 'int', 2: 'word'}
+_EINVAL, _ENOMEM = 1, 8
+
+
+def _string(p):
+    return _ffi.string(p).decode() if p != _ffi.NULL else None
+
+
+class Label:
+    """One label of the registry: label, title, inputs (usage), outputs,
+    functions, errata (a tuple of ids), paper (the audit's verdict) and
+    example (an example call, NAME=VALUE ...)."""
+
+    __slots__ = ('label', 'title', 'inputs', 'outputs', 'functions',
+                 'errata', 'paper', 'example')
+
+    def __init__(self, **fields):
+        for k in self.__slots__:
+            setattr(self, k, fields[k])
+
+    @classmethod
+    def _of(cls, e):
+        errata = _string(e.errata)
+        return cls(label=_string(e.label), title=_string(e.title),
+                   inputs=_string(e.inputs), outputs=_string(e.outputs),
+                   functions=tuple(f.strip() for f in
+                                   _string(e.functions).split(',')),
+                   errata=() if errata == '-' else tuple(errata.split()),
+                   paper=_string(e.paper), example=_string(e.example))
+
+    def __reduce__(self):
+        return (_label, (tuple(getattr(self, k) for k in self.__slots__),))
+
+    def __eq__(self, other):
+        return isinstance(other, Label) and all(
+            getattr(self, k) == getattr(other, k) for k in self.__slots__)
+
+    def __repr__(self):
+        return 'Label(%r, %r)' % (self.label, self.title)
+
+
+def _label(values):
+    return Label(**dict(zip(Label.__slots__, values)))
+
+
+def labels():
+    """Every label of the registry, in the paper's order (Label objects)."""
+    return [Label._of(_lib.chaplygin_eq_entry_at(i))
+            for i in range(_lib.chaplygin_eq_count())]
+
+
+class Equation:
+    """The value of one label at given inputs: outputs (name -> value, in
+    order), functions and methods (name -> the library function that
+    computed it, and how), printed (name -> the printed form's value, None
+    where it is undefined at these inputs; only outputs with a printed
+    form), errata (name -> the erratum of that printed form), relative
+    (name -> |printed - value|/|value|), inputs (the inputs as read, as the
+    program shows them), and the label's label, title, paper and note.
+    An output is also an attribute and an item: r.sigma4, r['sigma4']."""
+
+    def __init__(self, label, title, paper, note, inputs, outputs, functions,
+                 methods, printed, errata, relative):
+        self.label, self.title, self.paper, self.note = (label, title, paper,
+                                                         note)
+        self.inputs = inputs
+        self.outputs, self.functions, self.methods = (outputs, functions,
+                                                      methods)
+        self.printed, self.errata, self.relative = printed, errata, relative
+
+    def __getitem__(self, name):
+        return self.outputs[name]
+
+    def __getattr__(self, name):
+        outputs = self.__dict__.get('outputs', {})
+        if name in outputs:
+            return outputs[name]
+        raise AttributeError(name)
+
+    def __eq__(self, other):
+        return isinstance(other, Equation) and self.__dict__ == other.__dict__
+
+    def __repr__(self):
+        return 'Equation(%r, %r)' % (self.label, self.outputs)
+
+
+def _text(name, v):
+    if isinstance(v, bool):
+        raise TypeError('eq: %s: a number or a string expected, not bool'
+                        % name)
+    if isinstance(v, numbers.Integral):
+        return str(int(v))
+    if isinstance(v, fractions.Fraction):
+        return '%d/%d' % (v.numerator, v.denominator)
+    if isinstance(v, (float, np.floating)):
+        return repr(float(v))
+    if isinstance(v, str):
+        if '\0' in v:
+            raise ValueError('eq: %s: a value with NUL' % name)
+        return v
+    raise TypeError('eq: %s: a number or a string expected, not %s'
+                    % (name, type(v).__name__))
+
+
+def _value(o):
+    kind = o.kind
+    if kind == 0:
+        return float(o.x)
+    if kind == 1:
+        return int(o.n)
+    return _string(o.word)
+
+
+def eq(label, **inputs):
+    """eq(label, **inputs) -> Equation
+
+    Evaluate the paper's equation LABEL ('3.10', '(A.2)', 'b.16') at the
+    keyword INPUTS, as `chaplygin eq LABEL NAME=VALUE ...` does (see the
+    module's documentation)."""
+    if not isinstance(label, str):
+        raise TypeError('eq: the label is a string such as "3.10", not %s'
+                        % type(label).__name__)
+    names = [_ffi.new('char[]', k.encode()) for k in inputs]
+    values = [_ffi.new('char[]', _text(k, v).encode())
+              for k, v in inputs.items()]
+    res = _ffi.new('chaplygin_eq_result *')
+    rc = _lib.chaplygin_eq_eval(label.encode('utf-8', 'replace'),
+                                len(names),
+                                _ffi.new('char *[]', names or [_ffi.NULL]),
+                                _ffi.new('char *[]', values or [_ffi.NULL]),
+                                res)
+    msg = _ffi.string(res.message).decode('utf-8', 'replace')
+    if rc == _ENOMEM:
+        raise MemoryError('eq: out of memory')
+    if rc == _EINVAL:
+        raise EquationError(None, None, detail='eq %s: %s' % (label, msg))
+    if rc != 0:
+        raise error_class(res.library_status)(res.library_status, None,
+                                              detail='eq %s: %s'
+                                              % (label, msg))
+    outs = [res.out[i] for i in range(res.n_out)]
+    value = {_string(o.name): _value(o) for o in outs}
+    printed, errata, relative = {}, {}, {}
+    for o in outs:
+        name = _string(o.name)
+        if o.printed == 0:
+            continue
+        printed[name] = (None if o.printed == 2 else
+                         int(o.pn) if o.kind == 1 else float(o.px))
+        errata[name] = _string(o.perratum)
+        if o.has_rel:
+            relative[name] = float(o.rel)
+    e = res.entry
+    return Equation(
+        label=_string(e.label), title=_string(e.title),
+        paper=_string(e.paper),
+        note=_string(res.note) if res.note != _ffi.NULL else None,
+        inputs=[_ffi.string(res.shown[i]).decode()
+                for i in range(res.n_shown)],
+        outputs=value,
+        functions={_string(o.name): _string(o.function) for o in outs},
+        methods={_string(o.name): _string(o.method) for o in outs},
+        printed=printed, errata=errata, relative=relative)
