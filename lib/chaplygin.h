@@ -577,6 +577,12 @@ int chaplygin_discrete_spin_eigenvalues (double L0, double Delta,
 /* Sweeps for Fig. 2: x = L0/Delta, y = (1/Delta)^2 >= 0               */
 /* ------------------------------------------------------------------ */
 
+/* The i-th of the n points of the uniform grid from lo to hi: lo,
+   lo + (hi - lo) i/(n - 1), hi (exactly, at the ends; also where hi - lo
+   overflows).  Every sweep's grid. */
+int chaplygin_grid_point (double lo, double hi, size_t n, size_t i,
+                          double *v);
+
 /* Fig. 2(a): sigma4[i] for x[i], i < n, at y; status (may be NULL) per
    point; returns the first failing point's status or success. */
 int chaplygin_sweep_sigma4 (int dir, double y, size_t n, const double *x,
@@ -642,13 +648,19 @@ int chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
                                    size_t reversal_cap, chaplygin_fate *fate);
 
 /* Figure 3: the fates of the n post-collision states with Omega+ = Omega0,
-   theta+ = 0 and V+ on the uniform grid V_lo = V_0 < ... < V_(n-1) = V_hi,
-   the peg at D = 0 for V+ > 0 and at Delta for V+ < 0 (no grid point may
-   be 0).  fates[i] receives the fate of V_i. */
+   theta+ = 0 and V+ on the grid chaplygin_grid_point (V_lo, V_hi, n, i),
+   the peg at D = 0 for V+ > 0 and at Delta for V+ < 0, each in the units
+   of its velocity scaling.  status (may be NULL): each point's status,
+   fates[i] written where it succeeds (a grid point 0: ESTATE); without
+   status every point must succeed and nothing is written otherwise.
+   scale (may be NULL): each point's velocity scaling m, E_final and
+   V_final then in the scaled units (exact for every point); without it in
+   the physical ones (ERANGE where they are not doubles). */
 int chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
                                double V_lo, double V_hi, size_t n,
                                unsigned long max_collisions,
-                               chaplygin_fate *fates);
+                               chaplygin_fate *fates, int *status,
+                               int *scale);
 
 /* The basin boundaries on the grid of chaplygin_discrete_basins (n_grid
    points): every grid point whose motion spins, and between neighbouring

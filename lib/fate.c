@@ -415,15 +415,14 @@ chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
                           reversal_at, reversal_cap, fate);
 }
 
-/* The i-th of n points of the uniform grid from lo to hi (both included). */
+/* The i-th of n points of the uniform grid from lo to hi (both included,
+   finite): chaplygin_grid_point. */
 static double
 grid_point (double lo, double hi, size_t n, size_t i)
 {
-  if (i == 0)
-    return lo;
-  if (i == n - 1)
-    return hi;
-  return lo + (hi - lo) * ((double) i / (double) (n - 1));
+  double v = lo;
+  (void) chaplygin_grid_point (lo, hi, n, i, &v);
+  return v;
 }
 
 /* Validation shared by the grid functions. */
@@ -449,42 +448,125 @@ check_grid (const chaplygin_discrete *sys, double Omega0, double V_lo,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* The fate of the post-collision state {D+, V, 0, Omega0} (D+ = 0 for
+   V > 0, Delta for V < 0) in the units of its velocity scaling
+   (chaplygin_velocity_scaling at l0 = L0 + D+: *m, 0 wherever E and H are
+   in range), by chaplygin_discrete_fate_phase; SCALED = 0: E_final and
+   V_final brought back to the physical units, CHAPLYGIN_ERANGE where one
+   of them is not a double there (beyond DBL_MAX, or below DBL_MIN with
+   bits lost). */
+static int
+basin_point (const chaplygin_discrete *sys, double Omega0, double V,
+             unsigned long max_collisions, int scaled, chaplygin_fate *fate,
+             int *m)
+{
+  double q[4] = { V > 0.0 ? 0.0 : sys->Delta, 0.0, 0.0, 0.0 };
+  chaplygin_fate r;
+  if (V == 0.0)
+    return CHAPLYGIN_ESTATE;
+  CHP_TRY (chaplygin_velocity_scaling (sys->L0 + q[CHAPLYGIN_D], V, Omega0,
+                                       m, &q[CHAPLYGIN_V],
+                                       &q[CHAPLYGIN_OMEGA]));
+  CHP_TRY (chaplygin_discrete_fate_phase (sys, q, max_collisions, NULL, 0,
+                                          &r));
+  if (!scaled && *m != 0)
+    {
+      int exact_E, exact_V;
+      CHP_TRY (chaplygin_velocity_scale (-*m, CHAPLYGIN_SCALE_ENERGY,
+                                         r.E_final, &r.E_final, &exact_E));
+      CHP_TRY (chaplygin_velocity_scale (-*m, CHAPLYGIN_SCALE_SPEED,
+                                         r.V_final, &r.V_final, &exact_V));
+      if (!exact_E || !exact_V)
+        return CHAPLYGIN_ERANGE;
+      *m = 0;
+    }
+  *fate = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* chaplygin_discrete_basins: Figure 3, the fates of the post-collision
-   states {D+, V_i, 0, Omega0}, V_i = V_lo + (V_hi - V_lo) i/(n - 1),
-   i = 0 ... n-1 (V_0 = V_lo and V_(n-1) = V_hi exactly; n = 1: V_lo), by
-   chaplygin_discrete_fate_phase.  n = 0 does nothing (fates may be NULL).
-   Domain: finite; V_lo <= V_hi, V_hi - V_lo finite; no grid point 0.
-   Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE (a grid
-   point is 0), CHAPLYGIN_ERANGE (|L0 + D| above 2^500, a final energy
-   beyond the double range). */
+   states {D+, V_i, 0, Omega0} on the grid V_i = chaplygin_grid_point
+   (V_lo, V_hi, n, i), i = 0 ... n-1 (V_0 = V_lo and V_(n-1) = V_hi
+   exactly, also where V_hi - V_lo overflows; n = 1: V_lo), each by
+   chaplygin_discrete_fate_phase in the units of its velocity scaling
+   (basin_point), so that a tiny or huge V_i (1e-300, 1e200) has its fate
+   as a moderate one does.
+   status (may be NULL) receives each point's status; fates[i] (and
+   scale[i]) are written where it is CHAPLYGIN_SUCCESS: a point that fails
+   (V_i = 0, not a state just after a collision: CHAPLYGIN_ESTATE; a final
+   energy or velocity that is not a double: CHAPLYGIN_ERANGE) fails alone.
+   Without status the grid is one result: every point must succeed, and
+   nothing is written otherwise (the fates are gathered in a buffer of n
+   first: CHAPLYGIN_ENOMEM possible).
+   scale (may be NULL) receives each point's velocity scaling m: its
+   E_final, V_final are then in the scaled units (times 2^(2m), 2^m:
+   chaplygin_velocity_scale with -m gives them back, chaplygin_velocity_
+   exponent the power of two of one beyond the doubles), which is exact
+   for every point; without scale they are in the physical units.
+   Returns CHAPLYGIN_SUCCESS if every point succeeded, else the first
+   failing point's status.  n = 0 does nothing (fates may be NULL).
+   Domain: Omega0, V_lo, V_hi finite; V_lo <= V_hi.
+   Errors: CHAPLYGIN_EINVAL (NULL sys, or fates with n > 0),
+   CHAPLYGIN_EDOM (non-finite, V_lo > V_hi, a system chaplygin_discrete_
+   init would not make), CHAPLYGIN_ENOMEM; per point CHAPLYGIN_ESTATE,
+   CHAPLYGIN_ERANGE and those of chaplygin_discrete_fate_phase. */
 int
 chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
                            double V_lo, double V_hi, size_t n,
                            unsigned long max_collisions,
-                           chaplygin_fate *fates)
+                           chaplygin_fate *fates, int *status, int *scale)
 {
+  chp_far f;
   if (!sys || (n > 0 && !fates))
     return CHAPLYGIN_EINVAL;
-  chp_far f;
   CHP_TRY (chp_far_open_sys (sys, &f));
-  if (f.k)
+  if (!chp_finite2 (V_lo, V_hi) || !isfinite (Omega0) || V_lo > V_hi)
+    return CHAPLYGIN_EDOM;
+  /* without status: gathered first, written only if all succeed */
+  chaplygin_fate *out = fates;
+  int *m_out = scale;
+  if (!status && n > 0)
     {
-      /* far (lib/far.c): Omega0 scaled (m = 0: the V grid and the fates
-         unchanged) */
-      double Om;
-      if (!isfinite (Omega0))
-        return CHAPLYGIN_EDOM;
-      if (!chp_far_in (&f, CHP_Q_RATE, Omega0, &Om))
-        return CHAPLYGIN_ERANGE;
-      return chaplygin_discrete_basins (&f.sys, Om, V_lo, V_hi, n,
-                                        max_collisions, fates);
+      out = malloc (n * sizeof *out);
+      m_out = scale ? malloc (n * sizeof *m_out) : NULL;
+      if (!out || (scale && !m_out))
+        {
+          free (out);
+          free (m_out);
+          return CHAPLYGIN_ENOMEM;
+        }
     }
-  fate_coef c;
-  CHP_TRY (check_grid (sys, Omega0, V_lo, V_hi, n, &c));
-  for (size_t i = 0; i < n; i++)
-    CHP_TRY (fate_from_phase (&c, grid_point (V_lo, V_hi, n, i), Omega0,
-                              max_collisions, NULL, 0, &fates[i]));
-  return CHAPLYGIN_SUCCESS;
+  int first = CHAPLYGIN_SUCCESS;
+  for (size_t i = 0; i < n && (status || first == CHAPLYGIN_SUCCESS); i++)
+    {
+      chaplygin_fate r;
+      int m = 0;
+      int st = basin_point (sys, Omega0, grid_point (V_lo, V_hi, n, i),
+                            max_collisions, scale != NULL, &r, &m);
+      if (st == CHAPLYGIN_SUCCESS)
+        {
+          out[i] = r;
+          if (m_out)
+            m_out[i] = m;
+        }
+      else if (first == CHAPLYGIN_SUCCESS)
+        first = st;
+      if (status)
+        status[i] = st;
+    }
+  if (!status && n > 0)
+    {
+      if (first == CHAPLYGIN_SUCCESS)
+        for (size_t i = 0; i < n; i++)
+          {
+            fates[i] = out[i];
+            if (scale)
+              scale[i] = m_out[i];
+          }
+      free (out);
+      free (m_out);
+    }
+  return first;
 }
 
 static int

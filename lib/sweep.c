@@ -1,8 +1,9 @@
 /* sweep.c -- parameter sweeps for the paper's Figure 2: sigma4 curves
    (Fig. 2(a)) and stability regions (Fig. 2(b)) over the plane
-   x = L0/Delta, y = (1/Delta)^2.  The functions fill caller-provided
-   arrays, keep no state and print nothing, so a caller may split a sweep
-   across threads or machines.  */
+   x = L0/Delta, y = (1/Delta)^2; and the uniform grid of every sweep
+   (Figures 2 and 3, the scene engine's sweeps).  The functions fill
+   caller-provided arrays, keep no state and print nothing, so a caller may
+   split a sweep across threads or machines.  */
 #include <config.h>
 
 #include <math.h>
@@ -10,6 +11,34 @@
 
 #include "chaplygin.h"
 #include "eft.h"
+
+/* chaplygin_grid_point: the I-th of the N points of the uniform grid from
+   LO to HI,
+     v_i = lo + (hi - lo) (i/(n - 1)),  v_0 = lo and v_(n-1) = hi exactly,
+   (n = 1: lo); where hi - lo overflows (lo = -DBL_MAX, hi = DBL_MAX),
+   lo (1 - t) + hi t with t = i/(n - 1), which does not.  Every sweep of
+   the library and of the scene engine takes its points here.
+   Errors: CHAPLYGIN_EINVAL (v NULL, n = 0, i >= n), CHAPLYGIN_EDOM (lo or
+   hi not finite). */
+int
+chaplygin_grid_point (double lo, double hi, size_t n, size_t i, double *v)
+{
+  if (!v || n == 0 || i >= n)
+    return CHAPLYGIN_EINVAL;
+  if (!chp_finite2 (lo, hi))
+    return CHAPLYGIN_EDOM;
+  if (i == 0)
+    *v = lo;
+  else if (i == n - 1)
+    *v = hi;
+  else
+    {
+      double t = (double) i / (double) (n - 1);
+      double width = hi - lo;
+      *v = isfinite (width) ? lo + width * t : lo * (1.0 - t) + hi * t;
+    }
+  return CHAPLYGIN_SUCCESS;
+}
 
 /* sigma4 of (3.10) in the variables of Fig. 2: with Delta = 1/sqrt(y),
    L0 = x Delta,

@@ -1249,7 +1249,7 @@ START_TEST (far_basins)
   const double L0 = 1e200, Delta = 1e200, Om0 = 0.3 / 1e200;
   ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
   chaplygin_fate f[4], g;
-  ck_assert_ok (chaplygin_discrete_basins (&sys, Om0, 0.25, 1.0, 4, 1000, f));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, Om0, 0.25, 1.0, 4, 1000, f, NULL, NULL));
   for (int i = 0; i < 4; i++)
     {
       const double V = 0.25 + 0.25 * i;
@@ -1266,7 +1266,7 @@ START_TEST (far_basins)
                  && g.E_final == f[i].E_final && g.V_final == f[i].V_final);
     }
   ck_assert_ok (chaplygin_discrete_basins (&sys, Om0, -1.0, -0.25, 4, 1000,
-                                           f));
+                                           f, NULL, NULL));
   for (int i = 0; i < 4; i++)
     {
       const double V = -1.0 + 0.25 * i;
@@ -1289,7 +1289,7 @@ START_TEST (far_basins)
   ck_assert (count == 0);
   /* documented statuses in the far path */
   ck_assert_status (chaplygin_discrete_basins (&sys, NAN, 0.25, 1.0, 4, 10,
-                                               f), CHAPLYGIN_EDOM);
+                                               f, NULL, NULL), CHAPLYGIN_EDOM);
   ck_assert_status (chaplygin_discrete_basin_boundaries (&sys, INFINITY, 0.25,
                                                          1.0, 4, 10, Vb, 2,
                                                          &count),

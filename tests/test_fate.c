@@ -812,7 +812,7 @@ START_TEST (fate_errors)
   ck_assert_status (chaplygin_discrete_fate_phase (&sys, qbig, 10, NULL, 0, &f),
                     CHAPLYGIN_ERANGE);
   ck_assert (f.kind == 7 && f.E_final == 7.0);
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.5, 1e200, 2e200, 2, 10, &f),
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.5, 1e200, 2e200, 2, 10, &f, NULL, NULL),
                     CHAPLYGIN_ERANGE);
   /* nothing written on that failure (review): reversal_at, and the first
      fates of a grid whose last point fails */
@@ -825,7 +825,7 @@ START_TEST (fate_errors)
                       CHAPLYGIN_ERANGE);
     ck_assert (at1[0] == 777);
     chaplygin_fate g[2] = { keep, keep };
-    ck_assert_status (chaplygin_discrete_basins (&s2, 1.0, 1.0, 1.9e154, 2, 10, g),
+    ck_assert_status (chaplygin_discrete_basins (&s2, 1.0, 1.0, 1.9e154, 2, 10, g, NULL, NULL),
                       CHAPLYGIN_ERANGE);
     ck_assert (g[0].kind == 7 && g[1].kind == 7);
   }
@@ -1031,8 +1031,8 @@ START_TEST (basins_figure3)
   enum { N = 10000 };
   static chaplygin_fate pos[N], neg[N];
   const double lo = 1e-6, hi = 0.6;
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, lo, hi, N, 100000, pos));
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, -hi, -lo, N, 100000, neg));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, lo, hi, N, 100000, pos, NULL, NULL));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, -hi, -lo, N, 100000, neg, NULL, NULL));
   int counts[4] = { 0, 0, 0, 0 };
   for (size_t i = 0; i < N; i++)
     {
@@ -1063,7 +1063,7 @@ START_TEST (basins_figure3)
   ck_assert (counts[0] > 100 && counts[1] > 1000 && counts[2] > 100 && counts[3] > 0);
   /* the caption: no reversal above 1/sqrt(5) */
   chaplygin_fate f;
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.44722, 5.0, 1, 100, &f));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.44722, 5.0, 1, 100, &f, NULL, NULL));
   ck_assert (f.kind == FWD && f.reversals == 0);
   /* ... which is 2 ^iE+/(^iH+)^2 > 1, not 2 ^(i+1)E+/(^(i+1)H+)^2 > 1 as the
      caption prints: V+ = 0.3 reverses at the first collision, after which
@@ -1273,10 +1273,10 @@ START_TEST (basins_nonsymmetric)
   check_boundaries (&sys, Vb, count, &spins, &rests);
   ck_assert (spins == 0 && rests == 1);
   chaplygin_fate f[64];
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 1.0, -0.9, -1e-8, 64, 1000000, f));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 1.0, -0.9, -1e-8, 64, 1000000, f, NULL, NULL));
   for (int i = 0; i < 64; i++)
     ck_assert_int_eq (f[i].kind, BWD);
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 1.0, 1e-8, 0.5, 64, 1000000, f));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 1.0, 1e-8, 0.5, 64, 1000000, f, NULL, NULL));
   for (int i = 0; i < 64; i++)
     ck_assert_int_eq (f[i].kind, BWD);
 }
@@ -1291,27 +1291,62 @@ START_TEST (basins_errors)
     f[i] = keep;
   double Vb[4] = { 9, 9, 9, 9 };
   size_t count = 99;
-  ck_assert_status (chaplygin_discrete_basins (NULL, 0.8, 0.1, 0.5, 8, 10, f), CHAPLYGIN_EINVAL);
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, 0.1, 0.5, 8, 10, NULL), CHAPLYGIN_EINVAL);
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.1, 0.5, 0, 10, NULL));
-  ck_assert_status (chaplygin_discrete_basins (&sys, NAN, 0.1, 0.5, 8, 10, f), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -INFINITY, 0.5, 8, 10, f), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, 0.1, NAN, 8, 10, f), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, 0.5, 0.1, 8, 10, f), CHAPLYGIN_EDOM);
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -DBL_MAX, DBL_MAX, 8, 10, f),
-                    CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_basins (NULL, 0.8, 0.1, 0.5, 8, 10, f, NULL, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, 0.1, 0.5, 8, 10, NULL, NULL, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.1, 0.5, 0, 10, NULL, NULL, NULL));
+  ck_assert_status (chaplygin_discrete_basins (&sys, NAN, 0.1, 0.5, 8, 10, f, NULL, NULL), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -INFINITY, 0.5, 8, 10, f, NULL, NULL), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, 0.1, NAN, 8, 10, f, NULL, NULL), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, 0.5, 0.1, 8, 10, f, NULL, NULL), CHAPLYGIN_EDOM);
+  /* A grid whose width overflows (issue 26: it was refused, EDOM): its
+     points are lo (1 - t) + hi t.  With Omega0 = 0 (H = 0) each moves
+     straight in the direction of V+ with E_final = V+^2/2, beyond the
+     doubles (|V+| >= DBL_MAX/7): ERANGE without scale (nothing written
+     without status), each point's fate in its scaled units with scale,
+     V_final 2^-m = V+ to a few ulps (in long double, whose range holds
+     it).  (With Omega0 = 0.8 the velocity scaling of V+ = DBL_MAX would
+     take Omega0 below the doubles: ERANGE there, documented.) */
+  {
+    int st[8], m[8];
+    ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -DBL_MAX, DBL_MAX, 8, 10, f, st, m),
+                      CHAPLYGIN_ERANGE);
+    ck_assert (st[0] == CHAPLYGIN_ERANGE && st[7] == CHAPLYGIN_ERANGE);
+    for (int i = 0; i < 8; i++)
+      f[i] = keep;
+    ck_assert_status (chaplygin_discrete_basins (&sys, 0.0, -DBL_MAX, DBL_MAX, 8, 10, f, NULL, NULL),
+                      CHAPLYGIN_ERANGE);
+    for (int i = 0; i < 8; i++)
+      ck_assert (f[i].kind == 7);
+    ck_assert_status (chaplygin_discrete_basins (&sys, 0.0, -DBL_MAX, DBL_MAX, 8, 10, f, st, NULL),
+                      CHAPLYGIN_ERANGE);
+    for (int i = 0; i < 8; i++)
+      ck_assert (st[i] == CHAPLYGIN_ERANGE && f[i].kind == 7);
+    ck_assert_ok (chaplygin_discrete_basins (&sys, 0.0, -DBL_MAX, DBL_MAX, 8, 10, f, st, m));
+    for (int i = 0; i < 8; i++)
+      {
+        double t = i / 7.0;
+        double V = i == 0 ? -DBL_MAX : i == 7 ? DBL_MAX
+          : -DBL_MAX * (1.0 - t) + DBL_MAX * t;
+        long double Vf = ldexpl ((long double) f[i].V_final, -m[i]);
+        ck_assert (st[i] == CHAPLYGIN_SUCCESS);
+        ck_assert_int_eq (f[i].kind, V > 0 ? FWD : BWD);
+        ck_assert_msg (fabsl (Vf / V - 1.0L) <= 4 * DBL_EPSILON,
+                       "point %d: V_final 2^-m = %Lg, V+ = %g", i, Vf, V);
+        f[i] = keep;
+      }
+  }
   /* a grid point at V = 0: -0.5, 0, 0.5 */
-  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -0.5, 0.5, 3, 10, f), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -0.5, 0.5, 3, 10, f, NULL, NULL), CHAPLYGIN_ESTATE);
   bad = sys;
   bad.Delta = 0;
-  ck_assert_status (chaplygin_discrete_basins (&bad, 0.8, 0.1, 0.5, 8, 10, f), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_basins (&bad, 0.8, 0.1, 0.5, 8, 10, f, NULL, NULL), CHAPLYGIN_EDOM);
   for (int i = 0; i < 8; i++)
     ck_assert (f[i].kind == 7 && f[i].collisions == 7);
   /* n = 1: V_lo */
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.3, 0.4, 1, 10, f));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.3, 0.4, 1, 10, f, NULL, NULL));
   ck_assert (f[0].kind == BWD && f[1].kind == 7);
   /* a grid across 0 without a point at 0 */
-  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, -0.5, 0.5, 8, 100, f));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, -0.5, 0.5, 8, 100, f, NULL, NULL));
   for (int i = 0; i < 4; i++)
     ck_assert_int_eq (f[i].kind, -f[7 - i].kind);
 
@@ -1368,7 +1403,7 @@ START_TEST (basins_errors)
       ck_assert_ok (chaplygin_discrete_basin_boundaries (&sys, Om, V, V, 1, 10, NULL, 0, &count));
       ck_assert_uint_eq (count, 1);
       double d = 1024 * (nextafter (V, 2 * V) - V);
-      ck_assert_ok (chaplygin_discrete_basins (&sys, Om, V - d, V + d, 2, 100, f));
+      ck_assert_ok (chaplygin_discrete_basins (&sys, Om, V - d, V + d, 2, 100, f, NULL, NULL));
       ck_assert (f[0].kind == BWD && f[1].kind == FWD);
       Vb[0] = 0;
       ck_assert_ok (chaplygin_discrete_basin_boundaries (&sys, Om, V - d, V + d, 2, 100, Vb, 4,

@@ -10,10 +10,10 @@
    all threads and delivered in order from the calling thread (OpenMP's
    master) while the next block is computed.
 
-   Grid values: v_j = lo + (hi - lo) (j/(n - 1)), j = 0 .. n-1, with
-   v_0 = lo and v_(n-1) = hi exactly (n = 1: lo alone); this is the grid of
-   chaplygin_discrete_basins.  A cell is missing where a value was not
-   computed.
+   Grid values: chaplygin_grid_point, v_j = lo + (hi - lo) (j/(n - 1)),
+   j = 0 .. n-1, with v_0 = lo and v_(n-1) = hi exactly (n = 1: lo alone),
+   the grid of chaplygin_discrete_basins.  A cell is missing where a value
+   was not computed.
 
    Columns by [sweep] kind:
 
@@ -37,7 +37,8 @@
    basins (Fig. 3), k = j for the initial V+ = x_j, the post-collision
    state {D+, V+, theta+ = 0, Omega+ = [initial] Omega} of the skate with
    [parameters] L0, Delta (D+ = 0 for V+ > 0, Delta for V+ < 0), iterated
-   at most [run] collisions times by chaplygin_discrete_fate_phase:
+   at most [run] collisions times by chaplygin_discrete_basins (one point
+   at a time):
      k,V0,fate,collisions,reversals,E_final,V_final,status
        fate        -1 backward, 0 spin, 1 forward, 2 undecided
                    (chaplygin_fate_kind)
@@ -89,21 +90,14 @@ typedef struct
 /* The points                                                          */
 /* ------------------------------------------------------------------ */
 
-/* The I-th of N points from LO to HI, both ends exact (N = 1: LO); the
-   grid of chaplygin_discrete_basins, with a fallback for HI - LO
-   overflowing. */
+/* The I-th of N points from LO to HI (finite), both ends exact:
+   chaplygin_grid_point, the library's grid. */
 static double
 grid_value (double lo, double hi, uint64_t n, uint64_t i)
 {
-  if (i == 0)
-    return lo;
-  if (i == n - 1)
-    return hi;
-  double t = (double) i / (double) (n - 1);
-  double width = hi - lo;
-  if (isfinite (width))
-    return lo + width * t;
-  return lo * (1.0 - t) + hi * t;
+  double v = lo;
+  (void) chaplygin_grid_point (lo, hi, (size_t) n, (size_t) i, &v);
+  return v;
 }
 
 /* floor(S T / N) for S <= N, exactly and without overflow:
@@ -186,29 +180,20 @@ stability_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
     }
 }
 
-/* The row of basins point K into ROW.  A tiny or huge V+, Omega+ (E or H
-   out of range) is run in the units of its velocity scaling, and E_final,
-   V_final are delivered in the physical ones, exactly (cell_scaled), as a
-   run delivers them. */
+/* The row of basins point K into ROW: the library's
+   chaplygin_discrete_basins for the point (a tiny or huge V+, Omega+ runs
+   in the units of its velocity scaling, and E_final, V_final are delivered
+   in the physical ones, exactly: cell_scaled, as a run delivers them). */
 static void
 basins_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
 {
   const scene *sc = plan->sc;
   double V = grid_value (sc->x_min, sc->x_max, plan->nx, k);
-  int status = CHAPLYGIN_ESTATE, m = 0;
+  int status, m = 0;
   chaplygin_fate fate;
-  if (V != 0.0)
-    {
-      const double D = V > 0.0 ? 0.0 : plan->sys.Delta;
-      double qplus[4] = { D, 0.0, 0.0, 0.0 };
-      status = chaplygin_velocity_scaling (plan->sys.L0 + D, V, sc->Omega,
-                                           &m, &qplus[CHAPLYGIN_V],
-                                           &qplus[CHAPLYGIN_OMEGA]);
-      if (status == CHAPLYGIN_SUCCESS)
-        status = chaplygin_discrete_fate_phase (&plan->sys, qplus,
-                                                (unsigned long) sc->collisions,
-                                                NULL, 0, &fate);
-    }
+  (void) chaplygin_discrete_basins (&plan->sys, sc->Omega, V, V, 1,
+                                    (unsigned long) sc->collisions, &fate,
+                                    &status, &m);
   put_int (&row[0], (long long) k);
   put_real (&row[1], V);
   for (int i = 2; i < 7; i++)

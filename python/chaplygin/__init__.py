@@ -65,5 +65,6 @@ _export(globals(), '')
 from . import discrete, smooth, massless, printed, sweep, scene, vectorised
 from .scene import run_scene
 from .equation import eq, labels
+from .sweep import grid_point
 
 del _ctype, _cls, _name, _value

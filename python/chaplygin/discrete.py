@@ -292,26 +292,42 @@ def fate_phase(sys, qplus, max_collisions, *, reversal_cap=0,
                  max_collisions, reversal_cap, errors)
 
 
-def basins(sys, Omega0, V_lo, V_hi, n, max_collisions):
-    """discrete.basins(sys, Omega0, V_lo, V_hi, n, max_collisions)
+def basins(sys, Omega0, V_lo, V_hi, n, max_collisions, *, errors='raise'):
+    """discrete.basins(sys, Omega0, V_lo, V_hi, n, max_collisions, *,
+    errors='raise')
 
-    Figure 3: the fates of the n post-collision states {D+, V_i, 0, Omega0},
-    V_i = V_lo + (V_hi - V_lo) i/(n - 1) (the library's grid), as a
-    structured array of Fate.dtype of shape (n,); the loop is the
-    library's.  Raises the status's exception (nothing is computed then).
+    Figure 3: the fates of the n post-collision states {D+, V_i, 0, Omega0}
+    on the library's grid V_i = V_lo + (V_hi - V_lo) i/(n - 1) (the ends
+    exact; also where V_hi - V_lo overflows), as a structured array of
+    Fate.dtype of shape (n,); the loop is the library's, each point in the
+    units of its velocity scaling and its fate in the physical ones.  A
+    point that fails (V_i = 0: StateError; a final energy beyond the
+    doubles: RangeError) fails alone: its row is zero.  errors='raise'
+    raises the first failure's exception (statuses and partial attached);
+    errors='return' returns (fates, status).
 
     C: int chaplygin_discrete_basins(const chaplygin_discrete *sys,
     double Omega0, double V_lo, double V_hi, size_t n,
-    unsigned long max_collisions, chaplygin_fate *fates)
+    unsigned long max_collisions, chaplygin_fate *fates, int *status,
+    int *scale)
     """
+    _check_errors(errors)
     _system(sys)
     n = int(_as_int('n', n, _scalar_dtype('size_t')))
     out = np.zeros(n, Fate.dtype)
+    status = np.zeros(n, np.intc)
     rc = _lib.chaplygin_discrete_basins(
         sys._c, Omega0, V_lo, V_hi, n, max_collisions,
-        _ffi.cast('chaplygin_fate *', _ptr(out)) if n else _NULL)
-    if rc:
-        _fail(rc, 'chaplygin_discrete_basins')
+        _ffi.cast('chaplygin_fate *', _ptr(out)) if n else _NULL,
+        _ffi.cast('int *', _ptr(status)) if n else _NULL, _NULL)
+    if rc and (not n or not status.any()):
+        status[...] = rc            # a failure of the call as a whole
+    if rc and errors == 'raise':
+        flat = np.flatnonzero(status)
+        _fail(rc, 'chaplygin_discrete_basins', statuses=status, partial=out,
+              index=int(flat[0]) if flat.size else None)
+    if errors == 'return':
+        return _nt(('fates', 'status'))(out, status)
     return out
 
 

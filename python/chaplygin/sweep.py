@@ -4,14 +4,15 @@ y = (1/Delta)^2 >= 0.
   sigma4(x, y, dir)   Fig. 2(a): sigma4 (3.10) over x for each y
   stability(x, y)     Fig. 2(b): the stability regions on the grid x by y
 
-Both call the library's own array functions (one call per y for sigma4).
+Both call the library's own array functions (one call per y for sigma4);
+grid_point (also chaplygin.grid_point) is the grid of every sweep.
 """
 import numpy as np
 
 from ._core import (_ffi, _lib, _NULL, _fail, _as_float, _ptr, _nt,
                     _check_errors)
 
-__all__ = ['sigma4', 'stability']
+__all__ = ['sigma4', 'stability', 'grid_point']
 
 
 def sigma4(x, y, dir, *, errors='raise'):
@@ -88,3 +89,32 @@ def stability(x, y):
     if rc:
         _fail(rc, 'chaplygin_sweep_stability')
     return region
+
+
+def grid_point(lo, hi, n, i):
+    """grid_point(lo, hi, n, i)
+
+    The i-th of the n points of the library's uniform grid from lo to hi
+    (the grid of every sweep and of discrete.basins): lo, lo + (hi - lo)
+    i/(n - 1), ..., hi, the ends exact (also where hi - lo overflows).  i
+    may be an array of indices: an array of the points (the loop in
+    Python, one C call per point).  DomainError for lo or hi not finite,
+    InvalidArgumentError for n = 0 or i outside 0 .. n-1.
+
+    C: int chaplygin_grid_point(double lo, double hi, size_t n, size_t i,
+    double *v)
+    """
+    n = int(n)
+    idx = np.asarray(i)
+    if idx.dtype.kind not in 'iu':
+        raise TypeError('grid_point: i is an integer or an array of them')
+    if n < 0 or (idx < 0).any():
+        _fail(_lib.CHAPLYGIN_EINVAL, 'chaplygin_grid_point')
+    v = _ffi.new('double *')
+    out = np.empty(idx.shape, np.float64)
+    for k, ik in np.ndenumerate(idx):
+        rc = _lib.chaplygin_grid_point(float(lo), float(hi), n, int(ik), v)
+        if rc:
+            _fail(rc, 'chaplygin_grid_point')
+        out[k] = v[0]
+    return out if idx.ndim else float(out)
