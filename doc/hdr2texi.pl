@@ -19,9 +19,12 @@
 #                       header does not declare is an error
 #   --name=PATH         the header's name in the generated file's comment
 #                       (default: HEADER as given)
+#   --prefix=P          identifiers starting with P are code by themselves
+#                       (repeatable; default chaplygin_ and CHAPLYGIN_)
 #   --list              instead of Texinfo, print the documented
 #                       declarations, one per line: `function NAME',
-#                       `type NAME', `macro NAME'
+#                       `type NAME', `macro NAME' (also when there are
+#                       errors, which it reports as below)
 # Any error (an undocumented function, an unknown @word, unbalanced markup)
 # is reported as HEADER:LINE: message, and the exit status is 1 with
 # nothing on standard output.
@@ -73,11 +76,11 @@
 #  - a blank line is a blank line; other lines are paragraph text.
 # Inline, in paragraph text:
 #    $...$            @math{...}; inside, {...} after ^ or _ is a TeX group,
-#                     other braces are literal, `x' is @code{x}
+#                     other braces are literal, `x` is @code{x}
 #    `x`              @code{x}
 #    @NAME            @var{NAME}, NAME a parameter of the function
-#    chaplygin_x, CHAPLYGIN_X (any identifier with the prefixes given by
-#                     PREFIXES below) -> @code{...}
+#    chaplygin_x, CHAPLYGIN_X (an identifier with a prefix of --prefix)
+#                     @code{...}
 #    @pxref @ref @xref @samp @file @command @option @url{...}: as they are
 #    @emph @dfn @strong @var @code{...}: as they are, the argument marked
 #                     up in turn;  @dots{} @{ @} @@ @: @. @'e as they are
@@ -87,7 +90,7 @@
 use strict;
 use warnings;
 
-my @PREFIXES = ('chaplygin_', 'CHAPLYGIN_');
+my @PREFIXES;
 my %RAW_ARG = map { $_ => 1 } qw(pxref ref xref samp file command option url);
 my %TEXT_ARG = map { $_ => 1 } qw(emph dfn strong var code);
 my %LINE_CMD = map { $_ => 1 } qw(noindent cindex subheading table item end);
@@ -96,12 +99,14 @@ my (%opt, @only, %split);
 for my $a (@ARGV) {
   if ($a =~ /^--(chapter|concordance|name)=(.*)$/s) { $opt{$1} = $2 }
   elsif ($a =~ /^--only=(.+)$/s) { push @only, $1 }
+  elsif ($a =~ /^--prefix=(\w+)$/s) { push @PREFIXES, $1 }
   elsif ($a =~ /^--split=([^=]+)=(.+)$/s) { $split{$1} = $2 }
   elsif ($a eq '--list') { $opt{list} = 1 }
   elsif ($a =~ /^--/) { die "hdr2texi.pl: unknown option $a\n" }
   elsif (!defined $opt{header}) { $opt{header} = $a }
   else { die "hdr2texi.pl: one header only\n" }
 }
+@PREFIXES = ('chaplygin_', 'CHAPLYGIN_') unless @PREFIXES;
 defined $opt{header} or die "usage: hdr2texi.pl [OPTIONS] HEADER > OUT.texi\n";
 my $HDR = $opt{header};
 my $NAME = defined $opt{name} ? $opt{name} : $HDR;
@@ -473,45 +478,42 @@ sub math {
   return $o;
 }
 
-# Member doc comments of a struct or enum body (raw text, comments kept):
+# The members of a struct or enum body and their doc comments: a doc
+# comment documents the member it follows (the one being written, as an
+# enum's last constant without its comma, else the last one ended).
 # [[declaration, doc or undef], ...].
 sub members {
   my ($it) = @_;
   my $raw = $it->{raw};
   my $open = index $raw, '{';
-  my $close = rindex $raw, '}';
-  my $body = substr $raw, $open + 1, $close - $open - 1;
+  my $body = substr $raw, $open + 1, rindex($raw, '}') - $open - 1;
   my $sep = $it->{tag} eq 'enum' ? ',' : ';';
-  my (@m, $pending);
+  my (@m, @docs);
+  my $cur = '';
   pos($body) = 0;
   while (pos($body) < length $body) {
     if ($body =~ m{\G/\*(.*?)\*/}gcs) {
       my $c = $1;
       next unless $c =~ s/^\*(?!\*)//;
-      my $doc = join "\n", grep { $_ ne '' } map { s/^\s+|\s+$//gr } split /\n/, $c;
-      my $target = (defined $pending && $pending =~ /\S/) ? undef : $m[-1];
-      if (!$target) { $pending .= "\x00DOC\x00$doc\x00" ; next }
-      if (defined $target->[1]) { err($it->{start}, "two doc comments for member $target->[0]") }
-      $target->[1] = $doc;
+      my $k = $cur =~ /\S/ ? scalar(@m) : $#m;
+      if ($k < 0) { err($it->{start}, "$it->{name}: a doc comment before its first member"); next }
+      push @docs, [$k, join "\n", grep { $_ ne '' } map { s/^\s+|\s+$//gr } split /\n/, $c];
     } elsif ($body =~ m{\G([^/$sep]+|/)}gc) {
-      $pending .= $1;
-    } elsif ($body =~ m{\G\Q$sep\E}gc) {
-      push @m, member_of($pending);
-      $pending = '';
+      $cur .= $1;
+    } else {
+      $body =~ m{\G.}gcs;
+      push @m, $cur;
+      $cur = '';
     }
   }
-  push @m, member_of($pending) if defined $pending && $pending =~ /[^\s\x00]/
-    && $pending !~ /^\s*\x00DOC\x00/;
-  return @m;
-}
-
-sub member_of {
-  my ($p) = @_;
-  my $doc;
-  $doc = $1 while $p =~ s/\x00DOC\x00(.*?)\x00//s;
-  $p =~ s/\s+/ /g;
-  $p =~ s/^ | $//g;
-  return [$p, $doc];
+  push @m, $cur if $cur =~ /\S/;
+  my @out = map { [s/\s+/ /gr =~ s/^ | $//gr, undef] } @m;
+  for my $d (@docs) {
+    my $o = $out[$d->[0]];
+    err($it->{start}, "$it->{name}: two doc comments for the member $o->[0]") if defined $o->[1];
+    $o->[1] = $d->[1];
+  }
+  return @out;
 }
 
 # ---------------------------------------------------------------------
@@ -611,21 +613,21 @@ for my $n (@only, keys %split) {
 @overview or !defined $opt{chapter}
   or push @errors, "$HDR: --chapter needs an \@overview doc comment";
 
-if (@errors) {
-  print STDERR "$_\n" for @errors;
-  print STDERR "hdr2texi.pl: " . scalar(@errors) . " error(s); no output\n";
-  exit 1;
-}
-
 # ---------------------------------------------------------------------
 # Output.
 
 my @out;
-if ($opt{list}) {
+if ($opt{list}) {          # (what is documented, even when there are errors)
   for my $s (@sections) { push @out, "$_->[0] $_->[1]" for @{$s->{names} || []} }
   print "$_\n" for @out;
-  exit 0;
 }
+if (@errors) {
+  print STDERR "$_\n" for @errors;
+  print STDERR "hdr2texi.pl: " . scalar(@errors) . " error(s)"
+    . ($opt{list} ? "\n" : "; no output\n");
+  exit 1;
+}
+exit 0 if $opt{list};
 
 push @out, "\@c Generated by doc/hdr2texi.pl from the doc comments of $NAME:",
   "\@c do not edit; edit the header.", '';

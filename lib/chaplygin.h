@@ -12,8 +12,11 @@
    function stand above its definition in lib/.
 
    Doc comments open with two stars and document the declaration right
-   below them (no blank line between); other comments are not
-   documentation.  Markup, kept small: $...$ is a formula, @NAME a
+   below them (no blank line between), or, after a member of a struct or
+   enum, that member (the manual's table of members); other comments are
+   not documentation.  "@section TITLE" starts a section of the chapter,
+   "@fields" marks where a type's table of members goes, "@expansion" is a
+   macro's value.  Markup, kept small: $...$ is a formula, @NAME a
    parameter of the function, `x` code, a block indented by two more
    columns an example, "- " a list item; chaplygin_x and CHAPLYGIN_X are
    code by themselves; @pxref{...}, @ref{...}, @noindent and a few other

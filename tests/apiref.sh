@@ -41,10 +41,10 @@ notok () { fail=1; echo "not ok $1 - $2"; }
 missing () { comm -23 "$1" "$2" | sed 's/^/#   /'; }
 
 # 1. the generator reads the header
+$gen --list "$hdr" > "$tmp/list" 2> /dev/null
 if $gen --chapter='Library reference' --split='Printed forms=api-printed.texi' \
      "$hdr" > "$tmp/api.texi" 2> "$tmp/err1" \
-   && $gen --only='Printed forms' "$hdr" > "$tmp/api-printed.texi" 2> "$tmp/err2" \
-   && $gen --list "$hdr" > "$tmp/list" 2> "$tmp/err3"; then
+   && $gen --only='Printed forms' "$hdr" > "$tmp/api-printed.texi" 2> "$tmp/err2"; then
   ok 1 "doc/hdr2texi.pl reads lib/chaplygin.h: every function documented"
   gen_ok=1
 else
@@ -69,13 +69,13 @@ done
 
 # 4, 5. exported functions <-> doc comments
 sed -n 's/^function //p' "$tmp/list" | sort -u > "$tmp/documented"
-if [ $gen_ok = 1 ] && [ -z "$(comm -23 "$tmp/exported" "$tmp/documented")" ]; then
+if [ -z "$(comm -23 "$tmp/exported" "$tmp/documented")" ]; then
   ok 4 "every exported function ($(wc -l < "$tmp/exported" | tr -d ' ')) has a doc comment in lib/chaplygin.h"
 else
   missing "$tmp/exported" "$tmp/documented"
   notok 4 "exported functions without a doc comment in lib/chaplygin.h (listed above)"
 fi
-if [ $gen_ok = 1 ] && [ -z "$(comm -13 "$tmp/exported" "$tmp/documented")" ]; then
+if [ -z "$(comm -13 "$tmp/exported" "$tmp/documented")" ]; then
   ok 5 "every function documented in lib/chaplygin.h is exported"
 else
   missing "$tmp/documented" "$tmp/exported"
