@@ -1,8 +1,8 @@
 ## doc/local.mk -- the Texinfo manual, the concordance and the errata.
 info_TEXINFOS = doc/chaplygin.texi
 doc_chaplygin_TEXINFOS = doc/notation.texi doc/conventions.texi \
-	doc/methods.texi doc/concordance.texi doc/errata.texi doc/api.texi \
-	doc/api-printed.texi doc/accuracy.texi doc/figures.texi \
+	doc/methods.texi doc/concordance.texi doc/errata.texi \
+	doc/accuracy.texi doc/figures.texi \
 	doc/bench.texi doc/bench-table.texi doc/python.texi $(GENERATED_TEXINFOS)
 
 # Images are named by their file name alone (@image{fig6,...}) and found
@@ -17,7 +17,7 @@ MANUAL_FIGURES = doc/figures/fig2a.png doc/figures/fig2b.png \
 	doc/figures/fig9.png doc/figures/fig10.png \
 	doc/figures/work-precision.png
 EXTRA_DIST += $(MANUAL_FIGURES) doc/equations.txt doc/concordance.awk \
-	doc/man2texi.awk doc/check-html.pl doc/check-html.sh
+	doc/man2texi.awk doc/check-html.pl doc/check-html.sh doc/hdr2texi.pl
 dist_doc_DATA = doc/concordance.tsv
 
 # ---- generated parts of the manual --------------------------------------
@@ -25,10 +25,12 @@ dist_doc_DATA = doc/concordance.tsv
 # from its one source: the concordance chapter, the errata's audit table
 # and the library reference's links back to the concordance from
 # doc/concordance.tsv and doc/equations.txt (doc/concordance.awk); the
-# program reference from the man page's source (doc/man2texi.awk).  A
-# generator that fails leaves no file behind.
+# program reference from the man page's source (doc/man2texi.awk); the
+# library reference from the doc comments of lib/chaplygin.h
+# (doc/hdr2texi.pl).  A generator that fails leaves no file behind.
 GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
-	doc/concordance-macros.texi doc/program.texi
+	doc/concordance-macros.texi doc/program.texi doc/api.texi \
+	doc/api-printed.texi
 CONCORDANCE_INPUTS = $(srcdir)/doc/concordance.tsv \
 	$(srcdir)/doc/equations.txt $(srcdir)/doc/accuracy.texi \
 	$(srcdir)/doc/errata.texi $(wildcard $(srcdir)/tests/*.c)
@@ -46,6 +48,22 @@ $(srcdir)/doc/concordance-macros.texi: $(CONCORDANCE_INPUTS) \
 		$(srcdir)/doc/concordance.awk
 	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=macros $(CONCORDANCE_INPUTS) \
 	  > $@.tmp && mv $@.tmp $@
+# The chapter "Library reference", and its section of the paper's printed
+# forms in a file of its own; @implements_FUNCTION{} after the entry of
+# every function of the concordance.  (tests/apiref.sh runs the same
+# invocations and checks the files against them.)
+HDR2TEXI = perl $(srcdir)/doc/hdr2texi.pl --name=lib/chaplygin.h \
+	--concordance=$(srcdir)/doc/concordance.tsv
+APIREF_INPUTS = $(srcdir)/lib/chaplygin.h $(srcdir)/doc/hdr2texi.pl \
+	$(srcdir)/doc/concordance.tsv
+$(srcdir)/doc/api.texi: $(APIREF_INPUTS)
+	$(AM_V_GEN)$(HDR2TEXI) --chapter='Library reference' \
+	  --split='Printed forms=api-printed.texi' $(srcdir)/lib/chaplygin.h \
+	  > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+$(srcdir)/doc/api-printed.texi: $(APIREF_INPUTS)
+	$(AM_V_GEN)$(HDR2TEXI) --only='Printed forms' \
+	  $(srcdir)/lib/chaplygin.h \
+	  > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 # @pkgdatadir@ reads "pkgdatadir" in the manual (the man page gets the
 # configured directory).
 $(srcdir)/doc/program.texi: $(srcdir)/tools/chaplygin.1.in \

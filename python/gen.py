@@ -27,9 +27,10 @@ of the binding's own C functions python/src/chp_python.h), and writes
   PYOUT (python/chaplygin/_generated.py)
       one Python function per function of HEADER, with the Pythonic name
       (chaplygin_discrete_sigma4 -> discrete.sigma4), keyword arguments, the
-      header's comment as docstring, a scalar fast path calling the C function
-      once and a vectorised path through the chpv_ loop; plus the table SPEC
-      that describes every parameter (python/chaplygin/_core.py reads it).
+      header's doc comment as docstring (its markup stripped to plain text),
+      a scalar fast path calling the C function once and a vectorised path
+      through the chpv_ loop; plus the table SPEC that describes every
+      parameter (python/chaplygin/_core.py reads it).
 
 How parameters become Python (from the C declaration alone):
   double / int / unsigned / unsigned long x      input x (scalar or array)
@@ -45,11 +46,30 @@ How parameters become Python (from the C declaration alone):
                                                  precision=
 A function with a size_t parameter (a buffer length), a const pointer to a
 scalar (an array of caller-chosen length), a parameter of any other type
-(char *, a function pointer, ...) or listed in MANUAL has no generated
+(char *, a function pointer, ...) or one annotated (inout) has no generated
 wrapper (and no C loop if a parameter is of another type): python/chaplygin/*.py defines it by hand, and the test
-python/tests/test_reachable.py fails until it does.  What the signature cannot
-say (an output that may be NULL, one written only when a flag is set, a
-default) is in OPTIONAL, CONDITIONAL, COUNTED and DEFAULTS below.
+python/tests/test_reachable.py fails until it does.
+
+What the signature cannot say is annotated in the function's doc comment in
+HEADER (the comment that starts with two stars right above the prototype),
+one line per parameter, GObject-Introspection style:
+
+    @NAME: (KEY=VALUE ...)
+
+  (optional=True|False)  an output that may be NULL: keyword return_NAME=,
+                         computed and returned by default or not
+  (default=LITERAL)      an input's default (a Python literal); None: the
+                         input may be NULL
+  (if=FLAG)              an output written only when the output FLAG is
+                         nonzero: None in a scalar call, NaN or 0 in a
+                         vectorised one
+  (count=N)              an output array of which only the first N (an
+                         output) elements are written
+  (inout)                read and written: the function is wrapped by hand
+
+An annotation that names no parameter of the function it documents, one in a
+doc comment that documents no function, an unknown key, or a key that does
+not fit the parameter's kind is an error: gen.py stops (exit status 1).
 """
 
 import keyword
@@ -58,58 +78,30 @@ import re
 import sys
 
 # ---------------------------------------------------------------------------
-# What the signatures cannot say.
+# What the signatures cannot say: filled from the header's annotations
+# (read_annotations), by function, then by parameter.
 
 # Functions wrapped by hand (besides those with a size_t parameter or an
-# array of caller-chosen length): their pointer arguments are read and
-# written, or point to more than one element.
-MANUAL = {
-    'chaplygin_discrete_step_eh_n',   # st is read and written (in place)
-    'chaplygin_smooth_path_advance',  # path is read and written (in place)
-}
+# array of caller-chosen length): a pointer argument is read and written
+# (inout).
+MANUAL = set()
 
 # Outputs that may be NULL: a keyword return_NAME=default chooses whether
 # they are computed (and returned).  An output the paper gives no formula
 # for (the printed forms' dtau) must be NULL: default False.
-OPTIONAL = {
-    'chaplygin_discrete_sigma4': {'sigma': False},
-    'chaplygin_discrete_heading': {'dtheta': True, 'dtau': True},
-    'chaplygin_printed_discrete_heading': {'dtheta': True, 'dtau': False},
-    'chaplygin_smooth_closed_form': {'dtau': True},
-    'chaplygin_printed_smooth_closed_form': {'dtau': False},
-    'chaplygin_discrete_poincare': {'dtau': True},
-    'chaplygin_discrete_step': {'ev': True},
-    'chaplygin_massless_step': {'ev': True},
-    'chaplygin_discrete_fixed_point': {'tau_star': True},
-}
+OPTIONAL = {}
 
 # Outputs written only when another output (a flag) is nonzero: None in a
 # scalar call, NaN (floats) or 0 (integers) in a vectorised one, where the
 # flag says so.
-CONDITIONAL = {
-    'chaplygin_smooth_reversal': {'Sc': 'reverses'},
-    'chaplygin_smooth_reversal_eh': {'Sc': 'reverses'},
-    'chaplygin_discrete_collisions_before_reversal': {'n': 'reverses'},
-    'chaplygin_printed_discrete_collisions_before_reversal': {'n': 'reverses'},
-    'chaplygin_discrete_stability_boundary': {'ymin': 'stabilizable'},
-}
+CONDITIONAL = {}
 
 # Output arrays of which only the first COUNT elements are written: a
 # scalar call returns those; a vectorised one NaN-pads the rest.
-COUNTED = {
-    'chaplygin_discrete_turning_points': {'Dc': 'n_real'},
-}
+COUNTED = {}
 
 # Defaults of inputs (Python literals); an input that may be NULL has None.
-DEFAULTS = {
-    'chaplygin_discrete_step': {'request': "'all'"},
-    'chaplygin_massless_step': {'request': "'all'"},
-    'chaplygin_discrete_fixed_point': {'theta': '0.0', 'tau': '0.0',
-                                       'peg': 'None'},
-    'chaplygin_discrete_state_from_phase': {'tau': '0.0', 'peg': 'None'},
-    'chaplygin_massless_state_from_phase': {'tau': '0.0', 'peg': 'None'},
-    'chaplygin_smooth_path_init': {'tau': '0.0', 'C': 'None'},
-}
+DEFAULTS = {}
 
 # Python names for C parameter names that are Python keywords.
 RENAME = {'in': 'state', 'lambda': 'lambda_'}
@@ -194,25 +186,6 @@ def scan(text):
     return items
 
 
-def clean_comment(body):
-    """The text of a C comment: the first line, and the others without the
-    leading ' * ' of a starred comment or their common indentation."""
-    lines = [l.rstrip() for l in body.split('\n')]
-    first, rest = lines[0].strip(), lines[1:]
-    starred = [l for l in rest if l.strip()] and all(
-        re.match(r'^\s*\*( |$)', l) for l in rest if l.strip())
-    if starred:
-        rest = [re.sub(r'^\s*\* ?', '', l) for l in rest]
-    ind = min((len(l) - len(l.lstrip()) for l in rest if l.strip()),
-              default=0)
-    out = [first] + [l[ind:] for l in rest]
-    while out and not out[0].strip():
-        out.pop(0)
-    while out and not out[-1].strip():
-        out.pop()
-    return '\n'.join(out)
-
-
 def cdef_text(text):
     """TEXT without comments, preprocessor lines and the C++ guards."""
     text = strip_cplusplus(text)
@@ -224,6 +197,157 @@ def int_defines(text):
     takes them (array lengths of the other headers' structures)."""
     return ''.join(m.group(0) + '\n' for m in re.finditer(
         r'^#define [A-Z][A-Z0-9_]* [0-9]+$', text, re.M))
+
+
+class HeaderError(Exception):
+    pass
+
+
+ANNOTATION = re.compile(r'^@(\w+):\s*\((.*)\)\s*$')
+
+
+def doc_comments(text):
+    """{function name: (lines, line number)} of the doc comments of TEXT:
+    a comment opened by two stars documents the declaration right below it
+    (no blank line between), as doc/hdr2texi.pl reads them.  LINES: the
+    comment's lines, the first after its opening, the others without the
+    three columns of its margin.  A doc comment with annotations that
+    documents no function is an error."""
+    text = strip_cplusplus(text)
+    docs = {}
+    for m in re.finditer(r'/\*\*(?!\*)(.*?)\*/', text, re.S):
+        line = text.count('\n', 0, m.start()) + 1
+        col = m.start() - (text.rfind('\n', 0, m.start()) + 1)
+        raw = m.group(1).split('\n')
+        lines = [raw[0].strip()]
+        for l in raw[1:]:
+            l = l.rstrip()
+            lines.append(l[col + 3:] if l[:col + 3].strip() == '' else l.strip())
+        while lines and not lines[-1]:
+            lines.pop()
+        rest = text[m.end():]
+        gap = re.match(r'[ \t]*\n?[ \t]*', rest).group(0)
+        after = rest[len(gap):]
+        decl = after[:after.find(';') + 1] if ';' in after else ''
+        fm = re.match(r'(?:const\s+)?\w[\w\s]*?[\s*]\s*(chaplygin_\w+)\s*\(',
+                      decl)
+        if '\n' in gap and fm and not re.match(r'(typedef|enum|struct)\b',
+                                              decl):
+            docs[fm.group(1)] = (lines, line)
+        elif any(ANNOTATION.match(l) for l in lines):
+            raise HeaderError('line %d: annotations in a doc comment that '
+                              'documents no function' % line)
+    return docs
+
+
+def read_annotations(funcs, docs):
+    """Fill MANUAL, OPTIONAL, CONDITIONAL, COUNTED and DEFAULTS from the
+    annotation lines of the doc comments DOCS of FUNCS."""
+    byname = {f.cname: f for f in funcs}
+    for cname, (lines, line) in docs.items():
+        f = byname.get(cname)
+        for l in lines:
+            m = ANNOTATION.match(l)
+            if not m:
+                continue
+            where = 'line %d (%s): @%s' % (line, cname, m.group(1))
+            if f is None:
+                raise HeaderError('%s: %s is not a function of the header'
+                                  % (where, cname))
+            params = {p.cname: p for p in f.params}
+            p = params.get(m.group(1))
+            if p is None:
+                raise HeaderError('%s: %s has no parameter %s'
+                                  % (where, cname, m.group(1)))
+            items = m.group(2).split()
+            if not items:
+                raise HeaderError('%s: an empty annotation' % where)
+            outs = ('out', 'out_array', 'out_struct')
+            for item in items:
+                key, eq, value = item.partition('=')
+                if key == 'inout' and not eq:
+                    MANUAL.add(cname)
+                elif key == 'optional' and value in ('True', 'False'):
+                    if p.kind not in outs:
+                        raise HeaderError('%s: (optional) on an input'
+                                          % where)
+                    OPTIONAL.setdefault(cname, {})[p.cname] = value == 'True'
+                elif key in ('if', 'count') and value:
+                    if value not in params or params[value].kind != 'out':
+                        raise HeaderError('%s: (%s=%s) names no scalar '
+                                          'output of %s' % (where, key,
+                                                            value, cname))
+                    if key == 'count' and p.kind != 'out_array':
+                        raise HeaderError('%s: (count) on a parameter that '
+                                          'is no output array' % where)
+                    if key == 'if' and p.kind not in outs:
+                        raise HeaderError('%s: (if) on an input' % where)
+                    table = CONDITIONAL if key == 'if' else COUNTED
+                    table.setdefault(cname, {})[p.cname] = value
+                elif key == 'default' and value:
+                    if p.kind not in ('in', 'in_array', 'in_struct'):
+                        raise HeaderError('%s: (default) on a parameter that '
+                                          'is no input' % where)
+                    DEFAULTS.setdefault(cname, {})[p.cname] = value
+                else:
+                    raise HeaderError('%s: unknown annotation %r (known: '
+                                      'optional=True|False, default=LITERAL,'
+                                      ' if=FLAG, count=N, inout)'
+                                      % (where, item))
+
+
+def _plain_inline(text):
+    """The inline markup of the doc comment TEXT stripped to plain text."""
+    text = text.replace('``', '"').replace("''", '"')
+
+    def math(m):
+        return re.sub(r'`([^`]*)`', r'\1', m.group(1)).replace('\\prime',
+                                                               "'")
+    text = re.sub(r'\$([^$]*)\$', math, text)
+    text = re.sub(r'`([^`]*)`', r'\1', text)
+    refs = {'pxref': 'see %s', 'xref': 'See %s', 'ref': '%s',
+            'samp': "'%s'", 'dots': '...'}
+    prev = None
+    while prev != text:
+        prev = text
+        text = re.sub(r'@(\w+)\{([^{}]*)\}',
+                      lambda m: refs.get(m.group(1), '%s') % m.group(2)
+                      if m.group(1) != 'dots' else '...', text)
+    text = re.sub(r'@(\w+)', lambda m: m.group(1), text)
+    text = re.sub(r"@'(\w)", r'\1', text)
+    text = text.replace('@:', '').replace('@.', '.')
+    text = re.sub(r'@([{}@])', r'\1', text)
+    return re.sub(r'(?<=\w)--(?=\w)', '-', text)
+
+
+def plain_doc(lines):
+    """The doc comment LINES as a docstring: plain text, without the
+    annotations and the manual's index entries; examples (lines indented
+    by 2 or more) as they are."""
+    out, para = [], []
+
+    def flush():
+        if para:
+            out.extend(_plain_inline('\n'.join(para)).split('\n'))
+            del para[:]
+    for l in lines:
+        if l.startswith('  ') or not l.strip():
+            flush()
+            out.append(l if l.strip() else '')
+            continue
+        if ANNOTATION.match(l) or re.match(r'@(noindent|cindex|table|end)\b',
+                                           l):
+            flush()
+            continue
+        m = re.match(r'@(subheading|item)\s+(.*)', l)
+        if m:
+            flush()
+            out.append(_plain_inline(m.group(2)))
+            continue
+        para.append(l)
+    flush()
+    text = re.sub(r'\n{3,}', '\n\n', '\n'.join(out)).strip('\n')
+    return text
 
 
 class Param:
@@ -303,21 +427,7 @@ def parse(header_text):
     from pycparser import c_ast, c_parser, c_generator
     text = strip_cplusplus(header_text)
     items = scan(text)
-    # docs: the latest top-level comment, kept over a group of prototypes
-    docs = {}
-    pending = None
-    for kind, t in items:
-        if kind == 'comment':
-            body = clean_comment(t)
-            if re.fullmatch(r'[-\s]*', body):
-                continue
-            pending = body
-        else:
-            m = re.search(r'\b(chaplygin_\w+)\s*\(', t)
-            if m and not t.startswith('typedef') and '{' not in t:
-                docs[m.group(1)] = pending
-            else:
-                pending = None
+    docs = doc_comments(header_text)
     src = 'typedef unsigned long size_t;\n' + \
         '\n'.join(t for kind, t in items if kind == 'decl')
     ast = c_parser.CParser().parse(src)
@@ -355,8 +465,13 @@ def parse(header_text):
                 continue
             params.append(classify(p, structs, enums))
         proto = gen.visit(ext).replace('\n', ' ')
-        funcs.append(Function(ext.name, ret, params, docs.get(ext.name),
+        doc = docs.get(ext.name)
+        if doc is None:
+            raise HeaderError('%s has no doc comment' % ext.name)
+        funcs.append(Function(ext.name, ret, params,
+                              plain_doc(doc[0]),
                               proto))
+    read_annotations(funcs, docs)
     m = re.search(r'#define\s+CHAPLYGIN_OPTIONS_DEFAULT\s*\{([^}]*)\}',
                   header_text)
     options_default = [t.strip() for t in m.group(1).split(',')] if m else None
@@ -697,8 +812,11 @@ def main(argv):
     for path in extra.split(','):       # the binding's other headers
         with open(path) as fh:
             etext += fh.read() + '\n'
-
-    funcs, structs, enums, options_default = parse(htext)
+    try:
+        funcs, structs, enums, options_default = parse(htext)
+    except HeaderError as e:
+        sys.stderr.write('gen.py: %s: %s\n' % (header, e))
+        return 1
     loops = [f for f in funcs if looped(f)]
 
     def write(path, text):

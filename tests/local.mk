@@ -31,7 +31,7 @@ UNIT_CHECKS = \
 	tests/test_alloc \
 	tests/test_printed
 check_PROGRAMS += $(UNIT_CHECKS)
-TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh
+TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh tests/apiref.sh
 
 # The scene engine (lib/scene/): its reader and numbers against its
 # internal structure, its public interface from outside.
@@ -116,7 +116,7 @@ tests_test_energy_SOURCES = tests/test_energy.c
 tests_test_energy_CFLAGS = $(TEST_CFLAGS)
 tests_test_energy_LDADD = $(TEST_LDADD)
 
-EXTRA_DIST += tests/concordance.sh tests/layers.sh tests/fp-digest.sh tests/ref/make_refs.py tests/ref/README
+EXTRA_DIST += tests/concordance.sh tests/layers.sh tests/apiref.sh tests/fp-digest.sh tests/ref/make_refs.py tests/ref/README
 
 # the extremes of issue 6: every entry point, each method, at the edges of
 # its domain (documented result with its accuracy, or a documented status)
