@@ -152,7 +152,9 @@ sub check_record {
   my @fn = names($f->{functions});
   fail("$at: functions is empty") unless @fn;
   for (@fn) { fail("$at: function $_ is not chaplygin_*") unless /^chaplygin_/; }
-  fail("$at: tests is empty (every label has its test case)") unless names($f->{tests});
+  (my $tcase = "eq_$r->{label}") =~ s/\./_/;
+  fail("$at: tests must start with the label's own test case $tcase")
+    unless ((names($f->{tests}))[0] // '') eq $tcase;
   for (names($f->{errata})) { fail("$at: erratum '$_' is not E<number>") unless /^E[1-9][0-9]*\z/; }
   my $pf = $f->{printed_function};
   if ($f->{errata} eq '-') {
