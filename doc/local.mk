@@ -16,38 +16,38 @@ MANUAL_FIGURES = doc/figures/fig2a.png doc/figures/fig2b.png \
 	doc/figures/fig6.png doc/figures/fig7.png doc/figures/fig8.png \
 	doc/figures/fig9.png doc/figures/fig10.png \
 	doc/figures/work-precision.png
-EXTRA_DIST += $(MANUAL_FIGURES) doc/equations.txt doc/concordance.awk \
+EXTRA_DIST += $(MANUAL_FIGURES) \
 	doc/man2texi.awk doc/check-html.pl doc/check-html.sh doc/hdr2texi.pl
+# Generated from lib/labels.txt (below), installed and distributed.
 dist_doc_DATA = doc/concordance.tsv
 
 # ---- generated parts of the manual --------------------------------------
 # Written into the source tree and distributed (like version.texi), each
-# from its one source: the concordance chapter, the errata's audit table
-# and the library reference's links back to the concordance from
-# doc/concordance.tsv and doc/equations.txt (doc/concordance.awk); the
-# program reference from the man page's source (doc/man2texi.awk); the
-# library reference from the doc comments of lib/chaplygin.h
-# (doc/hdr2texi.pl).  A generator that fails leaves no file behind.
+# from its one source: from the registry of the paper's labels,
+# lib/labels.txt (by lib/labels.pl), the concordance chapter, the errata's
+# audit table, the library reference's links back to the concordance and
+# doc/concordance.tsv; the program reference from the man page's source
+# (doc/man2texi.awk); the library reference from the doc comments of
+# lib/chaplygin.h (doc/hdr2texi.pl).  A generator that fails leaves no file
+# behind (lib/labels.pl -o renames a complete temporary file).
 GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/concordance-macros.texi doc/program.texi doc/api.texi \
 	doc/api-printed.texi
-CONCORDANCE_INPUTS = $(srcdir)/doc/concordance.tsv \
-	$(srcdir)/doc/equations.txt $(srcdir)/doc/accuracy.texi \
-	$(srcdir)/doc/errata.texi $(wildcard $(srcdir)/tests/*.c)
-CONCORDANCE_GEN = $(AWK) -f $(srcdir)/doc/concordance.awk
+LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl
+LABELS_GEN = $(PERL) $(srcdir)/lib/labels.pl
+CONCORDANCE_INPUTS = $(srcdir)/doc/accuracy.texi $(srcdir)/doc/errata.texi \
+	$(wildcard $(srcdir)/tests/*.c)
 
-$(srcdir)/doc/concordance-entries.texi: $(CONCORDANCE_INPUTS) \
-		$(srcdir)/doc/concordance.awk
-	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=entries $(CONCORDANCE_INPUTS) \
-	  > $@.tmp && mv $@.tmp $@
-$(srcdir)/doc/audit-table.texi: $(CONCORDANCE_INPUTS) \
-		$(srcdir)/doc/concordance.awk
-	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=audit $(CONCORDANCE_INPUTS) \
-	  > $@.tmp && mv $@.tmp $@
-$(srcdir)/doc/concordance-macros.texi: $(CONCORDANCE_INPUTS) \
-		$(srcdir)/doc/concordance.awk
-	$(AM_V_GEN)$(CONCORDANCE_GEN) -v part=macros $(CONCORDANCE_INPUTS) \
-	  > $@.tmp && mv $@.tmp $@
+$(srcdir)/doc/concordance-entries.texi: $(LABELS_DEPS) $(CONCORDANCE_INPUTS)
+	$(AM_V_GEN)$(LABELS_GEN) -o $@ entries $(srcdir)/lib/labels.txt \
+	  $(CONCORDANCE_INPUTS)
+$(srcdir)/doc/audit-table.texi: $(LABELS_DEPS) $(srcdir)/doc/errata.texi
+	$(AM_V_GEN)$(LABELS_GEN) -o $@ audit $(srcdir)/lib/labels.txt \
+	  $(srcdir)/doc/errata.texi
+$(srcdir)/doc/concordance-macros.texi: $(LABELS_DEPS)
+	$(AM_V_GEN)$(LABELS_GEN) -o $@ macros $(srcdir)/lib/labels.txt
+$(srcdir)/doc/concordance.tsv: $(LABELS_DEPS)
+	$(AM_V_GEN)$(LABELS_GEN) -o $@ tsv $(srcdir)/lib/labels.txt
 # The chapter "Library reference", and its section of the paper's printed
 # forms in a file of its own; @implements_FUNCTION{} after the entry of
 # every function of the concordance.  (tests/apiref.sh runs the same

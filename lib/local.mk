@@ -49,6 +49,10 @@ lib_libchaplygin_la_SOURCES =
 lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
 lib_libchaplygin_la_LDFLAGS = -version-info 1:0:0 -export-symbols-regex '^chaplygin_'
 include_HEADERS = lib/chaplygin.h
+
+# The registry of the paper's equation labels and its reader/generator
+# (doc/local.mk's generated files, tests/concordance.sh).
+EXTRA_DIST += lib/labels.txt lib/labels.pl
 pkgconfig_DATA = chaplygin.pc
 
 

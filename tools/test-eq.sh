@@ -1,8 +1,8 @@
 #!/bin/sh
 # test-eq.sh -- TAP tests of "chaplygin eq".
-#  - every label of --list evaluates at the inputs of its concordance row
-#    (doc/concordance.tsv; tests/concordance.sh checks the rest of that
-#    table);
+#  - --list lists the labels of the registry lib/labels.txt, in order, and
+#    every label evaluates at the inputs of its eq.example (read through
+#    lib/labels.pl; tests/concordance.sh checks the rest of the registry);
 #  - every row of tests/ref/eq.tsv: an output of a label, or of the paper's
 #    printed form, at points other than the unit tests', against a
 #    reference computed by another route (tests/ref/make_eq_refs.py, mpmath
@@ -20,12 +20,20 @@ set -u
 top_builddir=${top_builddir:-.}
 top_srcdir=${top_srcdir:-.}
 prog=$top_builddir/tools/chaplygin
-tsv=$top_srcdir/doc/concordance.tsv
 refs=$top_srcdir/tests/ref/eq.tsv
 tab=$(printf '\t')
 
 . "$top_srcdir/tools/tap-lib.sh"
 tap_start test-eq 29
+
+# The registry as doc/concordance.tsv's rows (label, functions, tests,
+# verification, errata, printed_function, eq.example), with its header.
+tsv=$tmp/labels.tsv
+if ! ${PERL:-perl} "$top_srcdir/lib/labels.pl" tsv "$top_srcdir/lib/labels.txt" > "$tsv"; then
+  echo "Bail out! lib/labels.pl cannot read lib/labels.txt"
+  exit 1
+fi
+n_labels=$(($(wc -l < "$tsv") - 1))
 
 # csv_get OUTPUT COLUMN: the COLUMN (value, printed, ...) of OUTPUT's row in
 # $tmp/out (eq --csv).
@@ -52,7 +60,7 @@ ok=1
 listed=$(tail -n +2 "$tmp/out" | cut -d, -f1 | tr '\n' ' ')
 expected=$(tail -n +2 "$tsv" | cut -f1 | tr '\n' ' ')
 test "$rc" -eq 0 && test "$listed" = "$expected" && ok=0
-result "$ok" "eq --list --csv lists the 43 labels of the concordance, in order"
+result "$ok" "eq --list --csv lists the $n_labels labels of lib/labels.txt, in order"
 
 # 2: every label evaluates at its concordance inputs
 bad=""
@@ -66,7 +74,7 @@ while IFS="$tab" read -r label args; do
   fi
 done < "$tmp/calls"
 ok=1; test -z "$bad" && ok=0
-result "$ok" "every label evaluates at its concordance inputs${bad:+ (failed:$bad)}"
+result "$ok" "every label evaluates at its eq.example inputs${bad:+ (failed:$bad)}"
 
 # 3: the reference table: every row within its tolerance
 n_rows=0; bad=""
@@ -88,7 +96,7 @@ while IFS="$tab" read -r label args output which ref tol route; do
     echo "# ($label) $args: $which $output = $got, reference $ref (tol $tol eps; $route)" >&2
   fi
 done < "$tmp/refs"
-ok=1; test -z "$bad" && test "$n_rows" -gt 43 && ok=0
+ok=1; test -z "$bad" && test "$n_rows" -gt "$n_labels" && ok=0
 result "$ok" "all $n_rows rows of tests/ref/eq.tsv within their tolerance${bad:+ (failed:$bad)}"
 
 # 4: every label appears in the reference table, with and without printed rows

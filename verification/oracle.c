@@ -921,7 +921,7 @@ static const char *const qtexi[NQ] = {
 };
 
 /* The anchors of the tables of qtexi, for cross-references from the
-   concordance chapter (doc/concordance.awk reads them). */
+   concordance chapter (lib/labels.pl reads them). */
 static const char *const qanchor[NQ] = {
   "Accuracy of the heading increment",
   "Accuracy of the elapsed time",

@@ -9,6 +9,7 @@ paper's equation and the header, not from the program."""
 import csv
 import io
 import math
+import re
 import subprocess
 from fractions import Fraction
 
@@ -23,6 +24,16 @@ from conftest import src
 def num(text):
     """A number of the table (decimal or p/q), correctly rounded."""
     return float(Fraction(text))
+
+
+def registry_labels():
+    """The paper's labels, in its order: the records '@ LABEL' of the
+    registry lib/labels.txt."""
+    with open(src('lib', 'labels.txt')) as fh:
+        return [line[2:].strip() for line in fh if line.startswith('@ ')]
+
+
+REGISTRY = registry_labels()
 
 
 def rows():
@@ -455,22 +466,37 @@ def eq_B_17(a):
     return m.dimensionalize(delta, v0, nd).as_dict(), {}
 
 
-LABELS = {
-    '2.1': eq_2_1, '2.2': eq_2_2, '2.3': eq_2_3, '2.4': eq_2_4,
-    '3.1': eq_3_1, '3.2': eq_3_2, '3.3': eq_3_3, '3.4': eq_3_4,
-    '3.5': eq_3_5, '3.6': eq_3_6, '3.7': eq_3_7, '3.8': eq_3_8,
-    '3.9': eq_3_9, '3.10': eq_3_10,
-    '3.11': lambda a: stable(a, 1), '3.12': lambda a: stable(a, -1),
-    '3.13': lambda a: reversal_range(a, -1),
-    '3.14': lambda a: reversal_range(a, 1), '3.15': eq_3_15,
-    '4.1': eq_4_1, 'A.1': eq_A_1, 'A.2': eq_A_2, 'A.3': eq_A_3,
-    'A.4': eq_A_4, 'A.5': eq_A_5, 'A.6': eq_A_6, 'B.1': eq_B_1,
-    'B.2': eq_B_2, 'B.3': lambda a: step_case(a, 0),
-    'B.4': lambda a: step_case(a, 1), 'B.5': eq_B_5, 'B.6': eq_B_6,
-    'B.7': eq_B_7, 'B.8': eq_B_8, 'B.9': eq_B_9, 'B.10': eq_B_10,
-    'B.11': eq_B_11, 'B.12': eq_B_12, 'B.13': eq_B_13, 'B.14': eq_B_14,
-    'B.15': eq_B_15, 'B.16': eq_B_16, 'B.17': eq_B_17,
-}
+def eq_3_11(a):
+    return stable(a, 1)
+
+
+def eq_3_12(a):
+    return stable(a, -1)
+
+
+def eq_3_13(a):
+    return reversal_range(a, -1)
+
+
+def eq_3_14(a):
+    return reversal_range(a, 1)
+
+
+def eq_B_3(a):
+    return step_case(a, 0)
+
+
+def eq_B_4(a):
+    return step_case(a, 1)
+
+
+# The evaluator of label 3.10 is eq_3_10, of B.2 eq_B_2, ...
+def evaluator_name(label):
+    return 'eq_' + label.replace('.', '_')
+
+
+LABELS = {label: globals()[evaluator_name(label)] for label in REGISTRY
+          if evaluator_name(label) in globals()}
 
 _PROGRAM_CACHE = {}
 
@@ -497,9 +523,17 @@ def same(x, y):
 
 
 def test_every_label_mapped():
+    """An evaluator for every label of the registry and for no other name,
+    and rows of tests/ref/eq.tsv for every label and no other."""
+    missing = [label for label in REGISTRY if label not in LABELS]
+    assert not missing, missing
+    names = {evaluator_name(label) for label in REGISTRY}
+    extra = sorted(n for n in globals() if re.fullmatch(r'eq_[0-9A-Z]+_[0-9]+', n)
+                   and n not in names)
+    assert not extra, extra
     labels = {r['label'] for r in ROWS}
-    assert labels <= set(LABELS), sorted(labels - set(LABELS))
-    assert len(labels) >= 43
+    assert labels == set(REGISTRY), (sorted(labels - set(REGISTRY)),
+                                     sorted(set(REGISTRY) - labels))
 
 
 @pytest.mark.parametrize('row', ROWS, ids=lambda r: '%s:%s:%s' % (

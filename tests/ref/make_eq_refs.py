@@ -63,6 +63,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import make_refs  # noqa: E402  (this project's own reference routes)
 
 OUT = "tests/ref/eq.tsv"
+# The paper's labels in its order: the registry's records "@ LABEL".
+REGISTRY = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "lib", "labels.txt")
 DPS = 50
 EPS = mpf(2) ** -52
 ROWS = []
@@ -1431,8 +1433,8 @@ def main():
             continue
         st()
         mp.dps = DPS
-    order = ["2.1", "2.2", "2.3", "2.4"] + ["3.%d" % k for k in range(1, 16)] + ["4.1"] + \
-        ["A.%d" % k for k in range(1, 7)] + ["B.%d" % k for k in range(1, 18)]
+    with open(REGISTRY) as f:
+        order = [line[2:].strip() for line in f if line.startswith("@ ")]
     ROWS.sort(key=lambda r: order.index(r[0]))          # stable within a label
     out = OUT if not only else OUT + ".partial"
     with open(out, "w") as f:

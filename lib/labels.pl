@@ -1,0 +1,456 @@
+#!/usr/bin/perl
+# labels.pl -- read the registry of the paper's equation labels
+# (lib/labels.txt, whose header documents its format) and write what is
+# generated from it.
+#
+#   perl lib/labels.pl [-o OUT] MODE lib/labels.txt [FILES...]
+#
+# MODE:
+#   list     the labels, one a line, in the registry's (the paper's) order;
+#   tsv      doc/concordance.tsv: the header line
+#            equation function unit_test verification erratum
+#            printed_function eq (tab-separated), then one row a label,
+#            lists comma-separated;
+#   entries  the nodes "Concordance of Section 2" ... "Appendix B" of the
+#            manual: one entry a label, with an anchor "Equation 3-10" and
+#            an index entry "(3.10)";
+#   audit    the table of the errata chapter's "Audit of every label";
+#   macros   the flag labelcount (@set labelcount N: the number of
+#            labels, for the manual's text) and one Texinfo macro a
+#            function of the registry, @implements_FUNCTION{}, which the
+#            function's entry in the library reference calls: its index
+#            entries "(3.10)" and a reference to the concordance entry;
+#   field NAME
+#            for a one-line field NAME (any, also an eq.* or tex.* one):
+#            LABEL<TAB>VALUE a line, for the labels that have it;
+#   check    read and check the registry only (exit status 0 or 1).
+# FILES (entries and audit; recognised by their names, in any order):
+#   doc/accuracy.texi  the oracle's tables (anchors, ordinary-set rows);
+#   doc/errata.texi    the errata menu (one line per erratum);
+#   tests/*.c          which file holds each Check test case.
+# With -o OUT the output is written to a temporary file beside OUT and
+# renamed to OUT once complete: a failure leaves no file behind (and OUT,
+# if it exists, untouched).  Any malformed input is an error (exit 1, a
+# message on stderr naming the file and line), never a silently
+# incomplete output.  Perl 5 core only.
+
+use strict;
+use warnings;
+use File::Basename qw(basename dirname);
+
+my $me = 'labels.pl';
+my $tmp;                        # the temporary output, removed on failure
+
+sub fail {
+  my ($msg) = @_;
+  if (defined $tmp) { close STDOUT; unlink $tmp; }
+  print STDERR "$me: $msg\n";
+  exit 1;
+}
+$SIG{__DIE__} = sub { fail($_[0] =~ s/\n\z//r) };
+$SIG{__WARN__} = sub { fail("warning: " . ($_[0] =~ s/\n\z//r)) };
+
+# ---- the registry --------------------------------------------------------
+
+# The fields lib/labels.pl knows, in the order the records keep them; all
+# are required.  The kinds: text (one line), list, block.
+my @FIELDS = (
+  [ 'title', 'text' ], [ 'functions', 'list' ], [ 'tests', 'list' ],
+  [ 'verification', 'list' ], [ 'errata', 'list' ],
+  [ 'printed_function', 'text' ], [ 'eq.inputs', 'text' ],
+  [ 'eq.outputs', 'text' ], [ 'eq.paper', 'text' ],
+  [ 'eq.example', 'text' ], [ 'printed', 'block' ],
+  [ 'implemented', 'block' ],
+);
+my %KIND = map { $_->[0] => $_->[1] } @FIELDS;
+# Namespaces of fields other consumers read (see the registry's header).
+my $FOREIGN = qr/^(?:eq|tex)\.[a-z0-9_.]+$/;
+
+# Reads the registry FILE: a list of records {label, line, fields => {}},
+# in the file's order.  Every rule of the header is enforced here.
+sub read_registry {
+  my ($file) = @_;
+  open my $fh, '<', $file or fail("$file: $!");
+  my (@recs, %seen, $rec, $block, $blockname);
+  my $n = 0;
+  my $where = sub { "$file:$n" };
+  my $end_block = sub {
+    if (defined $block) {
+      fail($where->() . ": field '$blockname' of ($rec->{label}) is an empty block")
+        if $block eq '';
+      $rec->{fields}{$blockname} = $block;
+      undef $block;
+    }
+  };
+  while (my $line = <$fh>) {
+    $n++;
+    fail($where->() . ": no newline at the end of the file") unless $line =~ s/\n\z//;
+    fail($where->() . ": a tab or carriage return") if $line =~ /[\t\r]/;
+    fail($where->() . ": trailing space") if $line =~ / \z/;
+    if (defined $block && $line =~ /^    (.*)\z/s) {
+      $block .= "$1\n";
+      next;
+    }
+    $end_block->();
+    next if $line =~ /^#/ || $line eq '';
+    if ($line =~ /^@ (.*)\z/) {
+      my $label = $1;
+      fail($where->() . ": '$label' is not a label such as 3.10 or B.2")
+        unless $label =~ /^(?:[1-9][0-9]*|[A-Z])\.[1-9][0-9]*\z/;
+      fail($where->() . ": label $label again (first at line $seen{$label})")
+        if $seen{$label};
+      $seen{$label} = $n;
+      $rec = { label => $label, line => $n, fields => {} };
+      push @recs, $rec;
+      next;
+    }
+    fail($where->() . ": a line outside a record: $line") unless $rec;
+    my ($name, $value) = $line =~ /^([a-z][a-z0-9_.]*):(?: (.*))?\z/
+      or fail($where->() . ": not a field (NAME: VALUE, or NAME: then a block): $line");
+    fail($where->() . ": unknown field '$name' in ($rec->{label}) (the fields are listed in the header)")
+      unless exists $KIND{$name} || $name =~ $FOREIGN;
+    fail($where->() . ": field '$name' again in ($rec->{label})")
+      if exists $rec->{fields}{$name};
+    if (defined $value) {
+      fail($where->() . ": field '$name' is a block (its lines indented by four spaces below '$name:')")
+        if ($KIND{$name} // '') eq 'block';
+      $rec->{fields}{$name} = $value;
+    } else {
+      fail($where->() . ": field '$name' is one line ('$name: VALUE')")
+        if exists $KIND{$name} && $KIND{$name} ne 'block';
+      ($block, $blockname) = ('', $name);
+    }
+  }
+  $end_block->();
+  close $fh;
+  fail("$file: no record") unless @recs;
+  check_record($file, $_) for @recs;
+  return @recs;
+}
+
+# A LIST field's names (an empty list for '-').
+sub names {
+  my ($v) = @_;
+  return () if $v eq '-';
+  return split /, /, $v;
+}
+
+sub check_record {
+  my ($file, $r) = @_;
+  my $f = $r->{fields};
+  my $at = "$file:$r->{line}: ($r->{label})";
+  for my $spec (@FIELDS) {
+    fail("$at: no field '$spec->[0]'") unless exists $f->{$spec->[0]};
+  }
+  for my $name (grep { $KIND{$_} eq 'list' } keys %KIND) {
+    my $v = $f->{$name};
+    fail("$at: $name '$v' is not '-' or names separated by ', '")
+      unless $v eq '-' || $v =~ /^[A-Za-z0-9_]+(?:, [A-Za-z0-9_]+)*\z/;
+    my %dup;
+    for (names($v)) { fail("$at: $name lists $_ twice") if $dup{$_}++; }
+  }
+  my @fn = names($f->{functions});
+  fail("$at: functions is empty") unless @fn;
+  for (@fn) { fail("$at: function $_ is not chaplygin_*") unless /^chaplygin_/; }
+  (my $tcase = "eq_$r->{label}") =~ s/\./_/;
+  fail("$at: tests must start with the label's own test case $tcase")
+    unless ((names($f->{tests}))[0] // '') eq $tcase;
+  for (names($f->{errata})) { fail("$at: erratum '$_' is not E<number>") unless /^E[1-9][0-9]*\z/; }
+  my $pf = $f->{printed_function};
+  if ($f->{errata} eq '-') {
+    fail("$at: printed_function must be '-' when errata is '-'") unless $pf eq '-';
+    fail("$at: eq.paper must be 'confirmed as printed' when errata is '-'")
+      unless $f->{'eq.paper'} eq 'confirmed as printed';
+  } else {
+    fail("$at: printed_function '-' with errata $f->{errata}") if $pf eq '-';
+    unless ($pf eq 'same' || $pf eq 'none') {
+      fail("$at: printed_function '$pf' is not same, none or chaplygin_printed_* names")
+        unless $pf =~ /^chaplygin_printed_[a-z0-9_]+(?:, chaplygin_printed_[a-z0-9_]+)*\z/;
+    }
+    for (names($f->{errata})) {
+      fail("$at: eq.paper does not name erratum $_") unless $f->{'eq.paper'} =~ /\b$_\b/;
+    }
+  }
+  for (qw(title eq.inputs eq.outputs eq.paper eq.example)) {
+    fail("$at: $_ is empty") if $f->{$_} eq '';
+  }
+}
+
+# ---- the other sources -----------------------------------------------------
+
+my (%tcase_file, %erratum_title, @acc, %acc_of, %have);
+
+sub read_other {
+  my ($path) = @_;
+  my $file = basename($path);
+  open my $fh, '<', $path or fail("$path: $!");
+  if ($file eq 'accuracy.texi') {
+    $have{accuracy} = 1;
+    my ($pending, $in) = ('', undef);
+    while (<$fh>) {
+      chomp;
+      if (/^\@anchor\{(Accuracy [^}]*)\}\z/) { $pending = $1; next; }
+      if ($pending ne '' && /^\@subheading \((.*?)\): (.*)\z/) {
+        my ($lbls, $q) = ($1, $2);
+        $q =~ s/, \@code\{.*\z//;
+        push @acc, { anchor => $pending, quantity => $q };
+        $pending = '';
+        $in = $#acc;
+        push @{ $acc_of{$_} }, $in for split /\)\/\(/, $lbls;
+        next;
+      }
+      if (defined $in && /^\@item ordinary \@tab /) {
+        my @c = split / \@tab /, $_;
+        @{ $acc[$in] }{qw(points max mean)} = @c[1 .. 3];
+        undef $in;
+      }
+    }
+    for (@acc) { fail("$path: table '$_->{anchor}' has no ordinary row") unless defined $_->{points}; }
+  } elsif ($file eq 'errata.texi') {
+    $have{errata} = 1;
+    while (<$fh>) {
+      chomp;
+      $erratum_title{$1} = $2 if /^\* Erratum (E[0-9]+):: +(.*)\z/;
+    }
+  } elsif ($file =~ /\.c\z/) {
+    $have{tests} = 1;
+    while (<$fh>) {
+      if (/tcase_create *\( *"([^"]*)"/ || /add *\( *s *, *"([^"]*)"/) {
+        $tcase_file{$1} = $file;
+      }
+    }
+  } else {
+    fail("$path: not doc/accuracy.texi, doc/errata.texi or a tests/*.c file");
+  }
+  close $fh;
+}
+
+# ---- Texinfo -----------------------------------------------------------------
+
+sub texi {
+  my ($s) = @_;
+  $s =~ s/([\@{}])/\@$1/g;
+  return $s;
+}
+
+# "3.10" -> "Equation 3-10" (anchors avoid periods, which Info reserves).
+sub anchor { my $a = shift; $a =~ s/\./-/; return "Equation $a"; }
+
+my %GROUP_TITLE = (
+  'Section 2'  => 'Section 2: the smooth sleigh',
+  'Section 3'  => 'Section 3: the discrete skate',
+  'Section 4'  => 'Section 4: the limit Delta -> 0',
+  'Appendix A' => 'Appendix A: the smooth sleigh in closed form',
+  'Appendix B' => "Appendix B: the discrete skate's return map",
+);
+
+sub group_of {
+  my ($label) = @_;
+  return "Section $1" if $label =~ /^([234])\./;
+  return "Appendix $1" if $label =~ /^([AB])\./;
+  fail("no concordance node for label $label (lib/labels.pl's groups)");
+}
+
+sub function_refs { join ', ', map { "\@ref{$_,,\@code{$_}}" } @_ }
+
+sub test_refs {
+  join ', ', map {
+    fail("unit test $_ is in no tests/*.c file") unless exists $tcase_file{$_};
+    "\@code{$_} (\@file{tests/$tcase_file{$_}})"
+  } @_;
+}
+
+sub verification_refs {
+  return 'none yet' unless @_;
+  return join ', ', map { "\@file{verification/$_.c}" } @_;
+}
+
+sub erratum_known {
+  fail("erratum $_[0] is not in the errata menu of doc/errata.texi")
+    unless exists $erratum_title{ $_[0] };
+}
+
+sub errata_refs { join ', ', map { erratum_known($_); "\@ref{Erratum $_}" } @_ }
+
+# An erratum's menu description without its leading "(2.1): " label.
+sub erratum_summary {
+  my ($id) = @_;
+  erratum_known($id);
+  (my $t = $erratum_title{$id}) =~ s/^\([^)]*\)(?:, \([^)]*\))*(?:--\([^)]*\))?: //;
+  return $t;
+}
+
+sub example_block { return "\@example\n" . texi($_[0]) . "\@end example\n"; }
+
+sub entry {
+  my ($r) = @_;
+  my ($l, $f) = ($r->{label}, $r->{fields});
+  my $s = '';
+  $s .= "\@anchor{" . anchor($l) . "}\n";
+  $s .= "\@subheading ($l) " . texi($f->{title}) . "\n";
+  $s .= "\@cindex ($l)\n\n";
+  $s .= "\@noindent\n\@strong{Paper} (as transcribed):\n" . example_block($f->{printed});
+  $s .= "\@noindent\n";
+  if ($f->{implemented} eq "as printed\n") {
+    $s .= "\@strong{Implemented}: as printed.\n";
+  } else {
+    $s .= "\@strong{Implemented}:\n" . example_block($f->{implemented});
+  }
+  $s .= "\n\@noindent\n";
+  $s .= "\@strong{Functions}: " . function_refs(names($f->{functions})) . ".\n";
+  $s .= "\@strong{Unit test}: " . test_refs(names($f->{tests})) . ".\n";
+  $s .= "\@strong{Verification}: " . verification_refs(names($f->{verification})) . ".\n";
+  $s .= "\n\@noindent\n\@strong{Errata}: ";
+  if ($f->{errata} eq '-') {
+    $s .= "none; confirmed as printed.\n";
+  } else {
+    $s .= errata_refs(names($f->{errata}));
+    my $pf = $f->{printed_function};
+    if ($pf eq 'same') {
+      $s .= "; the printed form has the same value wherever the equation applies";
+    } elsif ($pf eq 'none') {
+      $s .= "; the printed form cannot be evaluated (garbled, or not given)";
+    } else {
+      $s .= "; the printed form is evaluated by " . function_refs(names($pf));
+    }
+    $s .= ".\n";
+  }
+  $s .= "\n\@noindent\n";
+  my @t = @{ $acc_of{$l} // [] };
+  if (!@t) {
+    $s .= "\@strong{Accuracy}: not in the accuracy tables; the unit test compares with a reference computed by another route.\n";
+  } else {
+    $s .= "\@strong{Accuracy}, against the Arb oracle on its ordinary data set:";
+    $s .= join ';', map {
+      my $a = $acc[$_];
+      " $a->{quantity} at most $a->{max} ulps, mean $a->{mean}, $a->{points} points (\@pxref{$a->{anchor}})"
+    } @t;
+    $s .= ".\n";
+  }
+  $s .= "\n\@noindent\n\@strong{Evaluate}:\n\@example\n";
+  $s .= "chaplygin eq $l " . texi($f->{'eq.example'}) . "\n\@end example\n\n";
+  return $s;
+}
+
+sub printed_functions {
+  my ($pf) = @_;
+  return () if $pf eq '-' || $pf eq 'same' || $pf eq 'none';
+  return names($pf);
+}
+
+# The macro of function FN for the labels LABELS.
+sub macro {
+  my ($fn, $verb, @labels) = @_;
+  my $s = "\@macro implements_$fn\n";
+  $s .= "\@cindex ($_)\n" for @labels;
+  my $n = @labels;
+  $s .= $verb;
+  for my $k (0 .. $n - 1) {
+    $s .= ($k == 0 ? ' ' : $k == $n - 1 ? ' and ' : ', ')
+      . "($labels[$k]) (\@pxref{" . anchor($labels[$k]) . "})";
+  }
+  return "$s.\n\@end macro\n\n";
+}
+
+# ---- main ----------------------------------------------------------------------
+
+my $out;
+if (@ARGV >= 2 && $ARGV[0] eq '-o') { (undef, $out) = splice @ARGV, 0, 2; }
+my $mode = shift @ARGV // '';
+my $field;
+$field = shift @ARGV if $mode eq 'field';
+my $registry = shift @ARGV;
+fail("usage: $me [-o OUT] list|tsv|entries|audit|macros|check|field NAME REGISTRY [FILES...]")
+  unless defined $registry && $mode =~ /^(?:list|tsv|entries|audit|macros|check|field)\z/;
+my @recs = read_registry($registry);
+read_other($_) for @ARGV;
+if ($mode eq 'entries') {
+  for (qw(accuracy errata tests)) { fail("entries: give doc/accuracy.texi, doc/errata.texi and tests/*.c") unless $have{$_}; }
+} elsif ($mode eq 'audit') {
+  fail("audit: give doc/errata.texi") unless $have{errata};
+} elsif (@ARGV) {
+  fail("$mode reads the registry only");
+}
+
+my $text = '';
+my $gen = "Generated by lib/labels.pl (mode $mode) from lib/labels.txt";
+my $texi_head = sub {
+  my ($from) = @_;
+  return "\@c $gen" . ($from ? ",\n\@c $from" : '') . ": do not edit.\n\n";
+};
+if ($mode eq 'list') {
+  $text = join '', map { "$_->{label}\n" } @recs;
+} elsif ($mode eq 'check') {
+  $text = '';
+} elsif ($mode eq 'field') {
+  fail("field $field is a block, not one line") if ($KIND{$field} // '') eq 'block';
+  for (@recs) {
+    my $v = $_->{fields}{$field};
+    next unless defined $v;
+    fail("field $field of ($_->{label}) is a block, not one line") if $v =~ /\n/;
+    $text .= "$_->{label}\t$v\n";
+  }
+} elsif ($mode eq 'tsv') {
+  $text = "equation\tfunction\tunit_test\tverification\terratum\tprinted_function\teq\n";
+  for (@recs) {
+    my $f = $_->{fields};
+    $text .= join("\t", $_->{label},
+                  map({ my @n = names($f->{$_}); @n ? join(',', @n) : '-' }
+                      qw(functions tests verification errata)),
+                  join(',', split /, /, $f->{printed_function}), $f->{'eq.example'}) . "\n";
+  }
+} elsif ($mode eq 'entries') {
+  $text = $texi_head->('doc/accuracy.texi, doc/errata.texi, tests/*.c');
+  my ($g, %done) = ('');
+  for (@recs) {
+    my $h = group_of($_->{label});
+    if ($h ne $g) {
+      fail("($_->{label}): the labels of $h are not together") if $done{$h}++;
+      $g = $h;
+      $text .= "\@node Concordance of $g\n\@section " . texi($GROUP_TITLE{$g}) . "\n\n";
+    }
+    $text .= entry($_);
+  }
+} elsif ($mode eq 'audit') {
+  $text = $texi_head->('doc/errata.texi');
+  $text .= "\@multitable \@columnfractions .1 .45 .45\n\@headitem Label \@tab Outcome \@tab Functions\n";
+  for (@recs) {
+    my ($l, $f) = ($_->{label}, $_->{fields});
+    my $o = $f->{errata} eq '-' ? 'confirmed'
+      : join '; ', map { "\@ref{Erratum $_}: " . texi(erratum_summary($_)) } names($f->{errata});
+    $text .= "\@item \@ref{" . anchor($l) . ",,($l)} \@tab $o \@tab "
+      . join(', ', map { "\@code{$_}" } names($f->{functions})) . "\n";
+  }
+  $text .= "\@end multitable\n";
+} elsif ($mode eq 'macros') {
+  $text = $texi_head->('');
+  $text .= "\@c The number of labels, for the text of the manual.\n\@set labelcount "
+    . scalar(@recs) . "\n\n";
+  my (%impl, %prints, %done);
+  for my $r (@recs) {
+    push @{ $impl{$_} }, $r->{label} for names($r->{fields}{functions});
+    push @{ $prints{$_} }, $r->{label} for printed_functions($r->{fields}{printed_function});
+  }
+  # In the order of first appearance (a reproducible file).
+  for my $r (@recs) {
+    for (names($r->{fields}{functions})) {
+      $text .= macro($_, 'Implements', @{ $impl{$_} }) unless $done{$_}++;
+    }
+    for (printed_functions($r->{fields}{printed_function})) {
+      $text .= macro($_, "Evaluates the paper's printed form of", @{ $prints{$_} }) unless $done{$_}++;
+    }
+  }
+}
+
+if (defined $out) {
+  $tmp = dirname($out) . '/.' . basename($out) . ".tmp$$";
+  open my $fh, '>', $tmp or fail("$tmp: $!");
+  print {$fh} $text or fail("$tmp: $!");
+  close $fh or fail("$tmp: $!");
+  rename $tmp, $out or fail("rename $tmp to $out: $!");
+  undef $tmp;
+} else {
+  print $text or fail("standard output: $!");
+  close STDOUT or fail("standard output: $!");
+}
+exit 0;
