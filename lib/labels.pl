@@ -352,6 +352,133 @@ sub macro {
   return "$s.\n\@end macro\n\n";
 }
 
+# ---- the evaluators of `chaplygin eq' (modes c and h) ----------------------------
+
+# The C string literal of TEXT.
+sub cstr { my $t = shift; $t =~ s/([\\"])/\\$1/g; return "\"$t\""; }
+
+# The C name of a label's evaluator: eq_3_10.
+sub evaluator { my $l = shift; $l =~ tr/./_/; return "eq_$l"; }
+
+# The call of an eq.eval or eq.printed field VALUE of REC: (function,
+# [args]), each arg a hash {kind, name, default, lo, hi, literal}.  The
+# forms (lib/labels.txt's header): real NAME, real NAME=DEFAULT, dir NAME,
+# dir NAME=DEFAULT, count NAME, out real NAME, out int NAME, and a literal
+# (a number or NULL); in eq.printed, NAME (an input of eq.eval) and out
+# NAME (the output whose printed value it gives).
+sub parse_call {
+  my ($rec, $name, $value) = @_;
+  my $where = "($rec->{label}) $name";
+  $value =~ /^(chaplygin_[a-z0-9_]+) \((.*)\)\z/
+    or fail("$where: not 'chaplygin_FUNCTION (ARG, ...)': $value");
+  my ($fn, @args) = ($1, split /, /, $2);
+  my @out;
+  for (@args) {
+    if (/^(real|dir) ([A-Za-z][A-Za-z0-9_]*)(?:=(-?[0-9.]+))?\z/) {
+      push @out, { kind => $1, name => $2, default => $3 };
+    } elsif (/^count ([A-Za-z][A-Za-z0-9_]*)\z/) {
+      push @out, { kind => 'count', name => $1 };
+    } elsif (/^out (real|int) ([A-Za-z][A-Za-z0-9_]*)\z/) {
+      push @out, { kind => "out_$1", name => $2 };
+    } elsif (/^out ([A-Za-z][A-Za-z0-9_]*)\z/) {
+      push @out, { kind => 'printed', name => $1 };
+    } elsif (/^(?:[-+]?[0-9]+|NULL)\z/) {
+      push @out, { kind => 'literal', literal => $_ };
+    } elsif (/^([A-Za-z][A-Za-z0-9_]*)\z/ && $name eq 'eq.printed') {
+      push @out, { kind => 'name', name => $1 };
+    } else {
+      fail("$where: argument '$_' is not one of the forms of lib/labels.txt");
+    }
+  }
+  return ($fn, \@out);
+}
+
+# The evaluator of REC generated from its eq.eval (and eq.printed).
+sub c_evaluator {
+  my ($rec) = @_;
+  my $f = $rec->{fields};
+  my ($fn, $args) = parse_call($rec, 'eq.eval', $f->{'eq.eval'});
+  my (@decl, @read, @call, @put, %seen);
+  for my $a (@$args) {
+    my $n = $a->{name};
+    if (defined $n) {
+      fail("($rec->{label}) eq.eval: '$n' twice") if $seen{$n}++;
+      fail("($rec->{label}) eq.eval: '$n' is not among eq.inputs or eq.outputs")
+        unless index(" $f->{'eq.inputs'} $f->{'eq.outputs'} ", $n) >= 0;
+    }
+    my $k = $a->{kind};
+    if ($k eq 'literal') { push @call, $a->{literal}; next; }
+    if ($k eq 'real') {
+      push @decl, "double $n;";
+      push @read, defined $a->{default}
+        ? "eq_real_opt (c, \"$n\", $a->{default}, &$n)" : "eq_real_in (c, \"$n\", &$n)";
+      push @call, $n;
+    } elsif ($k eq 'dir') {
+      push @decl, "int $n;";
+      push @read, defined $a->{default}
+        ? "eq_dir_opt (c, \"$n\", $a->{default}, &$n)" : "eq_dir_in (c, \"$n\", &$n)";
+      push @call, $n;
+    } elsif ($k eq 'count') {
+      push @decl, "long $n;";
+      push @read, "eq_int_in (c, \"$n\", 0, LONG_MAX, &$n)";
+      push @call, "(unsigned long) $n";
+    } elsif ($k eq 'out_real') {
+      push @decl, "double $n;";
+      push @call, "&$n";
+      push @put, "eq_put_real (c, \"$n\", $n, fn, EQ_FORMULA);";
+    } elsif ($k eq 'out_int') {
+      push @decl, "int $n;";
+      push @call, "&$n";
+      push @put, "eq_put_int (c, \"$n\", $n, fn, \"exact\");";
+    } else {
+      fail("($rec->{label}) eq.eval: 'out $n' belongs in eq.printed");
+    }
+  }
+  my $c = "/* ($rec->{label}) " . $f->{title} . " */\nstatic int\n"
+    . evaluator($rec->{label}) . " (eq_ctx *c)\n{\n"
+    . "  static const char fn[] = \"$fn\";\n";
+  $c .= "  $_\n" for @decl;
+  $c .= "\n  if (" . join ("\n      || ", @read,
+                           "eq_lib (c, fn, $fn (" . join(', ', @call) . "))")
+    . ")\n    return -1;\n";
+  $c .= "  $_\n" for @put;
+  $c .= printed_call($rec, $args) if defined $f->{'eq.printed'};
+  return $c . "  return 0;\n}\n\n";
+}
+
+# The call of REC's printed form (eq.printed) after its evaluation ARGS:
+# the inputs as read, its output into a variable of its own, recorded as
+# the printed value of the output it names, with the label's erratum.
+sub printed_call {
+  my ($rec, $args) = @_;
+  my $f = $rec->{fields};
+  my ($pfn, $pargs) = parse_call($rec, 'eq.printed', $f->{'eq.printed'});
+  my %type = map { defined $_->{name} ? ($_->{name} => $_->{kind}) : () } @$args;
+  my @errata = names($f->{errata});
+  fail("($rec->{label}) eq.printed without one erratum") unless @errata == 1;
+  fail("($rec->{label}) eq.printed: $pfn is not its printed_function")
+    unless grep { $_ eq $pfn } printed_functions($f->{printed_function});
+  my (@call, $out, $ctype);
+  for my $a (@$pargs) {
+    if ($a->{kind} eq 'literal') { push @call, $a->{literal}; next; }
+    my $t = $type{$a->{name} // ''} // '';
+    if ($a->{kind} eq 'printed' && $t =~ /^out_(real|int)\z/ && !defined $out) {
+      ($out, $ctype) = ($a->{name}, $1);
+      push @call, "&printed";
+    } elsif ($a->{kind} eq 'name' && $t =~ /^(?:real|dir)\z/) {
+      push @call, $a->{name};
+    } else {
+      fail("($rec->{label}) eq.printed: argument '" . ($a->{name} // '?')
+           . "' is not an input or an output of eq.eval");
+    }
+  }
+  fail("($rec->{label}) eq.printed: no 'out NAME'") unless defined $out;
+  return "  " . ($ctype eq 'real' ? 'double' : 'int') . " printed;\n"
+    . "  int st = $pfn (" . join(', ', @call) . ");\n"
+    . "  eq_printed_$ctype (c, \"$out\", st, printed, \"$errata[0]\",\n"
+    . "                   \"$pfn\");\n";
+}
+
 # ---- main ----------------------------------------------------------------------
 
 my $out;
@@ -360,8 +487,8 @@ my $mode = shift @ARGV // '';
 my $field;
 $field = shift @ARGV if $mode eq 'field';
 my $registry = shift @ARGV;
-fail("usage: $me [-o OUT] list|tsv|entries|audit|macros|check|field NAME REGISTRY [FILES...]")
-  unless defined $registry && $mode =~ /^(?:list|tsv|entries|audit|macros|check|field)\z/;
+fail("usage: $me [-o OUT] list|tsv|entries|audit|macros|c|h|check|field NAME REGISTRY [FILES...]")
+  unless defined $registry && $mode =~ /^(?:list|tsv|entries|audit|macros|c|h|check|field)\z/;
 my @recs = read_registry($registry);
 read_other($_) for @ARGV;
 if ($mode eq 'entries') {
@@ -422,6 +549,36 @@ if ($mode eq 'list') {
       . join(', ', map { "\@code{$_}" } names($f->{functions})) . "\n";
   }
   $text .= "\@end multitable\n";
+} elsif ($mode eq 'c') {
+  $text = "/* eq-table.c -- $gen: do not edit.\n"
+    . "   The paper's labels as `chaplygin eq' and chaplygin.eq show them, each\n"
+    . "   with its evaluator: generated here from its eq.eval (a label whose\n"
+    . "   inputs map to one call), else lib/scene/eq-eval.c's. */\n"
+    . "#include <config.h>\n\n#include <limits.h>\n#include <stddef.h>\n\n"
+    . "#include \"chaplygin.h\"\n#include \"eq.h\"\n"
+    . "#include \"eq-evaluators.h\"\n\n";
+  for (@recs) { $text .= c_evaluator($_) if defined $_->{fields}{'eq.eval'}; }
+  $text .= "const eq_label eq_labels[] = {\n";
+  for (@recs) {
+    my ($l, $f) = ($_->{label}, $_->{fields});
+    my @e = names($f->{errata});
+    $text .= "  { { " . join(",\n      ", map { cstr($_) }
+        $l, $f->{title}, $f->{'eq.inputs'}, $f->{'eq.outputs'},
+        join(', ', names($f->{functions})), @e ? join(' ', @e) : '-',
+        $f->{'eq.paper'}, $f->{'eq.example'}) . " },\n    " . evaluator($l) . " },\n";
+  }
+  $text .= "};\n\nconst size_t eq_n_labels = sizeof eq_labels / sizeof eq_labels[0];\n";
+} elsif ($mode eq 'h') {
+  $text = "/* eq-evaluators.h -- $gen: do not edit.\n"
+    . "   The evaluators of the labels without an eq.eval field, written by\n"
+    . "   hand in lib/scene/eq-eval.c. */\n"
+    . "#ifndef CHAPLYGIN_SCENE_EQ_EVALUATORS_H\n#define CHAPLYGIN_SCENE_EQ_EVALUATORS_H\n\n"
+    . "#include \"eq.h\"\n\n";
+  for (@recs) {
+    $text .= "int " . evaluator($_->{label}) . " (eq_ctx *c);\n"
+      unless defined $_->{fields}{'eq.eval'};
+  }
+  $text .= "\n#endif\n";
 } elsif ($mode eq 'macros') {
   $text = $texi_head->('');
   $text .= "\@c The number of labels, for the text of the manual.\n\@set labelcount "

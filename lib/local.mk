@@ -76,7 +76,17 @@ lib_libchaplygin_scene_core_la_SOURCES = \
 	lib/scene/eq.h \
 	lib/scene/eq.c \
 	lib/scene/eq-eval.c \
+	lib/scene/eq-evaluators.h \
 	lib/scene/eq-table.c
+# The table of labels and the evaluators that map inputs to one call,
+# generated from the registry (lib/labels.pl), written into the source
+# tree and distributed like the manual's generated parts.
+$(srcdir)/lib/scene/eq-table.c: $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl
+	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ c $(srcdir)/lib/labels.txt
+$(srcdir)/lib/scene/eq-evaluators.h: $(srcdir)/lib/labels.txt \
+		$(srcdir)/lib/labels.pl
+	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ h $(srcdir)/lib/labels.txt
+BUILT_SOURCES += $(srcdir)/lib/scene/eq-evaluators.h
 lib_libchaplygin_scene_core_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
 lib_libchaplygin_scene_core_la_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) \
 	$(OPENMP_CFLAGS)

@@ -21,6 +21,7 @@
 
 #include "chaplygin.h"
 #include "eq.h"
+#include "eq-evaluators.h"
 
 /* ---------------------------------------------------------------- */
 /* Derived inputs                                                    */
@@ -40,7 +41,6 @@ derive_eh (eq_ctx *c, double L0, double D, double V, double Omega, double *E,
         "chaplygin_discrete_momentum)", *E, *H, D);
   return 0;
 }
-
 
 /* The energy and momentum of the discrete skate's post-collision state of
    direction *dir: E, H and dir given, or V, Omega (dir optional, the sign
@@ -223,19 +223,6 @@ eq_2_2 (eq_ctx *c)
 }
 
 int
-eq_2_3 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_radius_of_gyration";
-  double m, I, rho;
-
-  if (eq_real_in (c, "m", &m) || eq_real_in (c, "I", &I)
-      || eq_lib (c, fn, chaplygin_radius_of_gyration (m, I, &rho)))
-    return -1;
-  eq_put_real (c, "rho", rho, fn, EQ_FORMULA);
-  return 0;
-}
-
-int
 eq_2_4 (eq_ctx *c)
 {
   static const char fn[] = "chaplygin_smooth_steady";
@@ -350,34 +337,6 @@ eq_3_2 (eq_ctx *c)
       || eq_lib (c, fn, chaplygin_discrete_dimensionalize (rho, v0, &nd, &d)))
     return -1;
   put_discrete_dim (c, &d, fn);
-  return 0;
-}
-
-int
-eq_3_3 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_energy";
-  double L0, D, V, Omega, E;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "D", &D) || eq_real_in (c, "V", &V)
-      || eq_real_in (c, "Omega", &Omega)
-      || eq_lib (c, fn, chaplygin_discrete_energy (L0, D, V, Omega, &E)))
-    return -1;
-  eq_put_real (c, "E", E, fn, EQ_FORMULA);
-  return 0;
-}
-
-int
-eq_3_4 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_momentum";
-  double L0, D, Omega, H;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "D", &D)
-      || eq_real_in (c, "Omega", &Omega)
-      || eq_lib (c, fn, chaplygin_discrete_momentum (L0, D, Omega, &H)))
-    return -1;
-  eq_put_real (c, "H", H, fn, EQ_FORMULA);
   return 0;
 }
 
@@ -512,104 +471,6 @@ eq_3_9 (eq_ctx *c)
     return -1;
   for (i = 0; i < 16; i++)
     eq_put_real (c, jacobian_names[i], J[i], fn, "analytic");
-  return 0;
-}
-
-int
-eq_3_10 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_sigma4";
-  double L0, Delta, sigma4;
-  int dir;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
-      || eq_dir_in (c, "dir", &dir)
-      || eq_lib (c, fn, chaplygin_discrete_sigma4 (L0, Delta, dir, &sigma4,
-                                                NULL)))
-    return -1;
-  eq_put_real (c, "sigma4", sigma4, fn, EQ_FORMULA);
-  return 0;
-}
-
-static int
-stable_dir (eq_ctx *c, int dir)
-{
-  static const char fn[] = "chaplygin_discrete_stable";
-  double L0, Delta;
-  int stable;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
-      || eq_lib (c, fn, chaplygin_discrete_stable (L0, Delta, dir, &stable)))
-    return -1;
-  eq_put_int (c, "stable", stable, fn, "exact");
-  int st = chaplygin_printed_discrete_stable (L0, Delta, dir, &stable);
-  eq_printed_int (c, "stable", st, stable, "E12",
-               "chaplygin_printed_discrete_stable");
-  return 0;
-}
-
-int
-eq_3_11 (eq_ctx *c)
-{
-  return stable_dir (c, 1);
-}
-
-int
-eq_3_12 (eq_ctx *c)
-{
-  return stable_dir (c, -1);
-}
-
-static int
-reversal_range (eq_ctx *c, int default_dir)
-{
-  static const char fn[] = "chaplygin_discrete_reversal_range";
-  double L0, Delta, rlo, rhi;
-  int dir = default_dir, nonempty;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta))
-    return -1;
-  if (eq_given (c, "dir"))
-    {
-      if (eq_dir_in (c, "dir", &dir))
-        return -1;
-    }
-  else
-    eq_show (c, "dir = %+d (default)", dir);
-  if (eq_lib (c, fn, chaplygin_discrete_reversal_range (L0, Delta, dir, &rlo,
-                                                     &rhi, &nonempty)))
-    return -1;
-  eq_put_real (c, "rlo", rlo, fn, EQ_FORMULA);
-  eq_put_real (c, "rhi", rhi, fn, EQ_FORMULA);
-  eq_put_int (c, "nonempty", nonempty, fn, "exact");
-  return 0;
-}
-
-int
-eq_3_13 (eq_ctx *c)
-{
-  return reversal_range (c, -1);
-}
-
-int
-eq_3_14 (eq_ctx *c)
-{
-  return reversal_range (c, 1);
-}
-
-int
-eq_3_15 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_ratio_lower_bound";
-  double L0, Delta, rmin;
-  int dir;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
-      || eq_dir_in (c, "dir", &dir)
-      || eq_lib (c, fn, chaplygin_discrete_ratio_lower_bound (L0, Delta, dir,
-                                                           &rmin)))
-    return -1;
-  eq_put_real (c, "rmin", rmin, fn, EQ_FORMULA);
   return 0;
 }
 
@@ -966,21 +827,6 @@ eq_B_6 (eq_ctx *c)
 }
 
 int
-eq_B_7 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_c3";
-  double L0, Delta, C3;
-  int dir;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
-      || eq_dir_in (c, "dir", &dir)
-      || eq_lib (c, fn, chaplygin_discrete_c3 (L0, Delta, dir, &C3)))
-    return -1;
-  eq_put_real (c, "C3", C3, fn, EQ_FORMULA);
-  return 0;
-}
-
-int
 eq_B_8 (eq_ctx *c)
 {
   static const char fn[] = "chaplygin_discrete_two_turning_points";
@@ -1050,22 +896,6 @@ eq_B_10 (eq_ctx *c)
 }
 
 int
-eq_B_11 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_energy_converges";
-  double L0, Delta;
-  int dir, converges;
-
-  if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
-      || eq_dir_in (c, "dir", &dir)
-      || eq_lib (c, fn, chaplygin_discrete_energy_converges (L0, Delta, dir,
-                                                          &converges)))
-    return -1;
-  eq_put_int (c, "converges", converges, fn, "exact");
-  return 0;
-}
-
-int
 eq_B_12 (eq_ctx *c)
 {
   static const char fn[] = "chaplygin_discrete_final_velocity";
@@ -1082,22 +912,6 @@ eq_B_12 (eq_ctx *c)
   if (V < 0.0)
     c->note = "V < 0: the paper gives no form for this case (erratum E24); "
       "the library's is the reflection of the printed V > 0 form";
-  return 0;
-}
-
-int
-eq_B_13 (eq_ctx *c)
-{
-  static const char fn[] = "chaplygin_discrete_spin_sequence";
-  double Delta, r;
-  long n;
-
-  if (eq_real_in (c, "Delta", &Delta) || eq_int_in (c, "n", 0, LONG_MAX, &n)
-      || eq_lib (c, fn, chaplygin_discrete_spin_sequence (Delta,
-                                                       (unsigned long) n,
-                                                       &r)))
-    return -1;
-  eq_put_real (c, "V2_over_Omega2", r, fn, EQ_FORMULA);
   return 0;
 }
 

@@ -249,6 +249,18 @@ eq_dir_in (eq_ctx *c, const char *name, int *dir)
 }
 
 int
+eq_dir_opt (eq_ctx *c, const char *name, int deflt, int *dir)
+{
+  if (c->failed)
+    return -1;
+  if (eq_given (c, name))
+    return eq_dir_in (c, name, dir);
+  *dir = deflt;
+  eq_show (c, "%s = %+d (default)", name, deflt);
+  return 0;
+}
+
+int
 eq_dir_from (eq_ctx *c, const char *dir_name, double V, const char *V_name,
              int *dir)
 {

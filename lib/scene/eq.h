@@ -41,52 +41,9 @@ typedef struct
   int (*eval) (eq_ctx *);
 } eq_label;
 
-/* The evaluators (eq-eval.c). */
-int eq_2_1 (eq_ctx *c);
-int eq_2_2 (eq_ctx *c);
-int eq_2_3 (eq_ctx *c);
-int eq_2_4 (eq_ctx *c);
-int eq_3_1 (eq_ctx *c);
-int eq_3_2 (eq_ctx *c);
-int eq_3_3 (eq_ctx *c);
-int eq_3_4 (eq_ctx *c);
-int eq_3_5 (eq_ctx *c);
-int eq_3_6 (eq_ctx *c);
-int eq_3_7 (eq_ctx *c);
-int eq_3_8 (eq_ctx *c);
-int eq_3_9 (eq_ctx *c);
-int eq_3_10 (eq_ctx *c);
-int eq_3_11 (eq_ctx *c);
-int eq_3_12 (eq_ctx *c);
-int eq_3_13 (eq_ctx *c);
-int eq_3_14 (eq_ctx *c);
-int eq_3_15 (eq_ctx *c);
-int eq_4_1 (eq_ctx *c);
-int eq_A_1 (eq_ctx *c);
-int eq_A_2 (eq_ctx *c);
-int eq_A_3 (eq_ctx *c);
-int eq_A_4 (eq_ctx *c);
-int eq_A_5 (eq_ctx *c);
-int eq_A_6 (eq_ctx *c);
-int eq_B_1 (eq_ctx *c);
-int eq_B_2 (eq_ctx *c);
-int eq_B_3 (eq_ctx *c);
-int eq_B_4 (eq_ctx *c);
-int eq_B_5 (eq_ctx *c);
-int eq_B_6 (eq_ctx *c);
-int eq_B_7 (eq_ctx *c);
-int eq_B_8 (eq_ctx *c);
-int eq_B_9 (eq_ctx *c);
-int eq_B_10 (eq_ctx *c);
-int eq_B_11 (eq_ctx *c);
-int eq_B_12 (eq_ctx *c);
-int eq_B_13 (eq_ctx *c);
-int eq_B_14 (eq_ctx *c);
-int eq_B_15 (eq_ctx *c);
-int eq_B_16 (eq_ctx *c);
-int eq_B_17 (eq_ctx *c);
-
-/* The table (eq-table.c), in the paper's order. */
+/* The table (eq-table.c, generated from lib/labels.txt), in the paper's
+   order; the evaluators without an eq.eval field are eq-eval.c's
+   (eq-evaluators.h). */
 extern const eq_label eq_labels[];
 extern const size_t eq_n_labels;
 
@@ -105,6 +62,7 @@ int eq_real_in (eq_ctx *c, const char *name, double *x);
 int eq_real_opt (eq_ctx *c, const char *name, double deflt, double *x);
 int eq_int_in (eq_ctx *c, const char *name, long lo, long hi, long *n);
 int eq_dir_in (eq_ctx *c, const char *name, int *dir);
+int eq_dir_opt (eq_ctx *c, const char *name, int deflt, int *dir);
 /* A direction given as DIR_NAME, or as the sign of V (the input V_NAME),
    which must then agree with it. */
 int eq_dir_from (eq_ctx *c, const char *dir_name, double V,
