@@ -1171,7 +1171,7 @@ int chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
    $q = (D^+, V^+, theta^+, Omega^+)$, in the units of its velocity scaling:
    `*`@m of chaplygin_velocity_scaling at $l_0 = L_0 + D^+$, @qs (may be
    null) $= q$ with $V^+$ and $Omega^+$ times $2^m$ exactly, and `*`@st
-   $=$ chaplygin_discrete_state_from_phase ($qs$, $tau 2^m$, @peg), checked
+   $=$ chaplygin_discrete_state_from_phase ($qs$, $tau 2^(-m)$, @peg), checked
    to convert back (chaplygin_discrete_state_to_phase), so that the map runs
    on it.  $m = 0$ wherever $E$ and $H$ are in range, and @st is then the
    unscaled state, bit for bit.  A speed, energy or time of the run is the

@@ -13,6 +13,7 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/motion.h \
 	lib/motion.c \
 	lib/status.c \
+	lib/units.h \
 	lib/units.c \
 	lib/smooth.c \
 	lib/discrete.c \

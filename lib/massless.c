@@ -38,6 +38,7 @@
 #include <stddef.h>
 
 #include "chaplygin.h"
+#include "units.h"
 #include "eft.h"
 
 /* The largest |L0| the massless skate (rho = 0, lengths in units of the
@@ -873,25 +874,13 @@ chaplygin_massless_scaled_state (double L0, const double q[4], double tau,
                                  double qs[4])
 {
   double s[4], back[4], taus;
-  int mm, exact;
+  int mm;
   chaplygin_discrete_state out;
   if (!q || !st || !m)
     return CHAPLYGIN_EINVAL;
-  s[CHAPLYGIN_D] = q[CHAPLYGIN_D];
-  s[CHAPLYGIN_THETA] = q[CHAPLYGIN_THETA];
-  CHP_TRY (chaplygin_velocity_scaling (L0 + q[CHAPLYGIN_D], q[CHAPLYGIN_V],
-                                       q[CHAPLYGIN_OMEGA], &mm,
-                                       &s[CHAPLYGIN_V], &s[CHAPLYGIN_OMEGA]));
-  taus = tau;
-  if (mm != 0 && tau != 0.0)
-    CHP_TRY (chaplygin_velocity_scale (mm, CHAPLYGIN_SCALE_TIME, tau, &taus,
-                                       &exact));
+  CHP_TRY (chp_scaled_start (L0 + q[CHAPLYGIN_D], q, tau, s, &taus, &mm));
   CHP_TRY (chaplygin_massless_state_from_phase (L0, s, taus, peg, &out));
   CHP_TRY (chaplygin_massless_state_to_phase (L0, &out, back));
-  *st = out;
-  *m = mm;
-  if (qs)
-    for (int i = 0; i < 4; i++)
-      qs[i] = s[i];
+  chp_scaled_out (&out, mm, s, st, m, qs);
   return CHAPLYGIN_SUCCESS;
 }

@@ -10,6 +10,7 @@
 #include <math.h>
 
 #include "chaplygin.h"
+#include "units.h"
 #include "eft.h"
 #include "far.h"
 
@@ -311,5 +312,68 @@ chaplygin_velocity_scale (int m, chaplygin_scale_kind kind, double x,
     return CHAPLYGIN_ERANGE;
   *exact = chp_exact_ldexp (x, e, &r);
   *y = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* chp_scaled_start, chp_scaled_out: units.h. */
+int
+chp_scaled_start (double l0, const double q[4], double tau, double s[4],
+              double *taus, int *m)
+{
+  int exact;
+  s[CHAPLYGIN_D] = q[CHAPLYGIN_D];
+  s[CHAPLYGIN_THETA] = q[CHAPLYGIN_THETA];
+  CHP_TRY (chaplygin_velocity_scaling (l0, q[CHAPLYGIN_V],
+                                       q[CHAPLYGIN_OMEGA], m,
+                                       &s[CHAPLYGIN_V],
+                                       &s[CHAPLYGIN_OMEGA]));
+  *taus = tau;
+  if (*m != 0 && tau != 0.0)
+    CHP_TRY (chaplygin_velocity_scale (*m, CHAPLYGIN_SCALE_TIME, tau, taus,
+                                       &exact));
+  return CHAPLYGIN_SUCCESS;
+}
+
+void
+chp_scaled_out (const chaplygin_discrete_state *out, int m, const double s[4],
+            chaplygin_discrete_state *st, int *mo, double qs[4])
+{
+  *st = *out;
+  *mo = m;
+  if (qs)
+    for (int i = 0; i < 4; i++)
+      qs[i] = s[i];
+}
+
+/* chaplygin_discrete_scaled_state: the start of a run from the
+   post-collision phase state q = {D+, V+, theta+, Omega+}, in the units
+   of its velocity scaling: *m of chaplygin_velocity_scaling at
+   l0 = L0 + D+, qs (may be NULL) = q with V+, Omega+ times 2^m exactly,
+   *st = chaplygin_discrete_state_from_phase (qs, tau 2^-m, peg), checked to
+   convert back (chaplygin_discrete_state_to_phase), so that the map runs
+   on it.  m = 0 wherever E and H are in range: st is then the unscaled
+   state, bit for bit.  The one sequence (scale, convert, check) of every
+   caller that starts a run from a phase state: the scene engine's runs,
+   chaplygin_discrete_basins (through chaplygin_velocity_scaling alone: it
+   needs no state).
+   Errors: CHAPLYGIN_EINVAL (NULL), those of the three functions
+   (CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE, CHAPLYGIN_ERANGE: a start the
+   doubles cannot hold even scaled). */
+int
+chaplygin_discrete_scaled_state (const chaplygin_discrete *sys,
+                                 const double q[4], double tau,
+                                 const double peg[2],
+                                 chaplygin_discrete_state *st, int *m,
+                                 double qs[4])
+{
+  double s[4], back[4], taus;
+  int mm;
+  chaplygin_discrete_state out;
+  if (!sys || !q || !st || !m)
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_scaled_start (sys->L0 + q[CHAPLYGIN_D], q, tau, s, &taus, &mm));
+  CHP_TRY (chaplygin_discrete_state_from_phase (sys, s, taus, peg, &out));
+  CHP_TRY (chaplygin_discrete_state_to_phase (sys, &out, back));
+  chp_scaled_out (&out, mm, s, st, m, qs);
   return CHAPLYGIN_SUCCESS;
 }

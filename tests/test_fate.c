@@ -1421,6 +1421,71 @@ START_TEST (basins_errors)
 }
 END_TEST
 
+
+/* chaplygin_discrete_basins with a status and a scale per point (issue
+   26).  Routes: (a) a grid with a point at V+ = 0 gives ESTATE there and,
+   elsewhere, the fates of the same points as single-point grids (n = 1,
+   the same function's other path); (b) the grid of Figure 3's skate at
+   V+, Omega0 ~ 1e-300 (E ~ 1e-600, below the doubles), each point in its
+   own scaled units, against the grid 2^K times larger (K = 996, in range)
+   scaled back: the same kind, collisions, reversals, and E_final 2^-2m,
+   V_final 2^-m within 4 eps of E_final 2^-2K, V_final 2^-K (the two runs
+   round alike; tools/test-scaled.sh checks the program's run the same
+   way).  Without scale, those points' final energies are not doubles:
+   ERANGE each. */
+START_TEST (basins_status_scale)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+  chaplygin_fate f[7], g;
+  int st[7], m[7], sg, mg;
+  /* (a) */
+  ck_assert_status (chaplygin_discrete_basins (&sys, 0.8, -0.6, 0.6, 7, 1000,
+                                               f, st, NULL),
+                    CHAPLYGIN_ESTATE);
+  for (int i = 0; i < 7; i++)
+    {
+      double V;
+      ck_assert_ok (chaplygin_grid_point (-0.6, 0.6, 7, (size_t) i, &V));
+      if (i == 3)
+        {
+          ck_assert (V == 0.0 && st[i] == CHAPLYGIN_ESTATE);
+          continue;
+        }
+      ck_assert_int_eq (st[i], CHAPLYGIN_SUCCESS);
+      ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, V, V, 1, 1000, &g,
+                                               &sg, &mg));
+      ck_assert (sg == CHAPLYGIN_SUCCESS && mg == 0);
+      ck_assert (g.kind == f[i].kind && g.collisions == f[i].collisions
+                 && g.E_final == f[i].E_final && g.V_final == f[i].V_final);
+    }
+  /* (b) */
+  const int K = 996;
+  const double lo = 1e-300, hi = 6e-300, Om = 0.8e-300;
+  chaplygin_fate big[7];
+  ck_assert_ok (chaplygin_discrete_basins (&sys, Om, lo, hi, 7, 1000, f, st,
+                                           m));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, ldexp (Om, K), ldexp (lo, K),
+                                           ldexp (hi, K), 7, 1000, big, NULL,
+                                           NULL));
+  for (int i = 0; i < 7; i++)
+    {
+      ck_assert (st[i] == CHAPLYGIN_SUCCESS && m[i] != 0);
+      ck_assert (f[i].kind == big[i].kind
+                 && f[i].collisions == big[i].collisions
+                 && f[i].reversals == big[i].reversals);
+      ck_assert_rel (ldexp (f[i].E_final, 2 * (K - m[i])), big[i].E_final,
+                     4 * DBL_EPSILON);
+      ck_assert_rel (ldexp (f[i].V_final, K - m[i]), big[i].V_final,
+                     4 * DBL_EPSILON);
+    }
+  ck_assert_status (chaplygin_discrete_basins (&sys, Om, lo, hi, 7, 1000, f,
+                                               st, NULL), CHAPLYGIN_ERANGE);
+  for (int i = 0; i < 7; i++)
+    ck_assert_int_eq (st[i], CHAPLYGIN_ERANGE);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1439,5 +1504,6 @@ main (void)
   tu_add (s, "basins_boundaries_figure3", basins_boundaries_figure3);
   tu_add (s, "basins_nonsymmetric", basins_nonsymmetric);
   tu_add (s, "basins_errors", basins_errors);
+  tu_add (s, "basins_status_scale", basins_status_scale);
   return tu_run (s);
 }

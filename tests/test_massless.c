@@ -1678,6 +1678,47 @@ START_TEST (test_flow_edges)
 }
 END_TEST
 
+
+/* chaplygin_massless_scaled_state (issue 26).  Routes: qs = 2^m q exactly,
+   st = chaplygin_massless_state_from_phase of qs field by field, and E
+   2^-2m, H 2^-m the massless (3.3), (3.4) of the unscaled q in binary128
+   within 4 eps; m = 0 for a moderate start. */
+START_TEST (test_scaled_state)
+{
+  const double L0 = -0.25;
+  static const double scales[] = { 1.0, 1e-300, 3e250 };
+  for (size_t k = 0; k < NELEM (scales); k++)
+    for (int dir = -1; dir <= 1; dir += 2)
+      {
+        const double D = dir > 0 ? 0.0 : 1.0;
+        const double q[4] = { D, dir * 0.7 * scales[k], 1.5,
+                              2.385 * scales[k] };
+        chaplygin_discrete_state st, ref;
+        double qs[4];
+        int m;
+        ck_assert_ok (chaplygin_massless_scaled_state (L0, q, 0.0, NULL, &st,
+                                                       &m, qs));
+        ck_assert_int_eq (m != 0, k != 0);
+        ck_assert (qs[CHAPLYGIN_V] == ldexp (q[CHAPLYGIN_V], m)
+                   && qs[CHAPLYGIN_OMEGA] == ldexp (q[CHAPLYGIN_OMEGA], m));
+        ck_assert_ok (chaplygin_massless_state_from_phase (L0, qs, 0.0, NULL,
+                                                           &ref));
+        ck_assert (st.dir == ref.dir && st.E == ref.E && st.H == ref.H
+                   && st.theta == ref.theta && st.V == ref.V);
+        const q128 l = (q128) L0 + D, V = q[CHAPLYGIN_V],
+          Om = q[CHAPLYGIN_OMEGA], s = (q128) ldexp (1.0, m);
+        ck_assert_rel (st.E, (double) ((V * V + l * l * Om * Om) / 2 * s * s),
+                       4 * DBL_EPSILON);
+        ck_assert_rel (st.H, (double) (l * l * Om * s), 4 * DBL_EPSILON);
+      }
+  const double bad[4] = { 1.0, 1.0, 0.0, 0.5 };
+  chaplygin_discrete_state st;
+  int m;
+  ck_assert_status (chaplygin_massless_scaled_state (L0, NULL, 0, NULL, &st, &m, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_massless_scaled_state (L0, bad, 0, NULL, &st, &m, NULL), CHAPLYGIN_ESTATE);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1694,6 +1735,7 @@ main (void)
   tu_add (s, "massless_straight_line", test_straight_line);
   tu_add (s, "massless_edge_cases", test_edge_cases);
   tu_add (s, "massless_omega", test_omega);
+  tu_add (s, "massless_scaled_state", test_scaled_state);
   TCase *t = tcase_create ("massless_flow");
   tcase_set_timeout (t, 60);
   tcase_add_test (t, test_flow);

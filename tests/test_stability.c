@@ -977,6 +977,60 @@ START_TEST (fig_2)
 }
 END_TEST
 
+
+/* chaplygin_grid_point, the grid of every sweep (issue 26: the program's
+   overflow-safe grid, now the library's).  Route: the exact point
+   lo + (hi - lo) i/(n - 1) in binary128 (exact for these doubles: hi - lo
+   and the product hold in its 113 bits); the double is within 2 ulps of
+   max(|lo|, |hi|) of it (one rounding of hi - lo, of t and of the product
+   and sum), the ends exactly, and the points nondecreasing.  Where
+   hi - lo overflows, lo (1 - t) + hi t: the same bound. */
+START_TEST (grid_point)
+{
+  static const double ends[][2] = { { -4.0, 2.0 }, { 0.1, 0.7 },
+                                    { -2.385e300, 1.5e300 },
+                                    { -DBL_MAX, DBL_MAX },
+                                    { 3.0, 3.0 }, { -1e-300, 1e-300 } };
+  static const size_t ns[] = { 1, 2, 3, 7, 601, 1001 };
+  for (size_t e = 0; e < NELEM (ends); e++)
+    for (size_t k = 0; k < NELEM (ns); k++)
+      {
+        const double lo = ends[e][0], hi = ends[e][1];
+        const size_t n = ns[k];
+        const double scale = fmax (fabs (lo), fabs (hi));
+        double prev = -INFINITY;
+        for (size_t i = 0; i < n; i++)
+          {
+            double v;
+            ck_assert_ok (chaplygin_grid_point (lo, hi, n, i, &v));
+            if (i == 0)
+              ck_assert (v == lo);
+            else if (i == n - 1)
+              ck_assert (v == hi);
+            else
+              {
+                __float128 want = (__float128) lo
+                  + ((__float128) hi - (__float128) lo)
+                  * (__float128) i / (__float128) (n - 1);
+                ck_assert_msg (fabs ((double) ((__float128) v - want))
+                               <= 2 * DBL_EPSILON * scale,
+                               "[%g, %g] n = %zu i = %zu: %.17g", lo, hi, n,
+                               i, v);
+              }
+            ck_assert (v >= prev);
+            prev = v;
+          }
+      }
+  double v = 7.0;
+  ck_assert_status (chaplygin_grid_point (0, 1, 3, 0, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_grid_point (0, 1, 0, 0, &v), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_grid_point (0, 1, 3, 3, &v), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_grid_point (NAN, 1, 3, 1, &v), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_grid_point (0, INFINITY, 3, 1, &v), CHAPLYGIN_EDOM);
+  ck_assert (v == 7.0);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -996,5 +1050,6 @@ main (void)
   tu_add (s, "eq_B_14", eq_B_14);
   tu_add (s, "spin_equilibrium", spin_equilibrium);
   tu_add (s, "fig_2", fig_2);
+  tu_add (s, "grid_point", grid_point);
   return tu_run (s);
 }

@@ -3,6 +3,7 @@
 #include <config.h>
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "internal.h"
 #include "testutil.h"
@@ -509,6 +510,84 @@ START_TEST (test_velocity_homogeneity)
 }
 END_TEST
 
+
+/* Whether A and B hold the same bits field by field (not their padding). */
+static int
+same_state (const chaplygin_discrete_state *a,
+            const chaplygin_discrete_state *b)
+{
+#define SAME(f) (memcmp (&a->f, &b->f, sizeof a->f) == 0)
+  return SAME (dir) && SAME (E) && SAME (H) && SAME (theta) && SAME (tau)
+    && SAME (peg) && SAME (V);
+#undef SAME
+}
+
+/* chaplygin_discrete_scaled_state (issue 26: the one sequence of the
+   velocity scaling before a run).  Routes: where E and H are in range, m
+   = 0 and the state is chaplygin_discrete_state_from_phase's bit for bit;
+   for tiny and huge starts, qs = 2^m q exactly (ldexp of the inputs), st
+   = state_from_phase of qs bit for bit, and E 2^-2m, H 2^-m equal (3.3),
+   (3.4) of the unscaled q in binary128 within 4 eps (the scaled
+   computation rounds as the unscaled one would, in range). */
+START_TEST (test_scaled_state)
+{
+  chaplygin_discrete sys;
+  chaplygin_discrete_state st, ref;
+  const double L0 = -0.3, Delta = 1.0 / 3.0;
+  ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+  static const double scales[] = { 1.0, 1e-300, 1e-200, 1e200, 2.5e250 };
+  for (size_t k = 0; k < NELEM (scales); k++)
+    for (int dir = -1; dir <= 1; dir += 2)
+      {
+        const double D = dir > 0 ? 0.0 : Delta;
+        const double q[4] = { D, dir * 0.7 * scales[k], 2.385,
+                              -1.25 * scales[k] };
+        const double peg[2] = { 0.5, -2.0 };
+        double qs[4], E, H;
+        int m = 999;
+        ck_assert_ok (chaplygin_discrete_scaled_state (&sys, q, 3.0, peg,
+                                                       &st, &m, qs));
+        ck_assert_int_eq (m != 0, k != 0);
+        ck_assert (qs[CHAPLYGIN_D] == D && qs[CHAPLYGIN_THETA] == 2.385);
+        ck_assert (qs[CHAPLYGIN_V] == ldexp (q[CHAPLYGIN_V], m));
+        ck_assert (qs[CHAPLYGIN_OMEGA] == ldexp (q[CHAPLYGIN_OMEGA], m));
+        ck_assert_ok (chaplygin_discrete_state_from_phase (&sys, qs,
+                                                           ldexp (3.0, -m),
+                                                           peg, &ref));
+        ck_assert (same_state (&st, &ref));
+        const q128 l = (q128) L0 + D, V = q[CHAPLYGIN_V],
+          Om = q[CHAPLYGIN_OMEGA];
+        E = (double) ((V * V + (1 + l * l) * Om * Om) / 2
+                      * (q128) ldexp (1.0, m) * (q128) ldexp (1.0, m));
+        H = (double) ((1 + l * l) * Om * (q128) ldexp (1.0, m));
+        ck_assert_rel (st.E, E, 4 * DBL_EPSILON);
+        ck_assert_rel (st.H, H, 4 * DBL_EPSILON);
+        ck_assert_int_eq (st.dir, dir);
+        /* qs may be NULL */
+        ck_assert_ok (chaplygin_discrete_scaled_state (&sys, q, 3.0, peg,
+                                                       &ref, &m, NULL));
+        ck_assert (same_state (&st, &ref));
+      }
+  /* errors, nothing written */
+  const double good[4] = { 0.0, 1.0, 0.0, 0.5 };
+  const double zero_v[4] = { 0.0, 0.0, 0.0, 0.5 };
+  const double wrong_end[4] = { Delta, 1.0, 0.0, 0.5 };
+  const double nan_v[4] = { 0.0, NAN, 0.0, 0.5 };
+  const double apart[4] = { 0.0, 1e-300, 0.0, 1e300 };
+  chaplygin_discrete_state keep = st;
+  int m = 77;
+  ck_assert_status (chaplygin_discrete_scaled_state (NULL, good, 0, NULL, &st, &m, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, NULL, 0, NULL, &st, &m, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, good, 0, NULL, NULL, &m, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, good, 0, NULL, &st, NULL, NULL), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, nan_v, 0, NULL, &st, &m, NULL), CHAPLYGIN_EDOM);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, zero_v, 0, NULL, &st, &m, NULL), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, wrong_end, 0, NULL, &st, &m, NULL), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_discrete_scaled_state (&sys, apart, 0, NULL, &st, &m, NULL), CHAPLYGIN_ERANGE);
+  ck_assert (same_state (&st, &keep) && m == 77);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -533,6 +612,7 @@ main (void)
   tcase_add_test (t, test_velocity_scaling);
   tcase_add_test (t, test_velocity_scale);
   tcase_add_test (t, test_velocity_homogeneity);
+  tcase_add_test (t, test_scaled_state);
   suite_add_tcase (s, t);
   return tu_run (s);
 }

@@ -1125,18 +1125,30 @@ parse_source (parse_ctx *c, scene *sc)
   return finish (c, sc);
 }
 
+/* A new parse context for the source NAME (ctx_init), or NULL with ENOMEM
+   in REP. */
+static parse_ctx *
+ctx_new (const char *name, chaplygin_scene_report *rep)
+{
+  parse_ctx *c = malloc (sizeof *c);
+  if (c)
+    ctx_init (c, name, rep);
+  else
+    {
+      report_clear (rep);
+      report_fail (rep, CHAPLYGIN_SCENE_ENOMEM, "out of memory");
+    }
+  return c;
+}
+
 int
 chaplygin_scene_read_text (chaplygin_scene *sc, const char *text,
                            size_t len, const char *name,
                            chaplygin_scene_report *rep)
 {
-  parse_ctx *c = malloc (sizeof *c);
+  parse_ctx *c = ctx_new (name, rep);
   if (!c)
-    {
-      report_clear (rep);
-      return report_fail (rep, CHAPLYGIN_SCENE_ENOMEM, "out of memory");
-    }
-  ctx_init (c, name, rep);
+    return CHAPLYGIN_SCENE_ENOMEM;
   int r;
   if (!sc || (!text && len))
     r = report_fail (rep, CHAPLYGIN_SCENE_EINVAL, "%s: no scene or no text",
@@ -1155,13 +1167,9 @@ int
 chaplygin_scene_read_stream (chaplygin_scene *sc, FILE *in, const char *name,
                              chaplygin_scene_report *rep)
 {
-  parse_ctx *c = malloc (sizeof *c);
+  parse_ctx *c = ctx_new (name, rep);
   if (!c)
-    {
-      report_clear (rep);
-      return report_fail (rep, CHAPLYGIN_SCENE_ENOMEM, "out of memory");
-    }
-  ctx_init (c, name, rep);
+    return CHAPLYGIN_SCENE_ENOMEM;
   int r;
   if (!sc || !in)
     r = report_fail (rep, CHAPLYGIN_SCENE_EINVAL, "%s: no scene or no "
@@ -1201,13 +1209,9 @@ chaplygin_scene_read_pairs (chaplygin_scene *sc, size_t n,
                             const char *const *value, const char *name,
                             chaplygin_scene_report *rep)
 {
-  parse_ctx *c = malloc (sizeof *c);
+  parse_ctx *c = ctx_new (name, rep);
   if (!c)
-    {
-      report_clear (rep);
-      return report_fail (rep, CHAPLYGIN_SCENE_ENOMEM, "out of memory");
-    }
-  ctx_init (c, name, rep);
+    return CHAPLYGIN_SCENE_ENOMEM;
   int r = CHAPLYGIN_SCENE_OK;
   c_locale l;
   if (!sc || (n > 0 && (!section || !key || !value)))
@@ -1238,13 +1242,9 @@ chaplygin_scene_set (chaplygin_scene *sc, const char *key, const char *value,
                           "%s", sc ? sc->name : "(scene)",
                           key ? key : "(null)");
     }
-  parse_ctx *c = malloc (sizeof *c);
+  parse_ctx *c = ctx_new (sc->name, rep);
   if (!c)
-    {
-      report_clear (rep);
-      return report_fail (rep, CHAPLYGIN_SCENE_ENOMEM, "out of memory");
-    }
-  ctx_init (c, sc->name, rep);
+    return CHAPLYGIN_SCENE_ENOMEM;
   c->sc = *sc;
   c->sc.valid = 0;
   memcpy (c->line_of, sc->line_of, sizeof c->line_of);
