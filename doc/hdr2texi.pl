@@ -53,6 +53,9 @@
 #                             (else after the text);
 #      #define NAME ...       -> @defmac NAME; `@expansion' in its text is
 #                             the macro's replacement text, as @code;
+#      typedef struct TAG NAME; (an opaque type) -> @deftp {Data type};
+#      typedef RET (*NAME) (PARAMS); -> @deftp {Function type} NAME, the
+#                             typedef in an @example, parameters as @var;
 #  - `/** @overview' (once): the chapter's introduction, before its @menu;
 #  - `/** @section TITLE' starts a section: @node/@section TITLE; optional
 #    lines `@node NAME' (the node's name when it is not the title) and
@@ -185,6 +188,20 @@ for my $it (grep { $_->{kind} eq 'decl' } @items) {
     @$it{qw(what tag name body)} = ('type', $1, $3, $2);
   } elsif ($d =~ /^enum (\w+)\s*\{(.*)\}\s*;$/s) {
     @$it{qw(what tag name body)} = ('type', 'enum', "enum $1", $2);
+  } elsif ($d =~ /^typedef struct (\w+) (\w+) ?;$/) {
+    @$it{qw(what tag name body)} = ('type', 'struct', $2, '');
+  } elsif ($d =~ /^typedef (.*?) ?\( ?\* ?(\w+) ?\) ?\((.*)\) ?;$/s) {
+    my ($ret, $name, $plist) = ($1, $2, $3);
+    my @params;
+    for my $p (split_commas($plist)) {
+      next if $p eq 'void';
+      if ($p =~ /^(.*?)(\w+)((?: ?\[[^\]]*\])*)$/) {
+        push @params, { text => $p, type => $1, name => $2, suffix => $3 };
+      } else {
+        err($it->{start}, "$name: cannot read the parameter `$p'");
+      }
+    }
+    @$it{qw(what name ret params decl)} = ('fntype', $name, $ret, \@params, $d);
   } elsif ($d !~ /[{}]/ && $d =~ /^(?:extern )?(.*?)\b(\w+) ?\((.*)\) ?;$/s) {
     my ($ret, $name, $plist) = ($1, $2, $3);
     $ret =~ s/ $//;
@@ -535,6 +552,12 @@ sub entry_texi {
     push @out, "\@anchor{$it->{name}}", "\@deftypefun $ret $it->{name} ($args)";
     push @out, "\@implements_$it->{name}\{\}" if $implements{$it->{name}};
     push @out, body_texi($c, $cx), '@end deftypefun';
+  } elsif ($it->{what} eq 'fntype') {
+    my %p = map { $_->{name} => 1 } @{$it->{params}};
+    my $cx = { off => $c->{start}, params => \%p, what => $it->{name} };
+    (my $decl = $it->{decl}) =~ s/([\@{}])/\@$1/g;
+    push @out, "\@anchor{$it->{name}}", "\@deftp {Function type} $it->{name}",
+      '@example', $decl, '@end example', body_texi($c, $cx), '@end deftp';
   } else {
     my $cx = { off => $c->{start}, what => $it->{name} };
     my $kind = $it->{tag} eq 'enum' ? 'Enumerated type' : 'Data type';

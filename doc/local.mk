@@ -32,7 +32,7 @@ dist_doc_DATA = doc/concordance.tsv
 # behind (lib/labels.pl -o renames a complete temporary file).
 GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/concordance-macros.texi doc/program.texi doc/api.texi \
-	doc/api-printed.texi
+	doc/api-printed.texi doc/api-scene.texi
 LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl
 LABELS_GEN = $(PERL) $(srcdir)/lib/labels.pl
 CONCORDANCE_INPUTS = $(srcdir)/doc/accuracy.texi $(srcdir)/doc/errata.texi \
@@ -59,6 +59,13 @@ APIREF_INPUTS = $(srcdir)/lib/chaplygin.h $(srcdir)/doc/hdr2texi.pl \
 $(srcdir)/doc/api.texi: $(APIREF_INPUTS)
 	$(AM_V_GEN)$(HDR2TEXI) --chapter='Library reference' \
 	  --split='Printed forms=api-printed.texi' $(srcdir)/lib/chaplygin.h \
+	  > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+# The chapter "Scene engine reference" from lib/scene/chaplygin-scene.h.
+$(srcdir)/doc/api-scene.texi: $(srcdir)/lib/scene/chaplygin-scene.h \
+		$(srcdir)/doc/hdr2texi.pl
+	$(AM_V_GEN)perl $(srcdir)/doc/hdr2texi.pl \
+	  --name=lib/scene/chaplygin-scene.h --chapter='Scene engine reference' \
+	  $(srcdir)/lib/scene/chaplygin-scene.h \
 	  > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 $(srcdir)/doc/api-printed.texi: $(APIREF_INPUTS)
 	$(AM_V_GEN)$(HDR2TEXI) --only='Printed forms' \

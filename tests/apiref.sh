@@ -11,7 +11,10 @@
 #  4. every function the built library exports (nm) has a doc comment;
 #  5. every function the header documents is exported;
 #  6. every exported function has its entry (@anchor and @deftypefun) in
-#     the generated chapter, and every entry there is an exported function.
+#     the generated chapter, and every entry there is an exported function;
+#  7-10. the same for the scene engine: lib/scene/chaplygin-scene.h, the
+#     chapter "Scene engine reference" (doc/api-scene.texi) and the
+#     functions libchaplygin-scene exports.
 # POSIX sh, perl (as makeinfo needs it), nm.
 
 set -u
@@ -23,7 +26,7 @@ tmp=apiref.tmp.$$
 trap 'rm -rf "$tmp"' 0 1 2 15
 mkdir "$tmp" || exit 1
 
-echo "1..6"
+echo "1..10"
 lib=""
 for f in "$top_builddir/lib/.libs/libchaplygin.so" "$top_builddir/lib/.libs/libchaplygin.a"; do
   if [ -r "$f" ]; then lib=$f; break; fi
@@ -98,5 +101,49 @@ else
   missing "$tmp/exported" "$tmp/entries" | sed 's/$/ (exported, no entry)/'
   missing "$tmp/entries" "$tmp/exported" | sed 's/$/ (an entry, not exported)/'
   notok 6 "doc/api*.texi and the library's exports disagree (listed above)"
+fi
+# 7-10: the scene engine
+shdr=$top_srcdir/lib/scene/chaplygin-scene.h
+sgen="perl $top_srcdir/doc/hdr2texi.pl --name=lib/scene/chaplygin-scene.h"
+slib=""
+for f in "$top_builddir/lib/.libs/libchaplygin-scene.so" "$top_builddir/lib/.libs/libchaplygin-scene.a"; do
+  if [ -r "$f" ]; then slib=$f; break; fi
+done
+if [ -z "$slib" ]; then echo "Bail out! libchaplygin-scene not found under $top_builddir/lib/.libs"; exit 1; fi
+case $slib in
+  *.so) nm -D --defined-only "$slib" ;;
+  *) nm -g --defined-only "$slib" ;;
+esac | awk '$2 == "T" && $3 ~ /^chaplygin_/ { print $3 }' | sort -u > "$tmp/sexported"
+$sgen --list "$shdr" 2>/dev/null | sed -n 's/^function //p' | sort -u > "$tmp/sdocumented"
+if $sgen --chapter='Scene engine reference' "$shdr" > "$tmp/api-scene.texi" 2> "$tmp/serr"; then
+  ok 7 "doc/hdr2texi.pl reads lib/scene/chaplygin-scene.h: every function documented"
+  if cmp -s "$tmp/api-scene.texi" "$top_srcdir/doc/api-scene.texi"; then
+    ok 8 "doc/api-scene.texi is what doc/hdr2texi.pl makes of lib/scene/chaplygin-scene.h"
+  else
+    diff "$top_srcdir/doc/api-scene.texi" "$tmp/api-scene.texi" | head -n 20 | sed 's/^/# /'
+    notok 8 "doc/api-scene.texi differs from a fresh generation: edit the header"
+  fi
+else
+  sed 's/^/# /' "$tmp/serr"
+  notok 7 "doc/hdr2texi.pl fails on lib/scene/chaplygin-scene.h"
+  notok 8 "doc/api-scene.texi is a fresh generation (the generator failed)"
+fi
+if cmp -s "$tmp/sexported" "$tmp/sdocumented"; then
+  ok 9 "the functions libchaplygin-scene exports ($(wc -l < "$tmp/sexported" | tr -d ' ')) are those documented in its header"
+else
+  missing "$tmp/sexported" "$tmp/sdocumented" | sed 's/$/ (exported, not documented)/'
+  missing "$tmp/sdocumented" "$tmp/sexported" | sed 's/$/ (documented, not exported)/'
+  notok 9 "libchaplygin-scene's exports and its header's doc comments disagree"
+fi
+awk '/^@anchor\{/ { a = substr($0, 9, length($0) - 9); next }
+     /^@deftypefun / { if (match($0, /[ *]chaplygin_[a-z0-9_]+ \(/)) {
+         f = substr($0, RSTART + 1, RLENGTH - 3); print (f == a ? f : f " (without its @anchor)") } }
+     { a = "" }' "$top_srcdir/doc/api-scene.texi" 2>/dev/null | sort -u > "$tmp/sentries"
+if cmp -s "$tmp/sexported" "$tmp/sentries"; then
+  ok 10 "every function libchaplygin-scene exports has its entry in doc/api-scene.texi, and only those"
+else
+  missing "$tmp/sexported" "$tmp/sentries" | sed 's/$/ (exported, no entry)/'
+  missing "$tmp/sentries" "$tmp/sexported" | sed 's/$/ (an entry, not exported)/'
+  notok 10 "doc/api-scene.texi and libchaplygin-scene's exports disagree"
 fi
 exit $fail

@@ -7,6 +7,9 @@
 #  2. no kernel file uses a section file;
 #  3. no two files depend on each other in a circle (the file graph is
 #     acyclic);
+#  4. the scene engine (lib/scene/, libchaplygin-scene) uses the library
+#     through its public interface only: every symbol of libchaplygin-core
+#     it uses is a public chaplygin_ function;
 # and prints the graph (`make check' keeps it in tests/layers.sh.log).
 # POSIX sh and awk.
 
@@ -20,7 +23,7 @@ kernel="eft status carlson ellint quad collision motion ode leg far series"
 # The paper's sections (they may use the kernel and each other, acyclically).
 sections="units smooth discrete flow map stability reversal energy fate massless skate sweep printed"
 
-echo "1..3"
+echo "1..4"
 if test ! -r "$archive"; then
   echo "Bail out! $archive is not built"
   exit 1
@@ -85,6 +88,23 @@ if test -z "$cycle"; then
   echo "ok 3 - the file graph is acyclic"
 else
   echo "not ok 3 - files in a cycle:$cycle"
+fi
+
+# 4. the engine's uses of the library: public names only
+engine=$top_builddir/lib/.libs/libchaplygin-scene-core.a
+if test ! -r "$engine"; then
+  echo "not ok 4 - $engine is not built"
+else
+  nm -g --defined-only "$archive" 2>/dev/null | awk 'NF == 3 { print $3 }' \
+    | sort -u > layers.core.tmp
+  inner=$(nm -u "$engine" 2>/dev/null | awk '{ print $NF }' | sort -u \
+    | comm -12 - layers.core.tmp | grep -v '^chaplygin_' | tr '\n' ' ')
+  rm -f layers.core.tmp
+  if test -z "$inner"; then
+    echo "ok 4 - the scene engine uses the library's public functions only"
+  else
+    echo "not ok 4 - the scene engine uses the library's internals: $inner"
+  fi
 fi
 
 echo "# the file graph (user: used), from nm of $archive:"
