@@ -48,7 +48,7 @@ lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
 lib_LTLIBRARIES = lib/libchaplygin.la
 lib_libchaplygin_la_SOURCES =
 lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
-lib_libchaplygin_la_LDFLAGS = -version-info 1:0:0 -export-symbols-regex '^chaplygin_'
+lib_libchaplygin_la_LDFLAGS = -version-info 2:0:0 -export-symbols-regex '^chaplygin_'
 include_HEADERS = lib/chaplygin.h
 
 # The registry of the paper's equation labels and its reader/generator

@@ -573,6 +573,204 @@ START_TEST (equations)
 }
 END_TEST
 
+
+static int
+stop_at_begin (void *user, const chaplygin_scene_report *rep)
+{
+  (void) user;
+  (void) rep;
+  return 1;
+}
+
+static int
+stop_progress (void *user, double done, double total)
+{
+  (void) user;
+  (void) done;
+  (void) total;
+  return 1;
+}
+
+/* The edges of the interface: every status has its phrase, invalid
+   calls are refused with EINVAL, and the less common endings of runs
+   (begin or progress callbacks that stop, a sweep the model rejects, an
+   infinite 2E/H^2 at a stop_H) and of reads (a key twice or a value too
+   long among triples) are reported as documented. */
+START_TEST (interface_edges)
+{
+  static rows_kept k;
+  chaplygin_scene_report rep;
+  char buf[300];
+  for (int st = 0; st <= 8; st++)
+    ck_assert_str_ne (chaplygin_scene_strerror (st), "unknown status");
+  ck_assert_str_eq (chaplygin_scene_strerror (9), "unknown status");
+  ck_assert_str_eq (chaplygin_scene_strerror (-1), "unknown status");
+  double x = 7.0;
+  long n = 7;
+  ck_assert_int_eq (chaplygin_number_real (NULL, &x),
+                    CHAPLYGIN_NUMBER_SYNTAX);
+  ck_assert_int_eq (chaplygin_number_integer ("3", 0, 9, NULL),
+                    CHAPLYGIN_NUMBER_SYNTAX);
+  ck_assert (x == 7.0 && n == 7);
+  ck_assert_int_eq (chaplygin_number_format (buf, 8, 1.0, 0), -1);
+  ck_assert_int_eq (chaplygin_number_format (buf, sizeof buf, NAN, 0), -1);
+
+  /* triples: a key twice, a value too long, no arrays */
+  chaplygin_scene *sc = chaplygin_scene_new ();
+  const char *sec[] = { "scene", "scene" }, *key[] = { "model", "model" };
+  const char *val[] = { "discrete", "smooth" };
+  ck_assert_int_eq (chaplygin_scene_read_pairs (sc, 2, sec, key, val, "d",
+                                                &rep), CHAPLYGIN_SCENE_ESCENE);
+  ck_assert_str_eq (rep.message, "d: [scene] model: given twice");
+  memset (buf, '1', 250);
+  buf[250] = '\0';
+  val[1] = buf;
+  key[1] = "title";
+  ck_assert_int_eq (chaplygin_scene_read_pairs (sc, 2, sec, key, val, "d",
+                                                &rep), CHAPLYGIN_SCENE_ESCENE);
+  ck_assert_msg (strstr (rep.message, "value too long (250 bytes, at most "
+                         "199)"), "%s", rep.message);
+  ck_assert_int_eq (chaplygin_scene_read_pairs (sc, 2, NULL, key, val, "d",
+                                                &rep), CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_int_eq (chaplygin_scene_read_file (sc, NULL, &rep),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_int_eq (chaplygin_scene_read_stream (sc, NULL, "s", &rep),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert (chaplygin_scene_dup (NULL) == NULL);
+  chaplygin_scene_free (NULL);
+
+  /* a sigma4 sweep from triples: the y list written as doubles */
+  const char *ssec[] = { "scene", "sweep", "sweep", "sweep", "sweep",
+                         "sweep", "sweep" };
+  const char *skey[] = { "model", "kind", "x_min", "x_max", "nx", "y",
+                         "dir" };
+  const char *sval[] = { "discrete", "sigma4", "-4", "2", "7", "1/3, 2",
+                         "1" };
+  ck_assert_int_eq (chaplygin_scene_read_pairs (sc, 7, ssec, skey, sval, "s",
+                                                &rep), 0);
+  ck_assert_int_eq (chaplygin_scene_text (sc, "y", buf, sizeof buf), 0);
+  ck_assert_str_eq (buf, "0.3333333333333333,2");
+  double ys[1];
+  size_t ny;
+  ck_assert_int_eq (chaplygin_scene_list (sc, "y", ys, 1, &ny), 0);
+  ck_assert (ny == 2 && ys[0] == 1.0 / 3.0);
+  ck_assert_int_eq (chaplygin_scene_list (sc, "x_min", ys, 1, &ny),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_int_eq (chaplygin_scene_text (sc, "y", buf, 4),
+                    CHAPLYGIN_SCENE_EINVAL);
+  /* a sweep: compare does not apply; a begin callback that stops it; a
+     progress callback that stops it; a shard out of range */
+  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL };
+  ck_assert_int_eq (chaplygin_scene_check (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_msg (strstr (rep.message, "--compare"), "%s", rep.message);
+  opt.compare = 0;
+  opt.shard = 3;
+  opt.nshards = 2;
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (rep.message, "shard 3/2: need 0 <= i < N");
+  opt.shard = 0;
+  opt.nshards = 1;
+  opt.begin = stop_at_begin;
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_ESTOPPED);
+  opt.begin = NULL;
+  opt.progress = stop_progress;
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_ESTOPPED);
+  chaplygin_scene_free (sc);
+
+  /* runs: a begin callback that stops one; a dense run and a smooth one
+     that a progress callback stops */
+  sc = scene_of (FIG6);
+  opt.begin = stop_at_begin;
+  opt.progress = NULL;
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_ESTOPPED);
+  opt.begin = NULL;
+  opt.progress = stop_progress;
+  ck_assert_int_eq (chaplygin_scene_set (sc, "collisions", "1000", &rep), 0);
+  ck_assert_int_eq (chaplygin_scene_set (sc, "samples", "3", &rep), 0);
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_ESTOPPED);
+  chaplygin_scene_free (sc);
+  sc = scene_of ("[scene]\nmodel = smooth\n[parameters]\nL = 1\n[initial]\n"
+                 "V = 1\nOmega = 0.5\n[run]\nduration = 3\nsamples = 1000\n");
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_ESTOPPED);
+  opt.begin = stop_at_begin;
+  ck_assert_int_eq (chaplygin_scene_run (sc, &opt, &rep),
+                    CHAPLYGIN_SCENE_ESTOPPED);
+  chaplygin_scene_free (sc);
+
+  /* stop_H at a state with H = 0: 2E/H^2 is infinite, the run stops at
+     once */
+  sc = scene_of ("[scene]\nmodel = discrete\n[parameters]\nL0 = 1\n"
+                 "Delta = 0.5\n[initial]\nV = 1\nOmega = 0\n[run]\n"
+                 "collisions = 5\nstop_H = 1e-3\n");
+  memset (&k, 0, sizeof k);
+  ck_assert_int_eq (run_into (sc, &k, 0, &rep), 0);
+  ck_assert_int_eq (rep.early, 1);
+  ck_assert_msg (strstr (rep.note, "2E/H^2 is infinite"), "%s", rep.note);
+  ck_assert_uint_eq (k.rows, 1);
+  chaplygin_scene_free (sc);
+
+  /* equations: inputs without a name, too many, unused; the options */
+  static chaplygin_eq_result r;
+  const char *nn[] = { "L0", "" }, *vv[] = { "1", "2" };
+  ck_assert_int_eq (chaplygin_eq_eval ("3.10", 2, nn, vv, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "input 2 has no name or no value");
+  const char *many[30], *mv[30];
+  for (int i = 0; i < 30; i++)
+    {
+      many[i] = i % 2 ? "L0" : "Delta";
+      mv[i] = "1";
+    }
+  ck_assert_int_eq (chaplygin_eq_eval ("3.10", 30, many, mv, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "input 'Delta' given twice");
+  const char *n35[] = { "L0", "Delta", "V", "Omega", "method", "prec" };
+  const char *v35[] = { "1", "1/3", "1", "0.5", "ode", "double" };
+  ck_assert_int_eq (chaplygin_eq_eval ("3.5", 6, n35, v35, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "prec applies to method = closed-form only");
+  v35[4] = "bogus";
+  ck_assert_int_eq (chaplygin_eq_eval ("3.5", 5, n35, v35, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "method = 'bogus': unknown method "
+                    "(closed-form, quadrature or ode)");
+  v35[4] = "closed-form";
+  v35[5] = "quad";
+  ck_assert_int_eq (chaplygin_eq_eval ("3.5", 6, n35, v35, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "prec = 'quad': double or single");
+  n35[5] = "tol";
+  v35[5] = "1e-9";
+  ck_assert_int_eq (chaplygin_eq_eval ("3.5", 6, n35, v35, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "tol applies to method = quadrature or ode "
+                    "only");
+  n35[4] = "prec";
+  v35[4] = "single";
+  ck_assert_int_eq (chaplygin_eq_eval ("3.5", 5, n35, v35, &r), 0);
+  ck_assert_str_eq (r.method, "closed-form single");
+  const char *n3[] = { "L0", "Delta", "dir", "E" };
+  const char *v3[] = { "1", "1", "1", "1" };
+  ck_assert_int_eq (chaplygin_eq_eval ("3.10", 4, n3, v3, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "unknown input 'E'");
+  const char *n13[] = { "L0", "Delta", "dir" }, *v13[] = { "1", "1", "1" };
+  ck_assert_int_eq (chaplygin_eq_eval ("3.13", 3, n13, v13, &r), 0);
+  ck_assert_str_eq (r.shown[2], "dir = +1");
+  ck_assert_int_eq (chaplygin_eq_eval ("3.13", 2, n13, v13, &r), 0);
+  ck_assert_str_eq (r.shown[2], "dir = -1 (default)");
+  ck_assert_int_eq (chaplygin_eq_eval ("3.10", 0, NULL, NULL, NULL),
+                    CHAPLYGIN_SCENE_EINVAL);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -587,5 +785,6 @@ main (void)
   tu_add (s, "set_key", set_key);
   tu_add (s, "cells_beyond_doubles", cells_beyond_doubles);
   tu_add (s, "equations", equations);
+  tu_add (s, "interface_edges", interface_edges);
   return tu_run (s);
 }

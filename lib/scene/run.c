@@ -91,14 +91,6 @@ row_num (sink *s, double x)
 }
 
 void
-row_missing (sink *s)
-{
-  chaplygin_cell *c = &s->row[s->ncols++];
-  memset (c, 0, sizeof *c);
-  c->missing = 1;
-}
-
-void
 row_scaled (sink *s, int m, chaplygin_scale_kind kind, double x)
 {
   chaplygin_cell *c = &s->row[s->ncols++];

@@ -20,15 +20,14 @@ typedef struct
                                    its numbers are scaled by 2^(d m) */
 } sink;
 
-/* A row: begun, filled cell by cell (an integer, a real, a missing one,
-   the physical value of the real X of KIND scaled by 2^(d M)), and
+/* A row: begun, filled cell by cell (an integer, a real, the physical
+   value of the real X of KIND scaled by 2^(d M)), and
    delivered (DATA: counted against max_rows).  sink_row returns 0, or -1
    (the run must end) where the limit is reached (s->full) or the callback
    asks to stop (s->stopped). */
 void row_begin (sink *s);
 void row_int (sink *s, long long n);
 void row_num (sink *s, double x);
-void row_missing (sink *s);
 void row_scaled (sink *s, int m, chaplygin_scale_kind kind, double x);
 int sink_row (sink *s, int data);
 
