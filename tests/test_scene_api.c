@@ -8,6 +8,7 @@
 #include <config.h>
 
 #include <errno.h>
+#include <limits.h>
 #include <locale.h>
 #include <math.h>
 #include <stdio.h>
@@ -80,7 +81,7 @@ run_into (const chaplygin_scene *sc, rows_kept *k, int compare,
           chaplygin_scene_report *rep)
 {
   chaplygin_run_options opt = { compare, 0, 1, 0, keep_begin, keep_row,
-                                keep_progress, k };
+                                keep_progress, k, NULL };
   return chaplygin_scene_run (sc, &opt, rep);
 }
 
@@ -424,7 +425,7 @@ START_TEST (run_failures)
   ck_assert_msg (strstr (rep.note, "stopped at collision 0 of 1000000000: "
                          "stop_fate"), "%s", rep.note);
   /* EINVAL: options that do not apply */
-  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL };
+  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL, NULL };
   ck_assert_int_eq (chaplygin_scene_run (big, &opt, &rep),
                     CHAPLYGIN_SCENE_EINVAL);
   ck_assert_msg (strstr (rep.message, "--compare needs"), "%s", rep.message);
@@ -660,7 +661,7 @@ START_TEST (interface_edges)
                     CHAPLYGIN_SCENE_EINVAL);
   /* a sweep: compare does not apply; a begin callback that stops it; a
      progress callback that stops it; a shard out of range */
-  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL };
+  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL, NULL };
   ck_assert_int_eq (chaplygin_scene_check (sc, &opt, &rep),
                     CHAPLYGIN_SCENE_EINVAL);
   ck_assert_msg (strstr (rep.message, "--compare"), "%s", rep.message);
@@ -771,6 +772,125 @@ START_TEST (interface_edges)
 }
 END_TEST
 
+/* The text of each row, as the text callback receives it. */
+typedef struct
+{
+  rows_kept *rows;              /* the same run's rows, where kept */
+  char line[64][1024];
+  size_t lines;
+  size_t stop_after;            /* > 0: ask to stop after this many lines */
+} lines_kept;
+
+static int
+keep_line (void *user, const char *line, size_t len)
+{
+  lines_kept *t = user;
+  ck_assert (len < sizeof t->line[0] && strlen (line) >= len);
+  if (t->lines < 64)
+    {
+      memcpy (t->line[t->lines], line, len);
+      t->line[t->lines][len] = '\0';
+    }
+  t->lines++;
+  return t->stop_after > 0 && t->lines >= t->stop_after;
+}
+
+static int
+keep_row_of_lines (void *user, size_t ncols, const chaplygin_cell *row)
+{
+  return keep_row (((lines_kept *) user)->rows, ncols, row);
+}
+
+/* SC run with a text callback (and the row callback where T->rows), on
+   THREADS threads: the status. */
+static int
+run_text (const chaplygin_scene *sc, lines_kept *t, int threads,
+          chaplygin_scene_report *rep)
+{
+  chaplygin_run_options opt = { 0, 0, 1, threads, NULL,
+                                t->rows ? keep_row_of_lines : NULL, NULL, t,
+                                keep_line };
+  return chaplygin_scene_run (sc, &opt, rep);
+}
+
+/* Each line the text callback receives is chaplygin_row_text of the row
+   the row callback received just before it (a run, formatted as it goes;
+   sweeps, formatted by their worker threads), whatever the threads; a
+   text callback stops a run and a sweep. */
+START_TEST (text_rows)
+{
+  static rows_kept k;
+  static lines_kept t, alone;
+  chaplygin_scene_report rep;
+  chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
+  char row[1024];
+  size_t n;
+  const char *scenes[] = {
+    FIG6,
+    "[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n"
+    "[initial]\nOmega = 0.8\n[run]\ncollisions = 1000\n[sweep]\n"
+    "kind = basins\nx_min = 1e-300\nx_max = 0.5\nnx = 40\n",
+    "[scene]\nmodel = discrete\n[sweep]\nkind = sigma4\nx_min = -4\n"
+    "x_max = 2\nnx = 30\ny = 1, 1/3\ndir = -1\n",
+  };
+  for (size_t s = 0; s < sizeof scenes / sizeof *scenes; s++)
+    for (int threads = 1; threads <= 2; threads++)
+      {
+        chaplygin_scene *sc = scene_of (scenes[s]);
+        memset (&k, 0, sizeof k);
+        memset (&t, 0, sizeof t);
+        memset (&alone, 0, sizeof alone);
+        t.rows = &k;
+        ck_assert_int_eq (run_text (sc, &t, threads, &rep), 0);
+        ck_assert_int_eq (run_text (sc, &alone, threads, &rep), 0);
+        ck_assert_int_eq (chaplygin_scene_columns (sc, NULL, col,
+                                                   CHAPLYGIN_COLUMNS_MAX,
+                                                   &n), 0);
+        ck_assert (k.rows > 1 && k.rows <= 64 && t.lines == k.rows
+                   && alone.lines == k.rows);
+        for (size_t i = 0; i < k.rows; i++)
+          {
+            ck_assert (chaplygin_row_text (row, sizeof row, n, col,
+                                           k.cell[i]) >= 0);
+            ck_assert_str_eq (t.line[i], row);
+            ck_assert_str_eq (alone.line[i], row);
+          }
+        /* stopped by the text callback after 3 lines */
+        memset (&alone, 0, sizeof alone);
+        alone.stop_after = 3;
+        ck_assert_int_eq (run_text (sc, &alone, threads, &rep),
+                          CHAPLYGIN_SCENE_ESTOPPED);
+        ck_assert_uint_eq (alone.lines, 3);
+        chaplygin_scene_free (sc);
+      }
+}
+END_TEST
+
+/* Integer and status cells against snprintf's %lld (another route: the
+   engine formats them by hand), at the ends of long long. */
+START_TEST (integer_cells)
+{
+  const long long values[] = { 0, 1, -1, 9, 10, -10, 1234567890123LL,
+                               LLONG_MAX, LLONG_MIN, LLONG_MIN + 1, 99 };
+  char text[CHAPLYGIN_NUMBER_TEXT_MAX], want[CHAPLYGIN_NUMBER_TEXT_MAX];
+  for (size_t i = 0; i < sizeof values / sizeof *values; i++)
+    {
+      chaplygin_cell c = { 0, 0, values[i], 0 };
+      snprintf (want, sizeof want, "%lld", values[i]);
+      ck_assert_int_eq (chaplygin_cell_text (text, sizeof text, &c,
+                                             CHAPLYGIN_COLUMN_INTEGER),
+                        (int) strlen (want));
+      ck_assert_str_eq (text, want);
+      if (values[i] < 0 || values[i] > CHAPLYGIN_ENOMEM)
+        {
+          ck_assert (chaplygin_cell_text (text, sizeof text, &c,
+                                          CHAPLYGIN_COLUMN_STATUS) > 0);
+          ck_assert_str_eq (text, want);
+        }
+    }
+}
+END_TEST
+
 int
 main (void)
 {
@@ -786,5 +906,7 @@ main (void)
   tu_add (s, "cells_beyond_doubles", cells_beyond_doubles);
   tu_add (s, "equations", equations);
   tu_add (s, "interface_edges", interface_edges);
+  tu_add (s, "text_rows", text_rows);
+  tu_add (s, "integer_cells", integer_cells);
   return tu_run (s);
 }

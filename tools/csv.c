@@ -9,10 +9,6 @@
 #include "progress.h"
 #include "provenance.h"
 
-/* A row's text: at most CHAPLYGIN_COLUMNS_MAX numbers of
-   CHAPLYGIN_NUMBER_TEXT_MAX bytes. */
-#define ROW_TEXT (CHAPLYGIN_COLUMNS_MAX * CHAPLYGIN_NUMBER_TEXT_MAX)
-
 typedef struct
 {
   FILE *out;
@@ -56,19 +52,11 @@ csv_begin (void *user, const chaplygin_scene_report *rep)
 }
 
 static int
-csv_row (void *user, size_t ncols, const chaplygin_cell *row)
+csv_text (void *user, const char *line, size_t len)
 {
   csv_sink *s = user;
-  char text[ROW_TEXT];
-  int n = chaplygin_row_text (text, sizeof text, ncols, s->col, row);
   errno = 0;
-  if (n < 0)
-    {
-      errno = EOVERFLOW;
-      return write_failed (s);
-    }
-  text[n] = '\n';
-  if (fwrite (text, 1, (size_t) n + 1, s->out) != (size_t) n + 1)
+  if (fwrite (line, 1, len, s->out) != len || putc ('\n', s->out) == EOF)
     return write_failed (s);
   return 0;
 }
@@ -136,7 +124,8 @@ csv_run (const chaplygin_scene *sc, const chaplygin_run_options *run,
                                &s.ncols) != CHAPLYGIN_SCENE_OK)
     s.ncols = 0;
   r.begin = csv_begin;
-  r.row = csv_row;
+  r.row = NULL;
+  r.text = csv_text;
   r.progress = csv_progress;
   r.user = &s;
   int status = chaplygin_scene_run (sc, &r, rep);

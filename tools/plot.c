@@ -169,7 +169,8 @@ static int
 data_block (FILE *gp, const char *name, const chaplygin_scene *sc,
             int compare)
 {
-  chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL };
+  chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL,
+                                NULL };
   csv_options opt = { NULL, NULL, NULL };
   fprintf (gp, "$%s << EOD\n", name);
   int rc = csv_run (sc, &run, gp, &opt, NULL);
@@ -441,7 +442,8 @@ set_key (chaplygin_scene *sc, const char *key, const char *value)
 static int
 check_run (const chaplygin_scene *sc, int compare)
 {
-  chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL };
+  chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL,
+                                NULL };
   chaplygin_scene_report rep;
   if (chaplygin_scene_check (sc, &run, &rep) == CHAPLYGIN_SCENE_OK)
     return EXIT_OK;

@@ -351,6 +351,13 @@ typedef struct
 typedef int (*chaplygin_row_fn) (void *user, size_t ncols,
                                  const chaplygin_cell *row);
 
+/** A text row callback: the row's CSV text (chaplygin_row_text, no line
+   end), @len bytes at @line.  Return 0 to go on, nonzero to stop the run.
+   A sweep formats its rows in its worker threads for it (in parallel), so
+   a caller that writes CSV is as fast as the sweep.
+ */
+typedef int (*chaplygin_text_fn) (void *user, const char *line, size_t len);
+
 /** Called once, after the scene is checked and the run set up (@rep's
    `scaling` known), before the first row.  Nonzero stops the run.
  */
@@ -363,8 +370,8 @@ typedef int (*chaplygin_begin_fn) (void *user,
  */
 typedef int (*chaplygin_progress_fn) (void *user, double done, double total);
 
-/** How to run a scene.  `{ 0, 0, 1, 0, NULL, NULL, NULL, NULL }` is a
-   plain run.
+/** How to run a scene.  `{ 0, 0, 1, 0, NULL, NULL, NULL, NULL, NULL }` is
+   a plain run.
    @fields
  */
 typedef struct
@@ -379,7 +386,9 @@ typedef struct
   chaplygin_row_fn row;           /** may be null: the rows are computed and
                                       dropped; */
   chaplygin_progress_fn progress; /** may be null; */
-  void *user;                     /** passed to the callbacks. */
+  void *user;                     /** passed to the callbacks; */
+  chaplygin_text_fn text;         /** may be null: each row's text, after
+                                      `row` (if any) has taken the row. */
 } chaplygin_run_options;
 
 /** The most columns of any run: @expansion. */
@@ -433,7 +442,7 @@ int chaplygin_cell_text (char *buf, size_t size, const chaplygin_cell *cell,
 
 /** The CSV line of a row (no line end): the texts of its @ncols cells
    separated by commas, into @buf (@size bytes).  Return the length, or $-1$
-   if @buf is too short.
+   (with @buf an empty string where @size > 0) if @buf is too short.
  */
 int chaplygin_row_text (char *buf, size_t size, size_t ncols,
                         const chaplygin_column *columns,

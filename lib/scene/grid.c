@@ -72,7 +72,8 @@
 #include "run.h"
 
 #define BLOCK_POINTS 32768          /* points computed per block (two
-                                       blocks in memory: 16 MB) */
+                                       blocks in memory: 16 MB, with the
+                                       rows' text 41 MB) */
 #define CHUNK_POINTS 64             /* OpenMP dynamic chunk */
 #define ROW_CELLS 8                 /* cells of the widest row (basins) */
 
@@ -341,17 +342,73 @@ set_stop (int *stop)
   *stop = 1;
 }
 
-/* Deliver the N rows of NCOLS cells at CELLS through S, in order: 0, or -1
+/* A block of rows: the cells of row i at cells + i ROW_CELLS; where the
+   caller takes text, its text at text + i ROW_TEXT (len[i] bytes), made by
+   the thread that computed the row. */
+typedef struct
+{
+  chaplygin_cell *cells;
+  char *text;
+  int *len;
+  int n;
+} row_block;
+
+#define ROW_TEXT (ROW_CELLS * CHAPLYGIN_NUMBER_TEXT_MAX)
+
+/* B's buffers for POINTS rows (text too if TEXT): 0, or -1 without
+   memory. */
+static int
+block_alloc (row_block *b, uint64_t points, int text)
+{
+  memset (b, 0, sizeof *b);
+  b->cells = malloc ((size_t) points * ROW_CELLS * sizeof *b->cells);
+  if (text)
+    {
+      b->text = malloc ((size_t) points * ROW_TEXT);
+      b->len = malloc ((size_t) points * sizeof *b->len);
+    }
+  return b->cells && (!text || (b->text && b->len)) ? 0 : -1;
+}
+
+static void
+block_free (row_block *b)
+{
+  free (b->cells);
+  free (b->text);
+  free (b->len);
+}
+
+/* Row I of B for point K of PLAN: its cells, and its text where B keeps
+   text. */
+static void
+block_row (const sweep_plan *plan, row_block *b, int i, uint64_t k,
+           const chaplygin_column *col, size_t ncols)
+{
+  chaplygin_cell *cells = b->cells + (size_t) i * ROW_CELLS;
+  point_row (plan, k, cells);
+  if (b->text)
+    b->len[i] = chaplygin_row_text (b->text + (size_t) i * ROW_TEXT,
+                                    ROW_TEXT, ncols, col, cells);
+}
+
+/* Deliver the rows of B (NCOLS cells each) through S, in order: 0, or -1
    where the caller asks to stop. */
 static int
-deliver (sink *s, const chaplygin_cell *cells, int n, size_t ncols)
+deliver (sink *s, const row_block *b, size_t ncols)
 {
-  for (int i = 0; i < n; i++)
+  for (int i = 0; i < b->n; i++)
     {
-      memcpy (s->row, cells + (size_t) i * ROW_CELLS,
-              ncols * sizeof *cells);
+      memcpy (s->row, b->cells + (size_t) i * ROW_CELLS,
+              ncols * sizeof *b->cells);
       s->ncols = ncols;
-      if (sink_row (s, 0) != 0)
+      if (s->opt->row && s->opt->row (s->opt->user, ncols, s->row) != 0)
+        {
+          s->stopped = 1;
+          return -1;
+        }
+      if (b->text && (b->len[i] < 0
+                      || sink_text (s, b->text + (size_t) i * ROW_TEXT,
+                                    (size_t) b->len[i]) != 0))
         return -1;
     }
   return 0;
@@ -368,27 +425,28 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
   const uint64_t nblocks = block > 0 ? (count + block - 1) / block : 0;
   chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
   const size_t ncols = grid_columns (plan->sc, col);
-  chaplygin_cell *cells[2] = { NULL, NULL };
-  int nfill[2] = { 0, 0 };
+  row_block blocks[2];
   int stop = 0;                 /* read and written atomically */
   uint64_t done = 0;
 
+  memset (blocks, 0, sizeof blocks);
   for (int b = 0; b < 2 && block > 0; b++)
-    if (!(cells[b] = malloc ((size_t) block * ROW_CELLS * sizeof **cells)))
+    if (block_alloc (&blocks[b], block, s->opt->text != NULL) != 0)
       {
-        free (cells[0]);
+        block_free (&blocks[0]);
+        block_free (&blocks[1]);
         return CHAPLYGIN_SCENE_ENOMEM;
       }
   for (uint64_t b = 0; b <= nblocks && !get_stop (&stop); b++)
     {
       /* compute block b while block b - 1 is delivered */
-      chaplygin_cell *fill = b < nblocks ? cells[b % 2] : NULL;
-      const int drain = b > 0 ? (int) ((b - 1) % 2) : -1;
+      row_block *fill = b < nblocks ? &blocks[b % 2] : NULL;
+      const row_block *drain = b > 0 ? &blocks[(b - 1) % 2] : NULL;
       const uint64_t base = plan->first + b * block;
       const int n = fill ? (int) (count - b * block < block
                                   ? count - b * block : block) : 0;
       if (fill)
-        nfill[b % 2] = n;
+        fill->n = n;
 #ifdef _OPENMP
 #pragma omp parallel num_threads (threads > 0 ? threads : omp_get_max_threads ())
 #endif
@@ -396,7 +454,7 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
 #ifdef _OPENMP
 #pragma omp master
 #endif
-        if (drain >= 0 && deliver (s, cells[drain], nfill[drain], ncols) != 0)
+        if (drain && deliver (s, drain, ncols) != 0)
           set_stop (&stop);
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, CHUNK_POINTS)
@@ -405,8 +463,7 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
           {
             if (get_stop (&stop))
               continue;
-            point_row (plan, base + (uint64_t) i,
-                       fill + (size_t) i * ROW_CELLS);
+            block_row (plan, fill, i, base + (uint64_t) i, col, ncols);
             uint64_t now;
 #ifdef _OPENMP
 #pragma omp atomic capture
@@ -423,8 +480,8 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
         set_stop (&stop);
     }
   (void) threads;
-  free (cells[0]);
-  free (cells[1]);
+  block_free (&blocks[0]);
+  block_free (&blocks[1]);
   return get_stop (&stop) ? CHAPLYGIN_SCENE_ESTOPPED : CHAPLYGIN_SCENE_OK;
 }
 

@@ -144,6 +144,30 @@ sink_row (sink *s, int data)
       s->stopped = 1;
       return -1;
     }
+  return s->opt->text ? sink_text (s, NULL, 0) : 0;
+}
+
+int
+sink_text (sink *s, const char *line, size_t len)
+{
+  char text[ROW_TEXT_MAX];
+  if (!line)
+    {
+      int n = chaplygin_row_text (text, sizeof text, s->ncols, s->col,
+                                  s->row);
+      if (n < 0)
+        {
+          s->stopped = 1;
+          return -1;
+        }
+      line = text;
+      len = (size_t) n;
+    }
+  if (s->opt->text (s->opt->user, line, len) != 0)
+    {
+      s->stopped = 1;
+      return -1;
+    }
   return 0;
 }
 
@@ -1021,7 +1045,7 @@ check_options (const scene *sc, const chaplygin_run_options *opt,
 }
 
 static const chaplygin_run_options plain_run = { 0, 0, 1, 0, NULL, NULL,
-                                                 NULL, NULL };
+                                                 NULL, NULL, NULL };
 
 int
 chaplygin_scene_columns (const chaplygin_scene *sc,
@@ -1087,6 +1111,7 @@ chaplygin_scene_run (const chaplygin_scene *sc,
   s.opt = opt;
   s.rep = rep;
   s.max_rows = sc->max_rows;
+  (void) run_columns (sc, opt->compare, s.col);
   if (opt->compare)
     rc = smooth_run (sc, sc->samples > SMOOTH_SAMPLES_DEFAULT ? sc->samples
                      : SMOOTH_SAMPLES_DEFAULT,

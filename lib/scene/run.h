@@ -13,6 +13,8 @@ typedef struct
   chaplygin_scene_report *rep;
   chaplygin_cell row[CHAPLYGIN_COLUMNS_MAX];
   size_t ncols;
+  chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];  /* the run's columns (for
+                                                   the text of a row) */
   long rows, max_rows;          /* data rows delivered; the limit */
   int full;                     /* a row was refused: max_rows reached */
   int stopped;                  /* a callback asked to stop */
@@ -30,6 +32,14 @@ void row_int (sink *s, long long n);
 void row_num (sink *s, double x);
 void row_scaled (sink *s, int m, chaplygin_scale_kind kind, double x);
 int sink_row (sink *s, int data);
+
+/* The text row callback of S with the row's text LINE (LEN bytes), or the
+   text of s->row formatted here where LINE is NULL: 0, or -1 (s->stopped)
+   where it asks to stop or the row does not format. */
+int sink_text (sink *s, const char *line, size_t len);
+
+/* Bytes of a row's text: CHAPLYGIN_COLUMNS_MAX numbers and commas. */
+#define ROW_TEXT_MAX (CHAPLYGIN_COLUMNS_MAX * CHAPLYGIN_NUMBER_TEXT_MAX)
 
 /* The caller's begin and progress callbacks: 0, or -1 (s->stopped) where
    one asks to stop. */
