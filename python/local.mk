@@ -40,6 +40,11 @@ nodist_chaplygin_pyexec_PYTHON = python/chaplygin/_generated.py
 # The extension module: cffi's C (warnings are cffi's business, not ours:
 # no WARN_CFLAGS) over a convenience library of our C (with them).
 chaplygin_pyexec_LTLIBRARIES = python/chaplygin/_chaplygin_cffi.la
+# libtool relinks the module against the installed libchaplygin-scene and
+# libchaplygin, which automake does not order before it (automake bug
+# 7328): a parallel `make install' failed with "cannot find
+# -lchaplygin-scene".  They are installed first.
+install-chaplygin_pyexecLTLIBRARIES: install-libLTLIBRARIES
 nodist_python_chaplygin__chaplygin_cffi_la_SOURCES = python/gen/module.c
 python_chaplygin__chaplygin_cffi_la_CPPFLAGS = $(AM_CPPFLAGS) \
 	-I$(srcdir)/python/src -I$(srcdir)/lib/scene -Ipython/gen \
