@@ -129,42 +129,129 @@ copy_line (char *buf, const char *line)
   return buf;
 }
 
-/* Compare the tables A and B (A's physical values against B's scaled by
-   2^(-d K)): 0 if every column is within TOL eps, 1 if not. */
+/* The header of A into HA (fields of a static copy) if B's is the same:
+   the number of columns, or -1. */
 static int
-compare (const table *a, const table *b, double tol, long K)
+same_headers (const table *a, const table *b, char **ha)
 {
   static char hla[LINE_MAX_LEN], hlb[LINE_MAX_LEN];
-  static char la[LINE_MAX_LEN], lb[LINE_MAX_LEN];
-  char *ha[COLS], *hb[COLS], *fa[COLS], *fb[COLS];
+  char *hb[COLS];
   if (a->n < 2 || a->n != b->n)
     {
       fprintf (stderr, "scaled-cmp: %zu and %zu lines\n", a->n, b->n);
-      return 1;
+      return -1;
     }
   const int nc = split (copy_line (hla, a->line[0]), ha);
   if (nc < 0 || split (copy_line (hlb, b->line[0]), hb) != nc)
     {
       fprintf (stderr, "scaled-cmp: different headers\n");
-      return 1;
+      return -1;
     }
   for (int j = 0; j < nc; j++)
     if (strcmp (ha[j], hb[j]))
       {
         fprintf (stderr, "scaled-cmp: column %d: %s, %s\n", j, ha[j], hb[j]);
-        return 1;
+        return -1;
       }
+  return nc;
+}
 
+/* The working numbers of a comparison: per column, the largest |b| and
+   the worst error in eps; scratch x, y, d; eps = 2^-52. */
+typedef struct
+{
   mpfr_t x, y, d, eps, colmax[COLS], worst[COLS];
-  mpfr_inits2 (PREC, x, y, d, eps, (mpfr_ptr) 0);
-  mpfr_set_ui_2exp (eps, 1, -52, MPFR_RNDN);
+  int nc;
+  long K;
+} errors;
+
+static void
+errors_init (errors *e, int nc, long K)
+{
+  mpfr_inits2 (PREC, e->x, e->y, e->d, e->eps, (mpfr_ptr) 0);
+  mpfr_set_ui_2exp (e->eps, 1, -52, MPFR_RNDN);
   for (int j = 0; j < nc; j++)
     {
-      mpfr_init2 (colmax[j], PREC);
-      mpfr_init2 (worst[j], PREC);
-      mpfr_set_zero (colmax[j], 1);
-      mpfr_set_zero (worst[j], 1);
+      mpfr_init2 (e->colmax[j], PREC);
+      mpfr_init2 (e->worst[j], PREC);
+      mpfr_set_zero (e->colmax[j], 1);
+      mpfr_set_zero (e->worst[j], 1);
     }
+  e->nc = nc;
+  e->K = K;
+}
+
+static void
+errors_clear (errors *e)
+{
+  for (int j = 0; j < e->nc; j++)
+    {
+      mpfr_clear (e->colmax[j]);
+      mpfr_clear (e->worst[j]);
+    }
+  mpfr_clears (e->x, e->y, e->d, e->eps, (mpfr_ptr) 0);
+}
+
+/* The entries TA, TB of column J (NAME) on line LINE, in pass PASS (0:
+   the column's largest |b|; 1: the error): 0, 1 where integers differ, 2
+   where they are not numbers. */
+static int
+compare_cell (errors *e, int pass, int j, const char *name, size_t line,
+              const char *ta, const char *tb)
+{
+  const int deg = degree (name);
+  char *end;
+  if (deg == 99)
+    {
+      if (pass == 0 || !strcmp (ta, tb))
+        return 0;
+      fprintf (stderr, "line %zu, %s: %s, %s\n", line, name, ta, tb);
+      return 1;
+    }
+  if (mpfr_strtofr (e->x, ta, &end, 10, MPFR_RNDN), *end
+      || (mpfr_strtofr (e->y, tb, &end, 10, MPFR_RNDN), *end))
+    {
+      fprintf (stderr, "line %zu, %s: not numbers: %s, %s\n", line, name,
+               ta, tb);
+      return 2;
+    }
+  mpfr_mul_2si (e->y, e->y, -deg * e->K, MPFR_RNDN);   /* exact */
+  if (pass == 0)
+    {
+      mpfr_abs (e->d, e->y, MPFR_RNDN);
+      if (mpfr_cmp (e->d, e->colmax[j]) > 0)
+        mpfr_set (e->colmax[j], e->d, MPFR_RNDN);
+      return 0;
+    }
+  mpfr_sub (e->d, e->x, e->y, MPFR_RNDN);
+  mpfr_abs (e->d, e->d, MPFR_RNDN);
+  if (mpfr_zero_p (e->d))
+    return 0;
+  if (deg == 0)
+    mpfr_div (e->d, e->d, e->colmax[j], MPFR_RNDN);
+  else if (mpfr_zero_p (e->y))
+    mpfr_set_inf (e->d, 1);
+  else
+    mpfr_div (e->d, e->d, e->y, MPFR_RNDN);
+  mpfr_abs (e->d, e->d, MPFR_RNDN);
+  mpfr_div (e->d, e->d, e->eps, MPFR_RNDN);
+  if (mpfr_cmp (e->d, e->worst[j]) > 0)
+    mpfr_set (e->worst[j], e->d, MPFR_RNDN);
+  return 0;
+}
+
+/* Compare the tables A and B (A's physical values against B's scaled by
+   2^(-d K)): 0 if every column is within TOL eps, 1 if not. */
+static int
+compare (const table *a, const table *b, double tol, long K)
+{
+  static char la[LINE_MAX_LEN], lb[LINE_MAX_LEN];
+  char *ha[COLS], *fa[COLS], *fb[COLS];
+  const int nc = same_headers (a, b, ha);
+  if (nc < 0)
+    return 1;
+  errors e;
+  errors_init (&e, nc, K);
   int bad = 0;
   /* two passes: the columns' largest |b|, then the errors */
   for (int pass = 0; pass < 2 && bad < 2; pass++)
@@ -178,70 +265,23 @@ compare (const table *a, const table *b, double tol, long K)
             bad = 2;
             break;
           }
-        for (int j = 0; j < nc; j++)
+        for (int j = 0; j < nc && bad < 2; j++)
           {
-            const int deg = degree (ha[j]);
-            char *end;
-            if (deg == 99)
-              {
-                if (pass == 1 && strcmp (fa[j], fb[j]))
-                  {
-                    fprintf (stderr, "line %zu, %s: %s, %s\n", i + 1, ha[j],
-                             fa[j], fb[j]);
-                    bad = 1;
-                  }
-                continue;
-              }
-            if (mpfr_strtofr (x, fa[j], &end, 10, MPFR_RNDN), *end
-                || (mpfr_strtofr (y, fb[j], &end, 10, MPFR_RNDN), *end))
-              {
-                fprintf (stderr, "line %zu, %s: not numbers: %s, %s\n",
-                         i + 1, ha[j], fa[j], fb[j]);
-                bad = 2;
-                break;
-              }
-            mpfr_mul_2si (y, y, -deg * K, MPFR_RNDN);   /* exact */
-            if (pass == 0)
-              {
-                mpfr_abs (d, y, MPFR_RNDN);
-                if (mpfr_cmp (d, colmax[j]) > 0)
-                  mpfr_set (colmax[j], d, MPFR_RNDN);
-                continue;
-              }
-            mpfr_sub (d, x, y, MPFR_RNDN);
-            mpfr_abs (d, d, MPFR_RNDN);
-            if (mpfr_zero_p (d))
-              continue;
-            if (deg != 0)
-              {
-                if (mpfr_zero_p (y))
-                  mpfr_set_inf (d, 1);
-                else
-                  mpfr_div (d, d, y, MPFR_RNDN);
-              }
-            else
-              mpfr_div (d, d, colmax[j], MPFR_RNDN);
-            mpfr_abs (d, d, MPFR_RNDN);
-            mpfr_div (d, d, eps, MPFR_RNDN);
-            if (mpfr_cmp (d, worst[j]) > 0)
-              mpfr_set (worst[j], d, MPFR_RNDN);
+            const int r = compare_cell (&e, pass, j, ha[j], i + 1, fa[j],
+                                        fb[j]);
+            bad = r > bad ? r : bad;
           }
       }
   for (int j = 0; j < nc && bad < 2; j++)
     {
       if (degree (ha[j]) == 99)
         continue;
-      const double w = mpfr_get_d (worst[j], MPFR_RNDU);
+      const double w = mpfr_get_d (e.worst[j], MPFR_RNDU);
       printf ("%s: %.3g eps\n", ha[j], w);
       if (!(w <= tol))
         bad = 1;
     }
-  for (int j = 0; j < nc; j++)
-    {
-      mpfr_clear (colmax[j]);
-      mpfr_clear (worst[j]);
-    }
-  mpfr_clears (x, y, d, eps, (mpfr_ptr) 0);
+  errors_clear (&e);
   return bad != 0;
 }
 
