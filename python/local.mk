@@ -33,18 +33,18 @@ EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \
 	python/examples/fig2a.py python/examples/fig3.py
 
 if ENABLE_PYTHON
-chaplygin_pyexecdir = $(pyexecdir)/chaplygin
-chaplygin_pyexec_PYTHON = $(PY_PACKAGE)
-nodist_chaplygin_pyexec_PYTHON = python/chaplygin/_generated.py
+# pkgpyexecdir: AM_PATH_PYTHON's $(pyexecdir)/chaplygin.  A directory name
+# without '_' matters: automake 1.16.5 orders install-DIRLTLIBRARIES after
+# install-libLTLIBRARIES (libtool relinks the module against the installed
+# libchaplygin-scene) under the name with the '_' dropped, so a
+# chaplygin_pyexec directory went unordered and a parallel `make install'
+# failed: "cannot find -lchaplygin-scene".
+pkgpyexec_PYTHON = $(PY_PACKAGE)
+nodist_pkgpyexec_PYTHON = python/chaplygin/_generated.py
 
 # The extension module: cffi's C (warnings are cffi's business, not ours:
 # no WARN_CFLAGS) over a convenience library of our C (with them).
-chaplygin_pyexec_LTLIBRARIES = python/chaplygin/_chaplygin_cffi.la
-# libtool relinks the module against the installed libchaplygin-scene and
-# libchaplygin, which automake does not order before it (automake bug
-# 7328): a parallel `make install' failed with "cannot find
-# -lchaplygin-scene".  They are installed first.
-install-chaplygin_pyexecLTLIBRARIES: install-libLTLIBRARIES
+pkgpyexec_LTLIBRARIES = python/chaplygin/_chaplygin_cffi.la
 nodist_python_chaplygin__chaplygin_cffi_la_SOURCES = python/gen/module.c
 python_chaplygin__chaplygin_cffi_la_CPPFLAGS = $(AM_CPPFLAGS) \
 	-I$(srcdir)/python/src -I$(srcdir)/lib/scene -Ipython/gen \
