@@ -208,10 +208,12 @@ check-tsan: distdir
 # `make check-valgrind': a subset of the unit tests under valgrind's
 # memcheck (in-process: CK_FORK=no), any error or definite leak fatal.
 # tests/test_alloc replaces malloc itself and is left out; the slowest
-# suites are left out to keep the run short (they run under ASan).
+# suites are left out to keep the run short (they run under ASan).  The
+# scene engine's suites too (their sweeps' OpenMP threads: libgomp's
+# thread stacks are "possibly lost", not definite).
 VALGRIND_CHECKS = tests/test_status tests/test_units tests/test_smooth \
 	tests/test_discrete tests/test_flow tests/test_map tests/test_ellint \
-	tests/test_quad tests/test_ode tests/test_stability
+	tests/test_quad tests/test_ode tests/test_stability $(SCENE_CHECKS)
 VALGRIND_DIR = $(distdir)-valgrind
 check-valgrind: distdir
 	rm -rf $(VALGRIND_DIR) && mv $(distdir) $(VALGRIND_DIR)
