@@ -2199,7 +2199,12 @@ typedef struct
    $H$ with $g$ by error-free arithmetic, as in chaplygin_discrete_step, and
    reversals are classified as by that function: the two agree except within a
    few ulps of a turning point at a slot end or of the spinning state, where
-   $(E, H)$ and $(u, H)$ round differently.
+   $(E, H)$ and $(u, H)$ round differently.  Where the state carries its $V^+$
+   (`V` nonzero) and $(V^+)^2$ is below a quarter of the scale of $E$ and $H$
+   (a slow start, which they hold to few or no digits: $V^+ = Omega^+ = 1$ at
+   $L_0 = 10^200$), $(V^+)^2$ is formed from $V^+$; one whose square leaves the
+   normal range counts by its sign alone (the fate does not depend on it beyond
+   rounding: a turning point at the start, or a motion away from $l = 0$).
 
    Accuracy:
      |E_final - E_f| <= 8 eps (S + T) + (4k + 8) eps T,
@@ -2214,12 +2219,15 @@ typedef struct
    `E_final` may underflow to 0 for $E$ near the underflow threshold.
 
    Domain: @sys initialised by chaplygin_discrete_init; `@init->dir` $+1$ or
-   $-1$; finite fields; $E > 0$ and $(V^+)^2 = 2E - H^2/(1 + l_0^2) > 0$; the
-   slot within $2^500$ of the mass centre, or far (@pxref{Far slots}).
+   $-1$; finite fields; $E > 0$ and $(V^+)^2 = 2E - H^2/(1 + l_0^2) > 0$ (or the
+   state's own $V^+$ nonzero); the slot within $2^500$ of the mass centre, or
+   far (@pxref{Far slots}).
 
    Errors: CHAPLYGIN_EINVAL (null @sys, @init or @fate, or `dir`),
    CHAPLYGIN_EDOM (a non-finite field of @init or @sys, $Delta <= 0$, or
-   $E < 0$), CHAPLYGIN_ESTATE ($E = 0$, or $(V^+)^2 <= 0$), CHAPLYGIN_ERANGE (a
+   $E < 0$), CHAPLYGIN_ESTATE ($E = 0$, $(V^+)^2 <= 0$, or a `V` of the wrong
+   sign or more than $2^(-20)$ of the scale of $E$ and $H$ from theirs: not
+   this state's), CHAPLYGIN_ERANGE (a
    slot beyond $2^500$ that is not far (@pxref{Far slots}), or $H^2/(2E)$
    overflows).
  */
@@ -2233,7 +2241,9 @@ int chaplygin_discrete_fate (const chaplygin_discrete *sys,
    $= (D^+, V^+, theta^+, Omega^+)$: $H = (1 + l_0^2) Omega^+$ and
    $u = (V^+)^2$ from $V^+$ itself, not through $E$, so that the fate stays
    accurate when $(V^+)^2 << (1 + l_0^2) (Omega^+)^2$.  $V^+$ and $Omega^+$ are
-   scaled by a power of two before the iteration.
+   scaled by a power of two before the iteration; a $V^+$ below about
+   $10^(-154)$ of $sqrt(1 + l_0^2) |Omega^+|$, whose square leaves the normal
+   range, counts by its sign alone (as in chaplygin_discrete_fate).
 
    Accuracy: for motions that never reverse ($L_0 > 0$ forward, $L_0 < -Delta$
    backward) $V_(final)^2$ and `E_final` agree with (B.12) evaluated in
@@ -2248,7 +2258,8 @@ int chaplygin_discrete_fate (const chaplygin_discrete *sys,
    Errors: CHAPLYGIN_EINVAL (a null pointer other than @reversal_at),
    CHAPLYGIN_EDOM (non-finite, or $Delta <= 0$), CHAPLYGIN_ESTATE ($V^+ = 0$,
    or $D^+$ not the end that $V^+$ implies), CHAPLYGIN_ERANGE (a slot beyond
-   $2^500$ that is not far (@pxref{Far slots})).
+   $2^500$ that is not far (@pxref{Far slots}), or an energy beyond the
+   double range).
  */
 int chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
                                    const double qplus[4],

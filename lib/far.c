@@ -156,6 +156,17 @@ chp_far_state (chp_far *f, double E, double H, int linear, double *Es,
 }
 
 int
+chp_far_state_of (chp_far *f, const chaplygin_discrete_state *in, int linear,
+                  chaplygin_discrete_state *si)
+{
+  *si = *in;
+  CHP_TRY (chp_far_state (f, in->E, in->H, linear, &si->E, &si->H));
+  if (!chp_far_in (f, CHP_Q_SPEED, in->V, &si->V))
+    si->V = 0.0;
+  return CHAPLYGIN_SUCCESS;
+}
+
+int
 chp_far_phase (chp_far *f, double l0, double V, double Omega, double *Vs,
                double *Omegas)
 {

@@ -67,6 +67,14 @@ int chp_far_open_path (double la, double lb, chp_far *f);
 int chp_far_state (chp_far *f, double E, double H, int linear, double *Es,
                    double *Hs);
 
+/* A discrete-skate state IN in the scaled problem: E, H by chp_far_state
+   (LINEAR as there), the rest copied, and the V^+ IN keeps scaled with
+   them (0 where it has none or its scaling is not exact): E and H cannot
+   hold a V^+ below about 2^-26 sqrt(2E) (V = Omega = 1 at L0 = 1e200),
+   which the state then carries alone. */
+int chp_far_state_of (chp_far *f, const chaplygin_discrete_state *in,
+                      int linear, chaplygin_discrete_state *si);
+
 /* m (the speed max(|V|, |l0 Omega|) scaled near 1 when k > 0; j = 0) and
    the scaled V, Omega of a phase state at l0.  CHAPLYGIN_ERANGE where a
    scaling is not exact. */

@@ -238,12 +238,12 @@ phase_scale (const fate_coef *c, double V, double Omega, double *u,
     }
   const double Vs = ldexp (V, -kk);
   const double H = n0 * ldexp (Omega, -kk);
-  const double uu = Vs * Vs;
   /* V+^2 below the normal range beside (1 + l0^2) Omega+^2 (|V+| under
-     ~1e-154 of it) would be lost, and an energy beyond the double range
-     has no final energy: both are refused before anything is written */
-  if (!(uu >= DBL_MIN)
-      || !isfinite (ldexp (0.5 * (uu + H * (H / n0)), 2 * kk)))
+     ~1e-154 of it) counts by its sign alone, as in start_u; an energy
+     beyond the double range has no final energy: refused before anything
+     is written */
+  const double uu = Vs * Vs >= DBL_MIN ? Vs * Vs : 0x1p-1074;
+  if (!isfinite (ldexp (0.5 * (uu + H * (H / n0)), 2 * kk)))
     return CHAPLYGIN_ERANGE;
   *u = uu;
   *Hs = H;
@@ -261,6 +261,38 @@ fate_from_phase (const fate_coef *c, double V, double Omega,
   CHP_TRY (phase_scale (c, V, Omega, &u, &Hs, &k));
   return fate_run (c, V > 0.0 ? 1 : -1, u, Hs, k, max, reversal_at, cap,
                    out);
+}
+
+/* u = (V+)^2 at the start of a state (E, H scaled by 2^-2k, 2^-k to ES,
+   HS; G0 = g(l0) from them, N0 = 1 + l0^2): 2 Es g0/n0, or from the
+   state's own V+ where E and H hold it to less than a quarter of their
+   scale (a slow start: V+ = Omega+ = 1 at L0 = 1e200, where they hold no
+   digit of it).  A V+ so slow that its square leaves the normal range
+   counts as the least positive u: u then matters by its sign alone (a
+   turning point at the start, or a motion away from l = 0 that V+ does
+   not change to within rounding).  CHAPLYGIN_ESTATE where V+ is not this
+   state's (more than 2^-20 of the scale apart, as chaplygin_discrete_step
+   checks) or the start is not a motion. */
+static int
+start_u (const chaplygin_discrete_state *init, int k, double Es, double Hs,
+         double g0, double n0, double *u)
+{
+  const double scale = 2.0 * Es + Hs * (Hs / n0);
+  const double u_eh = 2.0 * Es * (g0 / n0);
+  if (init->V == 0.0 || u_eh > 0.25 * scale)
+    {
+      if (!(u_eh > 0.0))
+        return CHAPLYGIN_ESTATE;
+      *u = u_eh;
+      return CHAPLYGIN_SUCCESS;
+    }
+  const double Vs = ldexp (init->V, -k);
+  const double u_v = Vs * Vs;
+  if (init->dir * init->V < 0.0
+      || !(fabs (u_v - u_eh) <= 0x1p-20 * scale))
+    return CHAPLYGIN_ESTATE;
+  *u = u_v >= DBL_MIN ? u_v : 0x1p-1074;
+  return CHAPLYGIN_SUCCESS;
 }
 
 /* chaplygin_discrete_fate: Section 3.1.3, the fate of the motion from the
@@ -313,14 +345,13 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
     {
       /* far (lib/far.c): the fate of the scaled state; counts and kind
          are scale-free */
-      chaplygin_discrete_state si = *init;
+      chaplygin_discrete_state si;
       chaplygin_fate r;
       if (init->dir != 1 && init->dir != -1)
         return CHAPLYGIN_EINVAL;
       if (!chp_finite2 (init->E, init->H) || init->E < 0.0)
         return CHAPLYGIN_EDOM;
-      CHP_TRY (chp_far_state (&f, init->E, init->H, 0, &si.E, &si.H));
-      si.V = 0.0;                 /* far: E, H scaled alone */
+      CHP_TRY (chp_far_state_of (&f, init, 0, &si));
       CHP_TRY (chaplygin_discrete_fate (&f.sys, &si, max_collisions,
                                         reversal_at, reversal_cap, &r));
       r.E_final = chp_far_out (&f, CHP_Q_ENERGY, r.E_final);
@@ -346,8 +377,8 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
   chp_motion m;
   CHP_TRY (chp_motion_init (Es, Hs, &m));
   const double g0 = chp_motion_g_exact (&m, sys->l_end[i], sys->l_err[i]);
-  if (!(g0 > 0.0))
-    return CHAPLYGIN_ESTATE;
+  double u;
+  CHP_TRY (start_u (init, k, Es, Hs, g0, c.leg[i].n0, &u));
   /* the spinning state (3.8), exactly as chaplygin_discrete_spins: 2E = H^2
      (the sign of 1 - h^2 is exact, and so is the scaling) and l = 0 on the
      path (l0 = 0 itself has V+ = 0, excluded above) */
@@ -360,7 +391,6 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
       *fate = r;
       return CHAPLYGIN_SUCCESS;
     }
-  const double u = 2.0 * Es * (g0 / c.leg[i].n0);
   return fate_run (&c, init->dir, u, Hs, k, max_collisions, reversal_at,
                    reversal_cap, fate);
 }
@@ -372,8 +402,8 @@ chaplygin_discrete_fate (const chaplygin_discrete *sys,
    Errors: CHAPLYGIN_EINVAL (NULL), CHAPLYGIN_EDOM (non-finite, Delta <= 0),
    CHAPLYGIN_ESTATE (V+ = 0 or D+ not the matching end), CHAPLYGIN_ERANGE
    (|L0 + D| above 2^500; the energy beyond the double range, |V+| above
-   ~1e154; |V+| below ~1e-154 of (1 + l0^2)^(1/2) |Omega+|, where V+^2
-   would leave the normal range). */
+   ~1e154).  A |V+| below ~1e-154 of (1 + l0^2)^(1/2) |Omega+|, whose
+   square would leave the normal range, counts by its sign (phase_scale). */
 int
 chaplygin_discrete_fate_phase (const chaplygin_discrete *sys,
                                const double qplus[4],

@@ -432,13 +432,12 @@ step_far (const chaplygin_discrete *sys, const chaplygin_discrete_state *in,
           chaplygin_discrete_state *out, chaplygin_discrete_event *ev)
 {
   chp_far f;
-  chaplygin_discrete_state si = *in, so;
+  chaplygin_discrete_state si, so;
   chaplygin_discrete_event se;
   CHP_TRY (chp_far_open_sys (sys, &f));
-  CHP_TRY (chp_far_state (&f, in->E, in->H, 1, &si.E, &si.H));
+  CHP_TRY (chp_far_state_of (&f, in, 1, &si));
   si.tau = 0.0;
   si.theta = 0.0;
-  si.V = 0.0;                   /* far: from the scaled E, H alone */
   unsigned req = request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU);
   if (request & CHAPLYGIN_WANT_PEG)
     req |= CHAPLYGIN_WANT_THETA;
@@ -1204,11 +1203,10 @@ chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
       /* far (lib/far.c): the scaled state; V times 2^-m, Omega times
          2^-(k+m+j) */
       chp_far f;
-      chaplygin_discrete_state si = *st;
+      chaplygin_discrete_state si;
       double qs[4];
       CHP_TRY (chp_far_open_sys (sys, &f));
-      CHP_TRY (chp_far_state (&f, st->E, st->H, 1, &si.E, &si.H));
-      si.V = 0.0;
+      CHP_TRY (chp_far_state_of (&f, st, 1, &si));
       CHP_TRY (chaplygin_discrete_state_to_phase (&f.sys, &si, qs));
       q[CHAPLYGIN_D] = D;
       q[CHAPLYGIN_V] = st->V != 0.0 ? st->V

@@ -211,6 +211,30 @@ known_w0 (double V, struct segment *sg)
   return CHAPLYGIN_SUCCESS;
 }
 
+/* w at the far end from the known w0 where that is the more accurate:
+   w1^2 = w0^2 + (l1^2 - l0^2), l1^2 - l0^2 = dir (2 L0 + 1) (rounded
+   once), taken where w0^2 + |2 L0 + 1| is below a quarter of l1^2 + p^2,
+   the scale of E and H's rounding of w1^2 (a slow start at a huge |l|:
+   V+ = Omega+ = 1 at L0 = 1e200, where E and H hold no digit of w1 and
+   the collision's V- came out 0).  Formed on the ratios to l1, which
+   neither overflow nor underflow.  Returns the sign of w1^2 (SIGN1, that
+   of E and H, where it keeps theirs). */
+static int
+w1_from_start (double L0, int dir, int sign1, struct segment *sg)
+{
+  const double a1 = fabs (sg->l1);
+  if (!(a1 > 0.0))
+    return sign1;
+  const double r0 = sg->w0 / a1, q = sg->p / a1;
+  const double d = (dir * (2.0 * L0 + 1.0) / a1) / a1;
+  if (!(r0 * r0 + fabs (d) <= 0.25 * (1.0 + q * q)))
+    return sign1;
+  const double u = r0 * r0 + d;         /* (w1/l1)^2 */
+  sg->w1 = u > 0.0 ? a1 * sqrt (u) : 0.0;
+  sg->g1 = u > 0.0 ? sg->w1 * sg->w1 : u * a1 * a1;
+  return (u > 0.0) - (u < 0.0);
+}
+
 /* Validate L0 and a state and classify its segment (E, H only: the
    heading and time need massless_geometry).
    Classification, exact in the sign of w^2 (w_of_l):
@@ -257,7 +281,10 @@ massless_segment (double L0, const chaplygin_discrete_state *in,
   int sign0 = w_of_l (E, H, sg->l0, l_err[sg->start], &sg->g0, &sg->w0);
   int sign1 = w_of_l (E, H, sg->l1, l_err[far], &sg->g1, &sg->w1);
   if (in->V != 0.0 && H != 0.0)
-    CHP_TRY (known_w0 (in->V, sg));
+    {
+      CHP_TRY (known_w0 (in->V, sg));
+      sign1 = w1_from_start (L0, in->dir, sign1, sg);
+    }
   else if (H != 0.0 && sign0 <= 0)
     return CHAPLYGIN_ESTATE;            /* V+ = 0, or |l0| < p */
   const int approaching = in->dir * sg->l0 < 0.0;

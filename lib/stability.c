@@ -223,14 +223,13 @@ chaplygin_discrete_jacobian (const chaplygin_discrete *sys,
       /* far (lib/far.c): the Jacobian of the scaled map in the scaled
          coordinates, scaled back (the entries not listed are
          scale-free) */
-      chaplygin_discrete_state si = *st;
+      chaplygin_discrete_state si;
       double Js[16];
       if (st->dir != 1 && st->dir != -1)
         return CHAPLYGIN_EINVAL;
       if (!chp_finite2 (st->E, st->H) || st->E < 0.0)
         return CHAPLYGIN_EDOM;
-      CHP_TRY (chp_far_state (&f, st->E, st->H, 1, &si.E, &si.H));
-      si.V = 0.0;                 /* far: E, H scaled alone */
+      CHP_TRY (chp_far_state_of (&f, st, 1, &si));
       CHP_TRY (chaplygin_discrete_jacobian (&f.sys, &si, Js));
       Js[7] = chp_far_out (&f, CHP_Q_DENERGY_DMOMENTUM, Js[7]);
       Js[9] = chp_far_out (&f, CHP_Q_DHEADING_DENERGY, Js[9]);

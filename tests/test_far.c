@@ -1333,6 +1333,52 @@ START_TEST (far_statuses)
 }
 END_TEST
 
+/* A far slot's slow start (V+ = Omega+ = 1 at L0 = 1e200: E and H hold
+   no digit of V+, which the state carries): the run's start converts back
+   to its V+, the step from it gives the next phase state of
+   chaplygin_discrete_poincare (the map in phase variables: another route)
+   and its time, and the fate is decided (away from l = 0: forward; towards
+   it: a turning point at once, then backward).  The far paths once dropped
+   the state's V+ and refused it (ESTATE). */
+START_TEST (far_slow_start)
+{
+  static const struct { double L0, Delta, V, Omega; int kind; } c[] = {
+    { 1e153, 1.0 / 3.0, 1.0, 1.0, CHAPLYGIN_FATE_FORWARD },
+    { 1e200, 1.0 / 3.0, 1.0, 1.0, CHAPLYGIN_FATE_FORWARD },
+    { 1e300, 1.0 / 3.0, 1.0, -1.0, CHAPLYGIN_FATE_FORWARD },
+    { -1e200, 1.0, 1.0, 1.0, CHAPLYGIN_FATE_BACKWARD },
+    { -1e200, 1.0, -1.0, 0.5, CHAPLYGIN_FATE_BACKWARD },
+  };
+  for (size_t k = 0; k < NELEM (c); k++)
+    {
+      chaplygin_discrete sys;
+      chaplygin_discrete_state st, next;
+      chaplygin_discrete_event ev;
+      chaplygin_fate fate;
+      double qs[4], q0[4], qn[4], qp[4], dtau;
+      int m;
+      ck_assert_ok (chaplygin_discrete_init (&sys, c[k].L0, c[k].Delta));
+      const double q[4] = { c[k].V > 0 ? 0.0 : c[k].Delta, c[k].V, 0.0,
+                            c[k].Omega };
+      ck_assert_ok (chaplygin_discrete_scaled_state (&sys, q, 0.0, NULL, &st,
+                                                     &m, qs));
+      ck_assert_ok (chaplygin_discrete_state_to_phase (&sys, &st, q0));
+      ck_assert (q0[CHAPLYGIN_V] == qs[CHAPLYGIN_V]);
+      ck_assert_ok (chaplygin_discrete_step (&sys, &st, CHAPLYGIN_WANT_ALL,
+                                             NULL, &next, &ev));
+      ck_assert_ok (chaplygin_discrete_state_to_phase (&sys, &next, qn));
+      ck_assert_ok (chaplygin_discrete_poincare (&sys, q, NULL, qp, &dtau));
+      /* the two routes round differently a few times each (measured: 0
+         and 1 ulp) */
+      ck_assert_eps (ldexp (qn[CHAPLYGIN_V], -m), qp[CHAPLYGIN_V], 8);
+      ck_assert_eps (ldexp (qn[CHAPLYGIN_OMEGA], -m), qp[CHAPLYGIN_OMEGA], 8);
+      ck_assert_eps (ldexp (ev.dtau, m), dtau, 8);
+      ck_assert_ok (chaplygin_discrete_fate (&sys, &st, 10, NULL, 0, &fate));
+      ck_assert_int_eq (fate.kind, c[k].kind);
+    }
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1349,5 +1395,6 @@ main (void)
   tu_add (s, "far_flow", far_flow);
   tu_add (s, "far_basins", far_basins);
   tu_add (s, "far_statuses", far_statuses);
+  tu_add (s, "far_slow_start", far_slow_start);
   return tu_run (s);
 }

@@ -1719,6 +1719,44 @@ START_TEST (test_scaled_state)
 }
 END_TEST
 
+/* A slow start at a huge |l| (V+ = Omega+ = 1 at L0 = 1e200: E and H
+   hold no digit of V+, which the state carries): each collision's V+
+   against the recurrence of the massless map in binary128 (another
+   route: E kept, H' = H L0/(L0 + 1), V- = s w1/(L0 + 1) with w1^2 = w0^2
+   + 2 L0 + 1, V+' = V-, w0' = w1 L0/(L0 + 1), V+ = s w0/L0, s^2 = V0^2 +
+   L0^2 Omega0^2).  Once V+ = 0 came out of the first collision and the
+   second was refused. */
+START_TEST (test_slow_start)
+{
+  static const double L0s[] = { 1e100, 1e200, 1e300, 3e15 };
+  for (size_t a = 0; a < NELEM (L0s); a++)
+    {
+      const double L0 = L0s[a], q[4] = { 0.0, 1.0, 0.0, 1.0 };
+      chaplygin_discrete_state st, next;
+      double qs[4], qn[4];
+      int m;
+      ck_assert_ok (chaplygin_massless_scaled_state (L0, q, 0.0, NULL, &st,
+                                                     &m, qs));
+      const q128 l = L0, sq = 1 + l * l, r = l / (l + 1);
+      q128 w2 = l * l / sq;             /* w0^2 = (L0 V0/s)^2 */
+      for (int n = 1; n <= 4; n++)
+        {
+          ck_assert_ok (chaplygin_massless_step (L0, &st, CHAPLYGIN_WANT_ALL,
+                                                 &next, NULL));
+          ck_assert_ok (chaplygin_massless_state_to_phase (L0, &next, qn));
+          w2 = (w2 + 2 * l + 1) * r * r;
+          /* V+ = s w0/L0 in the scaled units (s scaled with them) */
+          const double want = (double) (sqrtq (sq * w2) / l
+                                        * (q128) ldexp (1.0, m));
+          /* a few roundings a collision (the ratios to l1, the square
+             root, E and H's scaling): 4 eps each, n collisions */
+          ck_assert_rel (qn[CHAPLYGIN_V], want, 4 * n * DBL_EPSILON);
+          st = next;
+        }
+    }
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1736,6 +1774,7 @@ main (void)
   tu_add (s, "massless_edge_cases", test_edge_cases);
   tu_add (s, "massless_omega", test_omega);
   tu_add (s, "massless_scaled_state", test_scaled_state);
+  tu_add (s, "massless_slow_start", test_slow_start);
   TCase *t = tcase_create ("massless_flow");
   tcase_set_timeout (t, 60);
   tcase_add_test (t, test_flow);
