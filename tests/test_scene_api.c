@@ -891,6 +891,31 @@ START_TEST (integer_cells)
 }
 END_TEST
 
+/* A far slot's slow start runs (V = Omega = 1 at L0 = 1e200: it was
+   refused, "state is inconsistent"); one whose V and l0 Omega no power
+   of two brings into the doubles together is refused with the reason. */
+START_TEST (far_slow_start)
+{
+  static rows_kept k;
+  chaplygin_scene_report rep;
+  chaplygin_scene *sc = scene_of ("[scene]\nmodel = discrete\n[parameters]\n"
+                                  "L0 = 1e200\nDelta = 1/3\n[initial]\n"
+                                  "V = 1\nOmega = 1\n[run]\ncollisions = 3\n"
+                                  "outputs = V\n");
+  memset (&k, 0, sizeof k);
+  ck_assert_int_eq (run_into (sc, &k, 0, &rep), 0);
+  ck_assert_uint_eq (k.rows, 4);
+  ck_assert (rep.scaling != 0);
+  ck_assert_int_eq (chaplygin_scene_set (sc, "V", "1e-100", &rep), 0);
+  ck_assert_int_eq (chaplygin_scene_set (sc, "Omega", "1e100", &rep), 0);
+  ck_assert_int_eq (run_into (sc, &k, 0, &rep), CHAPLYGIN_SCENE_EMODEL);
+  ck_assert_int_eq (rep.library_status, CHAPLYGIN_ERANGE);
+  ck_assert_msg (strstr (rep.message, "further apart than the doubles"),
+                 "%s", rep.message);
+  chaplygin_scene_free (sc);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -908,5 +933,6 @@ main (void)
   tu_add (s, "interface_edges", interface_edges);
   tu_add (s, "text_rows", text_rows);
   tu_add (s, "integer_cells", integer_cells);
+  tu_add (s, "far_slow_start", far_slow_start);
   return tu_run (s);
 }

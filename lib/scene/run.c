@@ -559,17 +559,26 @@ skate_init (skate *k, const scene *sc, chaplygin_scene_report *rep,
                                        &k->m, q);
   if (status != CHAPLYGIN_SUCCESS)
     {
+      /* where the velocity scaling itself fails: no power of two brings V
+         and sqrt(1 + l0^2) Omega both into the doubles */
+      int m;
+      double Vs, Omegas;
+      const char *why = status == CHAPLYGIN_ERANGE
+        && chaplygin_velocity_scaling (k->L0 + D0, sc->V, sc->Omega, &m, &Vs,
+                                       &Omegas) == CHAPLYGIN_ERANGE
+        ? " (also in the units of any velocity scaling: V and "
+        "sqrt(1 + l0^2) Omega lie further apart than the doubles reach)" : "";
       rep->library_status = status;
       if (k->massless)
         return report_fail (rep, CHAPLYGIN_SCENE_EMODEL, "%s: [initial] V = "
                             "%.17g, Omega = %.17g (with [parameters] L0 = "
-                            "%.17g): %s", k->path, sc->V, sc->Omega, sc->L0,
-                            chaplygin_strerror (status));
+                            "%.17g): %s%s", k->path, sc->V, sc->Omega, sc->L0,
+                            chaplygin_strerror (status), why);
       return report_fail (rep, CHAPLYGIN_SCENE_EMODEL, "%s: [initial] V = "
                           "%.17g, Omega = %.17g (with [parameters] L0 = "
-                          "%.17g, Delta = %.17g): %s", k->path, sc->V,
+                          "%.17g, Delta = %.17g): %s%s", k->path, sc->V,
                           sc->Omega, sc->L0, sc->Delta,
-                          chaplygin_strerror (status));
+                          chaplygin_strerror (status), why);
     }
   rep->scaling = k->m;
   start->D0 = q[CHAPLYGIN_D];
