@@ -228,10 +228,25 @@ START_TEST (integers)
   integer_is ("0x3e8.000p0", 0, 10000, 1000);
   integer_is ("10000000000000000000/10000000000000000", 0, 10000, 1000);
   integer_is ("-0", -1, 1, 0);
-  /* 2^53 + 1 reads as 2^53: integers from 2^53 on are refused. */
-  integer_fails ("9007199254740993", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
-  integer_fails ("9007199254740992", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
+  /* Plain digits are read exactly to the ends of long (through a double
+     2^53 + 1 would read as 2^53: they were refused from 2^53 on, below
+     the LONG_MAX that messages give as the limit); other forms where
+     the double is the exact value. */
+  integer_is ("9007199254740993", 0, LONG_MAX, 9007199254740993L);
+  integer_is ("9007199254740992", 0, LONG_MAX, 9007199254740992L);
   integer_is ("9007199254740991", 0, LONG_MAX, 9007199254740991L);
+  integer_is ("9223372036854775807", 0, LONG_MAX, LONG_MAX);
+  integer_is ("-9223372036854775808", LONG_MIN, 0, LONG_MIN);
+  integer_fails ("9223372036854775808", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
+  integer_fails ("-9223372036854775809", LONG_MIN, 0,
+                 CHAPLYGIN_NUMBER_RANGE);
+  integer_is ("0x1p62", 0, LONG_MAX, 4611686018427387904L);
+  integer_is ("1e18", 0, LONG_MAX, 1000000000000000000L);
+  integer_fails ("0x1p63", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
+  integer_fails ("1e30", 0, LONG_MAX, CHAPLYGIN_NUMBER_RANGE);
+  /* not plain digits, and its double (2^53) is not its value */
+  integer_fails ("9007199254740993.0", 0, LONG_MAX,
+                 CHAPLYGIN_NUMBER_NOT_INTEGER);
 }
 END_TEST
 

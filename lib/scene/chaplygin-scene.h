@@ -609,7 +609,10 @@ typedef enum
 int chaplygin_number_real (const char *text, double *x);
 
 /** @text as an integer $lo <= x <= hi$ into `*`@x (written only on
-   success); return a chaplygin_number_status.
+   success); return a chaplygin_number_status.  Plain decimal digits
+   (with a sign) are read exactly to the ends of `long`; another form
+   (@samp{1e3}, @samp{0x3e8}, @samp{3000/3}) is an integer where its
+   double is its exact value and integral.
  */
 int chaplygin_number_integer (const char *text, long lo, long hi, long *x);
 

@@ -22,9 +22,8 @@
 #include "chaplygin-scene.h"
 #include "engine.h"
 
-/* Integers are read through doubles, which hold every integer below 2^53
-   exactly; from 2^53 on, 2^53 + 1 would read as 2^53: refused. */
-#define EXACT_INTEGER_LIMIT 9007199254740992.0
+/* 2^63: a double integer below it in magnitude converts to long. */
+#define LONG_LIMIT 9223372036854775808.0
 
 /* The characters a strtod constant may hold: decimal and hex
    digits (e, E among them), the hex prefix and exponent letters, signs and
@@ -158,30 +157,52 @@ chaplygin_number_real (const char *text, double *x)
   return status;
 }
 
+/* TEXT in plain decimal digits ([+-]digits) as a long: exact to the
+   end of long (2^53 + 1 through a double would read as 2^53). */
+static int
+read_digits (const char *text, long *x)
+{
+  const char *p = text + (*text == '+' || *text == '-');
+  char *end;
+  if (!is_digits (p, strlen (p)))
+    return CHAPLYGIN_NUMBER_SYNTAX;
+  errno = 0;
+  *x = strtol (text, &end, 10);
+  return errno == ERANGE ? CHAPLYGIN_NUMBER_RANGE : CHAPLYGIN_NUMBER_OK;
+}
+
 int
 chaplygin_number_integer (const char *text, long lo, long hi, long *x)
 {
   double v;
-  int exact = 0;
+  long n;
+  int exact = 0, status;
   c_locale l;
 
   if (!text || !x)
     return CHAPLYGIN_NUMBER_SYNTAX;
   if (c_locale_enter (&l) != 0)
     return CHAPLYGIN_NUMBER_RANGE;
-  int status = read_real (text, &v, &exact);
+  status = read_digits (text, &n);
+  if (status == CHAPLYGIN_NUMBER_SYNTAX)
+    {
+      /* 1e3, 0x3e8, 3000/3: an integer where the double is the exact
+         value ("1000.0000000000000001" and "1e-400" round to integers;
+         they are not integers) */
+      status = read_real (text, &v, &exact);
+      if (status == CHAPLYGIN_NUMBER_OK && !(fabs (v) < LONG_LIMIT))
+        status = CHAPLYGIN_NUMBER_RANGE;
+      else if (status == CHAPLYGIN_NUMBER_OK && (v != floor (v) || !exact))
+        status = CHAPLYGIN_NUMBER_NOT_INTEGER;
+      else if (status == CHAPLYGIN_NUMBER_OK)
+        n = (long) v;
+    }
   c_locale_leave (&l);
   if (status != CHAPLYGIN_NUMBER_OK)
     return status;
-  if (v != floor (v))
-    return CHAPLYGIN_NUMBER_NOT_INTEGER;
-  if (fabs (v) >= EXACT_INTEGER_LIMIT || v < (double) lo || v > (double) hi)
+  if (n < lo || n > hi)
     return CHAPLYGIN_NUMBER_RANGE;
-  /* "1000.0000000000000001" and "1e-400" round to integers; they are not
-     integers */
-  if (!exact)
-    return CHAPLYGIN_NUMBER_NOT_INTEGER;
-  *x = (long) v;
+  *x = n;
   return CHAPLYGIN_NUMBER_OK;
 }
 
