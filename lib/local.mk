@@ -61,7 +61,8 @@ pkgconfig_DATA = chaplygin.pc
 ## paper's equations by label, the numbers a user writes.  A second
 ## installed library, a client of libchaplygin's public interface only,
 ## so that the numerical library keeps GSL as its one dependency (the
-## engine needs libinih, GMP and MPFR, and OpenMP for sweeps).  The tests
+## engine needs GMP and MPFR, and OpenMP for sweeps; it reads inih's INI
+## syntax itself: Debian's libinih cuts lines at 198 bytes).  The tests
 ## link the convenience library (internal helpers); the installed one
 ## exports the engine's public names.
 noinst_LTLIBRARIES += lib/libchaplygin-scene-core.la
@@ -89,15 +90,13 @@ $(srcdir)/lib/scene/eq-evaluators.h: $(srcdir)/lib/labels.txt \
 	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ h $(srcdir)/lib/labels.txt
 BUILT_SOURCES += $(srcdir)/lib/scene/eq-evaluators.h
 lib_libchaplygin_scene_core_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
-lib_libchaplygin_scene_core_la_CFLAGS = $(AM_CFLAGS) $(INIH_CFLAGS) \
-	$(OPENMP_CFLAGS)
-lib_libchaplygin_scene_core_la_LIBADD = $(INIH_LIBS) $(MPFR_LIBS) \
-	$(CODE_COVERAGE_LIBS)
+lib_libchaplygin_scene_core_la_CFLAGS = $(AM_CFLAGS) $(OPENMP_CFLAGS)
+lib_libchaplygin_scene_core_la_LIBADD = $(MPFR_LIBS) $(CODE_COVERAGE_LIBS)
 
 lib_LTLIBRARIES += lib/libchaplygin-scene.la
 lib_libchaplygin_scene_la_SOURCES =
 lib_libchaplygin_scene_la_LIBADD = lib/libchaplygin-scene-core.la \
-	lib/libchaplygin.la $(INIH_LIBS) $(MPFR_LIBS) $(CODE_COVERAGE_LIBS)
+	lib/libchaplygin.la $(MPFR_LIBS) $(CODE_COVERAGE_LIBS)
 lib_libchaplygin_scene_la_LDFLAGS = -version-info 0:0:0 $(OPENMP_CFLAGS) \
 	-export-symbols-regex '^chaplygin_(scene|number|cell|row|text|eq)_'
 include_HEADERS += lib/scene/chaplygin-scene.h

@@ -37,7 +37,7 @@ TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh tests/apiref.sh
 # internal structure, its public interface from outside.
 SCENE_TEST_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
 SCENE_TEST_LDADD = lib/libchaplygin-scene-core.la $(TEST_LDADD) \
-	$(INIH_LIBS) $(MPFR_LIBS) $(OPENMP_CFLAGS)
+	$(MPFR_LIBS) $(OPENMP_CFLAGS)
 SCENE_CHECKS = tests/test_scene tests/test_number tests/test_scene_api
 check_PROGRAMS += $(SCENE_CHECKS)
 TESTS += $(SCENE_CHECKS)

@@ -375,14 +375,14 @@ END_TEST
 /* Lines up to inih's buffer (198 bytes without the line end). */
 START_TEST (long_lines)
 {
-  char text[1024];
-  char line[256];
+  enum { MAX = 8192 };          /* the reader's longest line */
+  static char text[MAX + 1024], line[MAX + 16];
   scene sc;
 
-  /* 198 bytes without the line end: accepted (also with CRLF). */
+  /* MAX bytes without the line end: accepted (also with CRLF). */
   memset (line, ' ', sizeof line);
   memcpy (line, "L0 = 1", 6);
-  line[198] = '\0';
+  line[MAX] = '\0';
   snprintf (text, sizeof text, DISCRETE_HEAD "[parameters]\nDelta = 1\n"
             "%s\n[initial]\nV = 1\nOmega = 0\n[run]\ncollisions = 1\n", line);
   parse_ok (text, &sc);
@@ -395,15 +395,33 @@ START_TEST (long_lines)
   snprintf (text, sizeof text, DISCRETE "%s", line);
   parse_ok (text, &sc);
   line[0] = 'L';
-  /* 199 bytes: line 5 is too long. */
-  line[198] = 'x';
-  line[199] = '\0';
+  /* MAX + 1 bytes: line 5 is too long. */
+  line[MAX] = 'x';
+  line[MAX + 1] = '\0';
   snprintf (text, sizeof text, DISCRETE_HEAD "[parameters]\nDelta = 1\n"
             "%s\n[initial]\nV = 1\nOmega = 0\n[run]\ncollisions = 1\n", line);
-  expect_error (text, 5, "line too long (more than 198 bytes)", NULL);
+  expect_error (text, 5, "line too long (more than 8192 bytes)", NULL);
   /* As the last line, without a line end. */
   snprintf (text, sizeof text, DISCRETE "; %s", line);
   expect_error (text, 11, "line too long", NULL);
+  /* A number longer than the 198 bytes of Debian's inih lines: p/q of
+     700 digits each, 3 exactly (333...3/111...1), as given when written
+     back; a value of 4096 bytes is one too many. */
+  char *p = line + snprintf (line, sizeof line, "L0 = ");
+  memset (p, '3', 700);
+  p[700] = '/';
+  memset (p + 701, '1', 700);
+  p[1401] = '\0';
+  snprintf (text, sizeof text, DISCRETE_HEAD "[parameters]\nDelta = 1\n"
+            "%s\n[initial]\nV = 1\nOmega = 0\n[run]\ncollisions = 1\n", line);
+  parse_ok (text, &sc);
+  ck_assert (sc.L0 == 3.0);
+  ck_assert_str_eq (sc.text[K_L0], p);
+  memset (p, '1', 4096);
+  p[4096] = '\0';
+  snprintf (text, sizeof text, DISCRETE_HEAD "[parameters]\nDelta = 1\n"
+            "%s\n[initial]\nV = 1\nOmega = 0\n[run]\ncollisions = 1\n", line);
+  expect_error (text, 5, "value too long (4096 bytes, at most 4095)", NULL);
 }
 END_TEST
 
@@ -461,7 +479,7 @@ END_TEST
 /* inih's syntax errors and which error comes first. */
 START_TEST (syntax_errors)
 {
-  expect_error (DISCRETE "[run\n", 11, "syntax error", NULL);
+  expect_error (DISCRETE "[run\n", 11, "syntax error", "no ']' to end");
   expect_error (DISCRETE "just words\n", 11, "syntax error", NULL);
   expect_error (DISCRETE "= 3\n", 11, "syntax error", "no key name");
   expect_error ("model = discrete\n", 1, "model",

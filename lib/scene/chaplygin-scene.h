@@ -34,9 +34,9 @@ extern "C" {
 
    @noindent
    and linked with @option{-lchaplygin-scene} (@command{pkg-config
-   chaplygin-scene}; it needs libinih, GMP and MPFR, and OpenMP for the
-   sweeps).  A second library keeps the numerical library's one dependency
-   GSL: a user of the equations needs no INI reader and no multiple
+   chaplygin-scene}; it needs GMP and MPFR, and OpenMP for the sweeps).  A
+   second library keeps the numerical library's one dependency GSL: a
+   user of the equations needs no scene reader and no multiple
    precision.  The shared library exports the names below.
 
    The engine reports; the caller prints.  No function writes to standard
@@ -190,8 +190,9 @@ int chaplygin_scene_read_stream (chaplygin_scene *sc, FILE *in,
 
 /** The same from the @len bytes at @text (need not end in NUL; a NUL byte
    is an error).  The INI syntax is inih's: @samp{;} and @samp{#} comment
-   lines, @samp{;} inline comments after white space, LF or CRLF line ends,
-   lines of at most 198 bytes.
+   lines, @samp{;} inline comments after white space, LF or CRLF line ends;
+   lines of at most 8192 bytes, values of at most 4095 (any number that
+   denotes a double exactly, its exact decimal or p/q, fits).
  */
 int chaplygin_scene_read_text (chaplygin_scene *sc, const char *text,
                                size_t len, const char *name,
@@ -200,7 +201,7 @@ int chaplygin_scene_read_text (chaplygin_scene *sc, const char *text,
 /** The same from the @n triples (`@section[i]`, `@key[i]`, `@value[i]`),
    each value as a file gives it (@samp{1/3}, @samp{closed-form},
    @samp{E,H}) but without the INI syntax: no comment, no continuation, no
-   line limit (a value of up to 199 bytes); the same checks of keys and
+   line limit (a value of up to 4095 bytes); the same checks of keys and
    values.  A scene read from triples is written back
    (chaplygin_scene_write) with its reals as their doubles; one read from
    text with each real as given.  Python's scene dicts come this way.

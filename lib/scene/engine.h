@@ -73,8 +73,10 @@ enum scene_key
 #define SCENE_COLLISIONS_MAX 1000000000L
 #define SCENE_MAX_ROWS_DEFAULT 10000000L
 #define SCENE_MAX_ROWS_MAX 9007199254740991L      /* 2^53 - 1 */
-/* A value's text as given, kept for scene_write ("1/3" stays "1/3"). */
-#define SCENE_TEXT_MAX 200
+/* A value's text as given, kept for scene_write ("1/3" stays "1/3"):
+   any number that denotes a double exactly fits (the exact decimal of
+   the least subnormal has 751 digits; as p/q, 2^1074 has 324). */
+#define SCENE_TEXT_MAX 4096
 #define SCENE_NAME_MAX 256
 
 /* A valid scene (or an empty one: valid = 0). */

@@ -1,16 +1,17 @@
 /* scene.c -- reading, checking and writing a scene (chaplygin-scene.h,
    "Scenes").
 
-   The INI syntax is inih's (ini_parse_stream, with the library's build
-   settings: INI_MAX_LINE 200, multi-line values, ';' inline comments after
-   white space, ';' and '#' comment lines, a UTF-8 BOM, "key: value" as
-   well as "key = value").  A reader of our own feeds inih one line at a
-   time, which gives the handler its line number, and rejects what inih
-   cannot see: a line longer than inih's buffer (198 bytes without its
-   line end), a NUL byte, a carriage return not ending a line (LF and CRLF
-   line ends only), more than SCENE_MAX_LINES lines.  Key/value triples
-   (chaplygin_scene_read_pairs) skip the INI syntax and go through the same
-   checks of keys and values.  Nothing is allocated; all state lives in a
+   The INI syntax is that of inih, read here (Debian's libinih is built
+   with lines of 198 bytes at most, and a number may be longer: the exact
+   decimal of the least subnormal double has 751 digits): [section]
+   headers, "key = value" and "key: value", ';' and '#' comment lines, ';'
+   inline comments after white space, a UTF-8 BOM, LF and CRLF line ends;
+   anything after the ']' of a header is ignored; an indented line after
+   a key continues its value (an error here).  The reader rejects a line
+   longer than SCENE_LINE_MAX bytes without its line end, a NUL byte, a
+   carriage return not ending a line, more than SCENE_MAX_LINES lines.
+   Key/value triples (chaplygin_scene_read_pairs) skip the INI syntax and
+   go through the same checks of keys and values.  All state lives in a
    parse context (reentrant); numbers are read in the C locale.
 
    Decisions where the manual is silent:
@@ -73,13 +74,14 @@
 #include <string.h>
 #include <strings.h>
 
-#include <ini.h>
 
 #include "chaplygin-scene.h"
 #include "engine.h"
 
-/* More lines than this are an error (inih counts lines in an int). */
+/* More lines than this are an error. */
 #define SCENE_MAX_LINES 1000000L
+/* The longest line, without its line end. */
+#define SCENE_LINE_MAX 8192
 
 /* Bytes of a value shown in messages ("value '...' is 0"), and of a name
    or value shown where it may be anything. */
@@ -377,9 +379,13 @@ typedef struct
   FILE *file;                   /* the source: a stream, or else */
   const unsigned char *pos;     /* the bytes [pos, end) */
   const unsigned char *end;
-  long lineno;                  /* lines handed to inih (0: triples) */
+  long lineno;                  /* lines read (0: triples) */
   int indented;                 /* the last line starts with white space */
-  int last_key;                 /* the key of the last handler call, or -1 */
+  int last_key;                 /* the key of the last take, or -1 */
+  char section[SCENE_LINE_MAX + 1];     /* the current [section] */
+  char prev_name[SCENE_LINE_MAX + 1];   /* the key of the section's last
+                                           key line ("" after a header) */
+  char line[SCENE_LINE_MAX + 1];        /* the line being read */
   scene sc;                     /* the scene being filled */
   long order;                   /* keys taken so far */
   long line_of[K_COUNT];        /* where each key is, 0 if absent or a
@@ -467,20 +473,18 @@ source_getc (parse_ctx *c)
   return EOF;
 }
 
-/* inih's fgets: the next line of the source into BUF (SIZE bytes), its
-   line end (LF, CRLF, or none on the last line) made "\n" as fgets would
-   give it (newer inih takes a line without "\n" that fills the buffer
-   for a cut one), or NULL at the end of the source or on an error
-   (recorded in C). */
-static char *
-scene_reader (char *buf, int size, void *stream)
+/* The next line of the source into c->line, its line end (LF, CRLF, or
+   none on the last line) removed: 1, or 0 at the end of the source or on
+   an error (recorded in C). */
+static int
+read_line (parse_ctx *c)
 {
-  parse_ctx *c = stream;
   long line = c->lineno + 1;
-  int n = 0, ch;
+  size_t n = 0;
+  int ch;
 
-  if (c->failed || c->io_errno || size < 3)
-    return NULL;
+  if (c->failed || c->io_errno)
+    return 0;
   for (;;)
     {
       ch = source_getc (c);
@@ -493,40 +497,37 @@ scene_reader (char *buf, int size, void *stream)
             break;
           fail (c, line, NULL, NULL, "carriage return inside a line "
                 "(line ends are LF or CRLF)");
-          return NULL;
+          return 0;
         }
       if (ch == '\0')
         {
           fail (c, line, NULL, NULL, "NUL byte in the text");
-          return NULL;
+          return 0;
         }
-      if (n >= size - 2)
+      if (n >= SCENE_LINE_MAX)
         {
           fail (c, line, NULL, NULL, "line too long (more than %d bytes)",
-                size - 2);
-          return NULL;
+                SCENE_LINE_MAX);
+          return 0;
         }
-      buf[n++] = (char) ch;
+      c->line[n++] = (char) ch;
     }
   if (ch == EOF && c->file && ferror (c->file))
     {
       c->io_errno = errno ? errno : EIO;
-      return NULL;
+      return 0;
     }
   if (ch == EOF && n == 0)
-    return NULL;
+    return 0;
   if (line > SCENE_MAX_LINES)
     {
       fail (c, line, NULL, NULL, "too many lines (at most %ld)",
             SCENE_MAX_LINES);
-      return NULL;
+      return 0;
     }
-  buf[n] = '\n';
-  buf[n + 1] = '\0';
+  c->line[n] = '\0';
   c->lineno = line;
-  /* inih's isspace in the C locale (a CR cannot be here). */
-  c->indented = n > 0 && strchr (" \t\v\f", buf[0]) != NULL;
-  return buf;
+  return 1;
 }
 
 /* ---------------------------------------------------------------- */
@@ -911,12 +912,100 @@ take (parse_ctx *c, const char *section, const char *name, const char *value)
   return read_value (c, k, value);
 }
 
-/* inih's handler: one "name = value" of SECTION. */
+/* ---------------------------------------------------------------- */
+/* The INI syntax (inih's)                                           */
+/* ---------------------------------------------------------------- */
+
+/* White space as inih's isspace in the C locale. */
 static int
-scene_handler (void *user, const char *section, const char *name,
-               const char *value)
+ini_space (char ch)
 {
-  return take (user, section, name, value) == 0;
+  return ch != '\0' && strchr (" \t\n\v\f\r", ch) != NULL;
+}
+
+/* S without its leading white space. */
+static char *
+ini_lskip (char *s)
+{
+  while (ini_space (*s))
+    s++;
+  return s;
+}
+
+/* S with its trailing white space cut. */
+static char *
+ini_rstrip (char *s)
+{
+  size_t n = strlen (s);
+  while (n > 0 && ini_space (s[n - 1]))
+    s[--n] = '\0';
+  return s;
+}
+
+/* The first of CHARS (NULL: none) in S, or the ';' of an inline comment
+   (after white space), or the end of S. */
+static char *
+ini_find (char *s, const char *chars)
+{
+  int was_space = 0;
+  while (*s && !(chars && strchr (chars, *s)) && !(was_space && *s == ';'))
+    {
+      was_space = ini_space (*s);
+      s++;
+    }
+  return s;
+}
+
+/* One line of the source (c->line): a comment, a [section] header, a
+   "key = value" (or "key: value"), or an indented line after a key,
+   which would continue its value.  Errors are recorded in C. */
+static void
+parse_line (parse_ctx *c)
+{
+  char *line = c->line, *start, *end;
+  if (c->lineno == 1 && (unsigned char) line[0] == 0xEF
+      && (unsigned char) line[1] == 0xBB && (unsigned char) line[2] == 0xBF)
+    line += 3;                  /* a UTF-8 BOM */
+  start = ini_lskip (ini_rstrip (line));
+  c->indented = start > line;
+  if (*start == '\0' || *start == ';' || *start == '#')
+    return;
+  if (c->prev_name[0] && c->indented)
+    {
+      /* a continuation of the key above: take refuses it */
+      end = ini_find (start, NULL);
+      *end = '\0';
+      take (c, c->section, c->prev_name, ini_rstrip (start));
+      return;
+    }
+  if (*start == '[')
+    {
+      end = ini_find (start + 1, "]");
+      if (*end != ']')
+        {
+          fail (c, c->lineno, NULL, NULL, "syntax error (no ']' to end the "
+                "[section] header)");
+          return;
+        }
+      *end = '\0';
+      strcpy (c->section, start + 1);
+      c->prev_name[0] = '\0';
+      return;
+    }
+  end = ini_find (start, "=:");
+  if (*end != '=' && *end != ':')
+    {
+      fail (c, c->lineno, NULL, NULL, "syntax error (expected [section], "
+            "key = value or a comment)");
+      return;
+    }
+  *end = '\0';
+  char *name = ini_rstrip (start), *value = end + 1;
+  end = ini_find (value, NULL);
+  *end = '\0';
+  value = ini_rstrip (ini_lskip (value));
+  strcpy (c->prev_name, name);
+  take (c, c->section, name, value);
 }
 
 /* ---------------------------------------------------------------- */
@@ -1103,25 +1192,13 @@ parse_source (parse_ctx *c, scene *sc)
   if (c_locale_enter (&l) != 0)
     return report_fail (c->rep, CHAPLYGIN_SCENE_ENOMEM, "%s: out of memory",
                         c->path);
-  int r = ini_parse_stream (scene_reader, c, scene_handler, c);
+  while (read_line (c))
+    parse_line (c);
   c_locale_leave (&l);
 
   if (c->io_errno)
     return report_fail (c->rep, CHAPLYGIN_SCENE_EIO, "%s: cannot read: %s",
                         c->path, strerror (c->io_errno));
-  /* inih's first error is a line of its own (syntax) if it comes before
-     ours (a handler's error is on its line; a reader's on a line inih has
-     not seen). */
-  if (r > 0 && (!c->failed || r < c->err_line))
-    {
-      if (c->rep)
-        c->rep->status = CHAPLYGIN_SCENE_OK;
-      c->failed = 0;
-      fail (c, r, NULL, NULL, "syntax error (expected [section], "
-            "key = value or a comment)");
-    }
-  else if (r < 0 && !c->failed)
-    fail (c, 0, NULL, NULL, "cannot parse (inih error %d)", r);
   return finish (c, sc);
 }
 
@@ -1523,14 +1600,10 @@ chaplygin_scene_write (const chaplygin_scene *sc, FILE *out,
           if (!header)
             fprintf (out, "%s[%s]\n", prefix, section_names[sec]);
           header = 1;
-          /* A line of INI_MAX_LINE - 2 bytes at most, as read; no space
-             before a value that begins with ';' (inih would take " ;"
-             for the start of a comment). */
-          if (strlen (keys[k].name) + strlen (v) + 3 <= INI_MAX_LINE - 2)
-            fprintf (out, "%s%s =%s%s\n", prefix, keys[k].name,
-                     v[0] == ';' ? "" : " ", v);
-          else
-            fprintf (out, "%s%s=%s\n", prefix, keys[k].name, v);
+          /* no space before a value that begins with ';' (" ;" would
+             start a comment) */
+          fprintf (out, "%s%s =%s%s\n", prefix, keys[k].name,
+                   v[0] == ';' ? "" : " ", v);
         }
     }
   return ferror (out) ? CHAPLYGIN_SCENE_EIO : CHAPLYGIN_SCENE_OK;
