@@ -565,7 +565,8 @@ if ($mode eq 'list') {
     $text .= "  { { " . join(",\n      ", map { cstr($_) }
         $l, $f->{title}, $f->{'eq.inputs'}, $f->{'eq.outputs'},
         join(', ', names($f->{functions})), @e ? join(' ', @e) : '-',
-        $f->{'eq.paper'}, $f->{'eq.example'}) . " },\n    " . evaluator($l) . " },\n";
+        $f->{'eq.paper'}, $f->{'eq.example'}) . " },\n    " . evaluator($l) . ",\n    "
+        . (defined $f->{'eq.degrees'} ? cstr($f->{'eq.degrees'}) : 'NULL') . " },\n";
   }
   $text .= "};\n\nconst size_t eq_n_labels = sizeof eq_labels / sizeof eq_labels[0];\n";
 } elsif ($mode eq 'h') {

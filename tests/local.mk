@@ -38,7 +38,8 @@ TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh tests/apiref.sh
 SCENE_TEST_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
 SCENE_TEST_LDADD = lib/libchaplygin-scene-core.la $(TEST_LDADD) \
 	$(MPFR_LIBS) $(OPENMP_CFLAGS)
-SCENE_CHECKS = tests/test_scene tests/test_number tests/test_scene_api
+SCENE_CHECKS = tests/test_scene tests/test_number tests/test_scene_api \
+	tests/test_eq_scaling
 check_PROGRAMS += $(SCENE_CHECKS)
 TESTS += $(SCENE_CHECKS)
 tests_test_scene_SOURCES = tests/test_scene.c
@@ -49,6 +50,10 @@ tests_test_number_SOURCES = tests/test_number.c
 tests_test_number_CPPFLAGS = $(SCENE_TEST_CPPFLAGS)
 tests_test_number_CFLAGS = $(TEST_CFLAGS)
 tests_test_number_LDADD = $(SCENE_TEST_LDADD)
+tests_test_eq_scaling_SOURCES = tests/test_eq_scaling.c
+tests_test_eq_scaling_CPPFLAGS = $(SCENE_TEST_CPPFLAGS)
+tests_test_eq_scaling_CFLAGS = $(TEST_CFLAGS)
+tests_test_eq_scaling_LDADD = $(SCENE_TEST_LDADD)
 # the public interface only: linked as a program links the installed one
 tests_test_scene_api_SOURCES = tests/test_scene_api.c
 tests_test_scene_api_CPPFLAGS = $(SCENE_TEST_CPPFLAGS)

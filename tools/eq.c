@@ -45,12 +45,23 @@ csv_field (FILE *f, const char *field)
   fputc ('"', f);
 }
 
+/* X 2^E into BUF (SIZE >= CHAPLYGIN_NUMBER_TEXT_MAX): its exact
+   decimal where E != 0 (a value beyond the doubles). */
+static void
+format_real (char *buf, size_t size, double x, int e)
+{
+  if (e == 0)
+    snprintf (buf, size, "%.17g", x);
+  else if (chaplygin_number_format (buf, size, x, e) != 0)
+    snprintf (buf, size, "%.17g*2^%d", x, e);
+}
+
 /* The value of output O into BUF. */
 static void
 format_value (char *buf, size_t size, const chaplygin_eq_output *o)
 {
   if (o->kind == CHAPLYGIN_EQ_REAL)
-    snprintf (buf, size, "%.17g", o->x);
+    format_real (buf, size, o->x, o->e);
   else if (o->kind == CHAPLYGIN_EQ_INT)
     snprintf (buf, size, "%ld", o->n);
   else
@@ -74,7 +85,7 @@ format_printed (const chaplygin_eq_output *o, char *value, size_t vsize,
   if (o->kind == CHAPLYGIN_EQ_INT)
     snprintf (value, vsize, "%ld", o->pn);
   else
-    snprintf (value, vsize, "%.17g", o->px);
+    format_real (value, vsize, o->px, o->pe);
   if (!o->has_rel)
     return;
   if (o->rel == 0.0)

@@ -523,7 +523,11 @@ typedef struct
 {
   const char *name;             /** its name; */
   int kind;                     /** enum chaplygin_eq_kind; */
-  double x;                     /** a real value; */
+  double x;                     /** a real value, $x 2^e$; */
+  int e;                        /** 0, except for a value beyond the
+                                    doubles of an evaluation in the units
+                                    of a velocity scaling (as a run's
+                                    cells); */
   long n;                       /** an integer value; */
   const char *word;             /** a word; */
   const char *function;         /** the library function that computed
@@ -531,7 +535,8 @@ typedef struct
   const char *method;           /** how: @samp{formula}, @samp{exact},
                                     @samp{closed-form}, ...; */
   int printed;                  /** enum chaplygin_eq_printed_kind; */
-  double px;                    /** the printed form's value; */
+  double px;                    /** the printed form's value, $p_x 2^(p_e)$; */
+  int pe;                       /** (as `e`); */
   long pn;                      /** (an integer output's); */
   int pstatus;                  /** the printed form's status; */
   const char *pfunction;        /** the function evaluating it; */
@@ -572,7 +577,11 @@ typedef struct
 
 /** Evaluate @label at the @n inputs `@names[i]` = `@values[i]` (numbers as
    chaplygin_number_real reads them; words for `method` and `prec`) into
-   `*`@res.  Every input given must be used.  Return `res->status`.
+   `*`@res.  Every input given must be used.  Return `res->status`.  A
+   label whose inputs V and Omega make a state's E and H (its registry
+   record has eq.degrees) evaluates a state whose E or H would leave the
+   doubles in the units of its velocity scaling, as a run does (said in
+   `shown`), and gives each output in the units given: `x` $2^e$.
  */
 int chaplygin_eq_eval (const char *label, size_t n,
                        const char *const *names, const char *const *values,

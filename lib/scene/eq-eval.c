@@ -32,29 +32,36 @@ static int
 derive_eh (eq_ctx *c, double L0, double D, double V, double Omega, double *E,
            double *H)
 {
-  if (eq_lib (c, "chaplygin_discrete_energy",
-           chaplygin_discrete_energy (L0, D, V, Omega, E))
+  char e_text[CHAPLYGIN_NUMBER_TEXT_MAX], h_text[CHAPLYGIN_NUMBER_TEXT_MAX];
+  if (eq_scale_speeds (c, L0 + D, &V, &Omega)
+      || eq_lib (c, "chaplygin_discrete_energy",
+                 chaplygin_discrete_energy (L0, D, V, Omega, E))
       || eq_lib (c, "chaplygin_discrete_momentum",
-              chaplygin_discrete_momentum (L0, D, Omega, H)))
+                 chaplygin_discrete_momentum (L0, D, Omega, H)))
     return -1;
-  eq_show (c, "E = %.17g, H = %.17g (at D = %.17g by chaplygin_discrete_energy, "
-        "chaplygin_discrete_momentum)", *E, *H, D);
+  eq_show (c, "E = %s, H = %s (at D = %.17g by chaplygin_discrete_energy, "
+           "chaplygin_discrete_momentum)", eq_text (c, 2, *E, e_text),
+           eq_text (c, 1, *H, h_text), D);
   return 0;
 }
 
 /* The energy and momentum of the discrete skate's post-collision state of
    direction *dir: E, H and dir given, or V, Omega (dir optional, the sign
    of V) converted by (3.3), (3.4) at the peg's end (D = 0 for dir = +1,
-   Delta for -1). */
+   Delta for -1); *VPLUS (may be NULL) the state's V+ (0 for E, H given),
+   which E and H may not hold (a slow start), in the units of the
+   velocity scaling as E and H are. */
 static int
-post_collision_eh (eq_ctx *c, double L0, double Delta, int *dir, double *E,
-                   double *H)
+post_collision_state (eq_ctx *c, double L0, double Delta, int *dir,
+                      double *E, double *H, double *Vplus)
 {
   double V, Omega;
 
   int eh = eq_choose (c, "E", "H", "V", "Omega");
   if (eh < 0)
     return -1;
+  if (Vplus)
+    *Vplus = 0.0;
   if (eh)
     return eq_real_in (c, "E", E) || eq_real_in (c, "H", H)
       || eq_dir_in (c, "dir", dir);
@@ -62,7 +69,19 @@ post_collision_eh (eq_ctx *c, double L0, double Delta, int *dir, double *E,
       || eq_dir_from (c, "dir", V, "V", dir))
     return -1;
   double D = *dir > 0 ? 0.0 : Delta;
-  return derive_eh (c, L0, D, V, Omega, E, H);
+  if (derive_eh (c, L0, D, V, Omega, E, H))
+    return -1;
+  if (Vplus)
+    *Vplus = ldexp (V, c->m);   /* exact: as derive_eh scaled it */
+  return 0;
+}
+
+/* The same without V+. */
+static int
+post_collision_eh (eq_ctx *c, double L0, double Delta, int *dir, double *E,
+                   double *H)
+{
+  return post_collision_state (c, L0, Delta, dir, E, H, NULL);
 }
 
 /* E and H at a position: E, H given, or D, V, Omega converted by (3.3),
@@ -128,13 +147,16 @@ smooth_eh0 (eq_ctx *c, double L, double *E0, double *H0, int *dir0)
   if (eq_real_in (c, "V0", &V0) || eq_real_in (c, "Omega0", &Omega0)
       || eq_dir_from (c, "dir0", V0, "V0", dir0))
     return -1;
-  if (eq_lib (c, "chaplygin_smooth_energy",
-           chaplygin_smooth_energy (L, V0, Omega0, E0))
+  char e_text[CHAPLYGIN_NUMBER_TEXT_MAX], h_text[CHAPLYGIN_NUMBER_TEXT_MAX];
+  if (eq_scale_speeds (c, L, &V0, &Omega0)
+      || eq_lib (c, "chaplygin_smooth_energy",
+                 chaplygin_smooth_energy (L, V0, Omega0, E0))
       || eq_lib (c, "chaplygin_smooth_momentum",
-              chaplygin_smooth_momentum (L, Omega0, H0)))
+                 chaplygin_smooth_momentum (L, Omega0, H0)))
     return -1;
-  eq_show (c, "E0 = %.17g, H0 = %.17g (by chaplygin_smooth_energy, "
-        "chaplygin_smooth_momentum)", *E0, *H0);
+  eq_show (c, "E0 = %s, H0 = %s (by chaplygin_smooth_energy, "
+           "chaplygin_smooth_momentum)", eq_text (c, 2, *E0, e_text),
+           eq_text (c, 1, *H0, h_text));
   return 0;
 }
 
@@ -466,7 +488,7 @@ eq_3_9 (eq_ctx *c)
   memset (&st, 0, sizeof st);
   if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
       || discrete_init (c, &sys, L0, Delta)
-      || post_collision_eh (c, L0, Delta, &st.dir, &st.E, &st.H)
+      || post_collision_state (c, L0, Delta, &st.dir, &st.E, &st.H, &st.V)
       || eq_lib (c, fn, chaplygin_discrete_jacobian (&sys, &st, J)))
     return -1;
   for (i = 0; i < 16; i++)
@@ -717,7 +739,7 @@ step_case (eq_ctx *c, int reversal)
   memset (&in, 0, sizeof in);
   if (eq_real_in (c, "L0", &L0) || eq_real_in (c, "Delta", &Delta)
       || discrete_init (c, &sys, L0, Delta)
-      || post_collision_eh (c, L0, Delta, &in.dir, &in.E, &in.H)
+      || post_collision_state (c, L0, Delta, &in.dir, &in.E, &in.H, &in.V)
       || eq_real_opt (c, "theta", 0.0, &in.theta)
       || eq_real_opt (c, "tau", 0.0, &in.tau) || eq_method_in (c)
       || eq_lib (c, fn_c, chaplygin_discrete_coefficients
@@ -975,10 +997,14 @@ eq_B_15 (eq_ctx *c)
         return -1;
       q[CHAPLYGIN_D] = dir > 0 ? 0.0 : 1.0;
       q[CHAPLYGIN_THETA] = theta;
-      if (eq_lib (c, fn_ph, chaplygin_massless_state_from_phase (L0, q, tau,
-                                                              NULL, &in)))
+      char e_text[CHAPLYGIN_NUMBER_TEXT_MAX], h_text[CHAPLYGIN_NUMBER_TEXT_MAX];
+      if (eq_scale_speeds (c, L0 + q[CHAPLYGIN_D], &q[CHAPLYGIN_V],
+                           &q[CHAPLYGIN_OMEGA])
+          || eq_lib (c, fn_ph, chaplygin_massless_state_from_phase
+                     (L0, q, ldexp (tau, -c->m), NULL, &in)))
         return -1;
-      eq_show (c, "E = %.17g, H = %.17g (by %s)", in.E, in.H, fn_ph);
+      eq_show (c, "E = %s, H = %s (by %s)", eq_text (c, 2, in.E, e_text),
+               eq_text (c, 1, in.H, h_text), fn_ph);
     }
   if (eq_lib (c, fn, chaplygin_massless_step (L0, &in, CHAPLYGIN_WANT_ALL, &out,
                                            &ev))

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "chaplygin.h"
@@ -141,6 +142,94 @@ eq_lib (eq_ctx *c, const char *function, int status)
 }
 
 /* ---------------------------------------------------------------- */
+/* Velocity scaling                                                  */
+/* ---------------------------------------------------------------- */
+
+int
+eq_degree (const eq_ctx *c, const char *name, int *d)
+{
+  const size_t n = strlen (name);
+  for (const char *p = c->degrees; p && *p; p += strcspn (p, " "),
+       p += strspn (p, " "))
+    if (strncmp (p, name, n) == 0 && p[n] == '=')
+      {
+        *d = atoi (p + n + 1);
+        return 1;
+      }
+  return 0;
+}
+
+/* X 2^K into *Y where that is exact: 1, else 0. */
+static int
+scaled_exactly (double x, int k, double *y)
+{
+  const double t = ldexp (x, k);
+  if (!isfinite (t) || ldexp (t, -k) != x)
+    return 0;
+  *y = t;
+  return 1;
+}
+
+int
+eq_scale_speeds (eq_ctx *c, double l, double *V, double *Omega)
+{
+  int m;
+  double Vs, Omegas;
+  if (c->failed)
+    return -1;
+  if (!c->degrees)
+    return 0;
+  if (eq_lib (c, "chaplygin_velocity_scaling",
+              chaplygin_velocity_scaling (l, *V, *Omega, &m, &Vs, &Omegas)))
+    return -1;
+  if (m == 0)
+    return 0;
+  c->m = m;
+  *V = Vs;
+  *Omega = Omegas;
+  eq_show (c, "velocity scaling: computed with V, Omega times 2^%d (E or "
+           "H would leave the doubles), values in the units given", m);
+  return 0;
+}
+
+const char *
+eq_text (const eq_ctx *c, int d, double x, char *buf)
+{
+  double y;
+  if (c->m == 0 || d == 0)
+    snprintf (buf, CHAPLYGIN_NUMBER_TEXT_MAX, "%.17g", x);
+  else if (scaled_exactly (x, -d * c->m, &y))
+    snprintf (buf, CHAPLYGIN_NUMBER_TEXT_MAX, "%.17g", y);
+  else if (chaplygin_number_format (buf, CHAPLYGIN_NUMBER_TEXT_MAX, x,
+                                    -d * c->m) != 0)
+    snprintf (buf, CHAPLYGIN_NUMBER_TEXT_MAX, "%.17g 2^%d", x, -d * c->m);
+  return buf;
+}
+
+/* X of degree D (nonzero) in the units of the scaling: 0, or -1 (a
+   failure) where the scaled value is not exact. */
+static int
+scale_input (eq_ctx *c, const char *name, int d, double *x)
+{
+  if (!scaled_exactly (*x, d * c->m, x))
+    return eq_lib (c, name, CHAPLYGIN_ERANGE);
+  return 0;
+}
+
+/* The value X (of output NAME) computed in the units of the scaling as
+   *X 2^*E in the units given: folded into *X where that is exact. */
+static void
+unscale_output (const eq_ctx *c, const char *name, double *x, int *e)
+{
+  int d;
+  *e = 0;
+  if (c->m == 0 || !eq_degree (c, name, &d) || d == 0)
+    return;
+  if (!scaled_exactly (*x, -d * c->m, x))
+    *e = -d * c->m;
+}
+
+/* ---------------------------------------------------------------- */
 /* Inputs                                                            */
 /* ---------------------------------------------------------------- */
 
@@ -188,6 +277,9 @@ eq_real_in (eq_ctx *c, const char *name, double *x)
     return eq_fail_usage (c, "%s = '%s' %s", name, a->text,
                           chaplygin_number_problem (s));
   eq_show (c, "%s = %.17g", name, *x);
+  int d;
+  if (c->m != 0 && eq_degree (c, name, &d) && d != 0)
+    return scale_input (c, name, d, x);
   return 0;
 }
 
@@ -390,7 +482,10 @@ eq_put_real (eq_ctx *c, const char *name, double x, const char *function,
   chaplygin_eq_output *o = put (c, name, CHAPLYGIN_EQ_REAL, function,
                                 method);
   if (o)
-    o->x = x;
+    {
+      o->x = x;
+      unscale_output (c, name, &o->x, &o->e);
+    }
 }
 
 void
@@ -449,13 +544,17 @@ eq_printed_real (eq_ctx *c, const char *name, int status, double x,
     : CHAPLYGIN_EQ_PRINTED_UNDEFINED;
   o->px = x;
   o->pn = 0;
+  if (o->kind == CHAPLYGIN_EQ_REAL)
+    unscale_output (c, name, &o->px, &o->pe);
   o->pstatus = status;
   o->perratum = erratum;
   o->pfunction = function;
   if (o->printed == CHAPLYGIN_EQ_PRINTED_VALUE && o->kind != CHAPLYGIN_EQ_WORD)
     {
       o->has_rel = 1;
-      o->rel = relative_difference (x, o->kind == CHAPLYGIN_EQ_INT
+      /* both x 2^e: the printed one brought to the value's exponent */
+      o->rel = relative_difference (ldexp (o->px, o->pe - o->e),
+                                    o->kind == CHAPLYGIN_EQ_INT
                                     ? (double) o->n : o->x);
     }
 }
@@ -536,6 +635,7 @@ chaplygin_eq_eval (const char *label, size_t n, const char *const *names,
       return res->status;
     }
   res->entry = &lab->info;
+  c.degrees = lab->degrees;
   if (c_locale_enter (&l) != 0)
     {
       res->status = CHAPLYGIN_SCENE_ENOMEM;

@@ -32,6 +32,11 @@ typedef struct eq_ctx
                                    (res->method) */
   const char *note;             /* a remark on this evaluation, or NULL */
   int failed;
+  const char *degrees;          /* the label's eq.degrees, or NULL: not
+                                   evaluated in scaled units */
+  int m;                        /* the velocity scaling of this evaluation
+                                   (0: none): a quantity of degree d is
+                                   computed as x 2^(d m) */
 } eq_ctx;
 
 /* A label: what the user sees, and its evaluator. */
@@ -39,6 +44,11 @@ typedef struct
 {
   chaplygin_eq_entry info;
   int (*eval) (eq_ctx *);
+  const char *degrees;          /* eq.degrees: "NAME=d ..." of the inputs
+                                   and outputs of nonzero degree in the
+                                   velocity (chaplygin_scale_kind), or
+                                   NULL where the label is not evaluated
+                                   in scaled units */
 } eq_label;
 
 /* The table (eq-table.c, generated from lib/labels.txt), in the paper's
@@ -75,6 +85,20 @@ int eq_method_in (eq_ctx *c);
    names of both are given. */
 int eq_choose (eq_ctx *c, const char *a1, const char *a2, const char *b1,
                const char *b2);
+
+/* The velocity scaling of a label with eq.degrees: where the phase state
+   (V, OMEGA) at l needs one (chaplygin_velocity_scaling: E or H would
+   leave the doubles), V and Omega are scaled by 2^m, c->m set and said;
+   inputs of nonzero degree read after it are scaled as they are read,
+   and outputs scaled back as they are put (x 2^e beyond the doubles).
+   Nothing for a label without eq.degrees.  0, or -1 (a failure). */
+int eq_scale_speeds (eq_ctx *c, double l, double *V, double *Omega);
+/* The text of X, of degree D, computed in the units of the scaling, in
+   the units given (its exact decimal where it lies beyond the doubles),
+   in BUF (CHAPLYGIN_NUMBER_TEXT_MAX bytes). */
+const char *eq_text (const eq_ctx *c, int d, double x, char *buf);
+/* Whether NAME has a declared degree (*D): 1, else 0. */
+int eq_degree (const eq_ctx *c, const char *name, int *d);
 
 /* Outputs: a value of the library's FUNCTION (METHOD: how it computed
    it), and the printed form's value of output NAME. */
