@@ -76,15 +76,21 @@ def opts(a):
     return o
 
 
-def post_eh(a, L0, Delta):
-    """(dir, E, H) of a post-collision state: E, H, dir given, or V, Omega
-    converted at the peg's end."""
+def post_state(a, L0, Delta):
+    """(dir, E, H, V+) of a post-collision state: E, H, dir given (V+ = 0,
+    unknown), or V, Omega converted at the peg's end (V+ = V kept in the
+    state, as chaplygin eq does for the labels that step or linearise)."""
     if 'E' in a:
-        return int(a['dir']), num(a['E']), num(a['H'])
+        return int(a['dir']), num(a['E']), num(a['H']), 0.0
     V, Om = num(a['V']), num(a['Omega'])
     dr = dir_of(a, V=V)
     D = 0.0 if dr > 0 else Delta
-    return dr, d.energy(L0, D, V, Om), d.momentum(L0, D, Om)
+    return dr, d.energy(L0, D, V, Om), d.momentum(L0, D, Om), V
+
+
+def post_eh(a, L0, Delta):
+    """(dir, E, H) of a post-collision state, as post_state."""
+    return post_state(a, L0, Delta)[:3]
 
 
 # Each label: (value outputs, printed outputs), dicts by output name.
@@ -204,8 +210,8 @@ def eq_3_8(a):
 
 def eq_3_9(a):
     L0, Delta = num(a['L0']), num(a['Delta'])
-    dr, E, H = post_eh(a, L0, Delta)
-    J = d.jacobian(d.init(L0, Delta), c.DiscreteState(dir=dr, E=E, H=H))
+    dr, E, H, V = post_state(a, L0, Delta)
+    J = d.jacobian(d.init(L0, Delta), c.DiscreteState(dir=dr, E=E, H=H, V=V))
     return {'J%d%d' % (i + 1, j + 1): J[i, j]
             for i in range(4) for j in range(4)}, {}
 
@@ -325,8 +331,9 @@ def eq_B_2(a):
 def step_case(a, reversal):
     L0, Delta = num(a['L0']), num(a['Delta'])
     sys_ = d.init(L0, Delta)
-    dr, E, H = post_eh(a, L0, Delta)
-    st = c.DiscreteState(dir=dr, E=E, H=H, theta=num(a.get('theta', '0')),
+    dr, E, H, V = post_state(a, L0, Delta)
+    st = c.DiscreteState(dir=dr, E=E, H=H, V=V,
+                         theta=num(a.get('theta', '0')),
                          tau=num(a.get('tau', '0')))
     C1, C2 = d.coefficients(L0, Delta, 0.0 if dr > 0 else Delta, reversal)
     out, ev = d.step(sys_, st, request='theta,tau', **opts(a))
