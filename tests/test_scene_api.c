@@ -284,11 +284,25 @@ START_TEST (hostile_triples)
 }
 END_TEST
 
+/* Sets the process's locale to NAME (e.g. de_DE.UTF-8), made with
+   localedef from Debian's locale sources (package locales) into the
+   temporary directory DIR (LOCPATH); nonzero if it is set.  Without
+   them the caller's test says so and checks the C locale only. */
+static int
+set_made_locale (const char *dir, const char *name)
+{
+  char cmd[256];
+  snprintf (cmd, sizeof cmd, "localedef -i %.*s -f %s %s/%s >/dev/null 2>&1",
+            (int) strcspn (name, "."), name, strchr (name, '.') + 1, dir,
+            name);
+  if (system (cmd) != 0)
+    return 0;
+  setenv ("LOCPATH", dir, 1);
+  return setlocale (LC_ALL, name) != NULL;
+}
+
 /* A comma-decimal locale in the calling process: numbers are read and
-   written in the C locale all the same.  The locale is made here with
-   localedef into a temporary directory (LOCPATH); without localedef and
-   Debian's locale sources (package locales) the test says so and checks
-   the C locale only. */
+   written in the C locale all the same. */
 START_TEST (foreign_locale)
 {
   char dir[] = "/tmp/chp-locale.XXXXXX", cmd[256];
@@ -296,15 +310,8 @@ START_TEST (foreign_locale)
   chaplygin_scene_report rep;
   chaplygin_cell cell = { 0.5, 0, 0, 0 };
   char text[64];
-  int have = 0;
   ck_assert (mkdtemp (dir) != NULL);
-  snprintf (cmd, sizeof cmd, "localedef -i de_DE -f UTF-8 %s/de_DE.UTF-8 "
-            ">/dev/null 2>&1", dir);
-  if (system (cmd) == 0)
-    {
-      setenv ("LOCPATH", dir, 1);
-      have = setlocale (LC_ALL, "de_DE.UTF-8") != NULL;
-    }
+  int have = set_made_locale (dir, "de_DE.UTF-8");
   if (!have)
     fprintf (stderr, "# foreign_locale: no de_DE.UTF-8 here (localedef "
              "and the package locales): the C locale only\n");
@@ -345,6 +352,43 @@ START_TEST (foreign_locale)
   ck_assert_int_eq (run_into (sc, &b, 0, &rep), 0);
   ck_assert (a.rows == b.rows && memcmp (a.cell, b.cell, sizeof a.cell) == 0);
   chaplygin_scene_free (sc);
+  snprintf (cmd, sizeof cmd, "rm -rf %s", dir);
+  ck_assert_int_eq (system (cmd), 0);
+}
+END_TEST
+
+/* A Turkish locale, where the C library's case-insensitive comparisons
+   do not pair 'I' with 'i': the engine's hints for names in the wrong
+   case pair them all the same (names are compared in ASCII). */
+START_TEST (turkish_locale)
+{
+  char dir[] = "/tmp/chp-locale.XXXXXX", cmd[256];
+  static const char *const locales[] = { "tr_TR.UTF-8", "tr_TR.ISO-8859-9" };
+  size_t i;
+  ck_assert (mkdtemp (dir) != NULL);
+  for (i = 0; i < sizeof locales / sizeof *locales; i++)
+    {
+      chaplygin_scene_report rep;
+      chaplygin_scene *sc = chaplygin_scene_new ();
+      const char *up_section = FIG6 "[INITIAL]\ntheta = 0\n";
+      const char *up_key = FIG6 "[run]\nCOLLISIONS = 2\n";
+      ck_assert (sc != NULL);
+      if (!set_made_locale (dir, locales[i]))
+        fprintf (stderr, "# turkish_locale: no %s here (localedef and the "
+                 "package locales): the C locale only\n", locales[i]);
+      ck_assert_int_eq (chaplygin_scene_read_text
+                        (sc, up_section, strlen (up_section), "s", &rep),
+                        CHAPLYGIN_SCENE_ESCENE);
+      ck_assert_msg (strstr (rep.message, "did you mean [initial]?"), "%s: %s",
+                     locales[i], rep.message);
+      ck_assert_int_eq (chaplygin_scene_read_text
+                        (sc, up_key, strlen (up_key), "s", &rep),
+                        CHAPLYGIN_SCENE_ESCENE);
+      ck_assert_msg (strstr (rep.message, "did you mean 'collisions'?"),
+                     "%s: %s", locales[i], rep.message);
+      chaplygin_scene_free (sc);
+      setlocale (LC_ALL, "C");
+    }
   snprintf (cmd, sizeof cmd, "rm -rf %s", dir);
   ck_assert_int_eq (system (cmd), 0);
 }
@@ -926,6 +970,7 @@ main (void)
   tu_add (s, "hostile_text", hostile_text);
   tu_add (s, "hostile_triples", hostile_triples);
   tu_add (s, "foreign_locale", foreign_locale);
+  tu_add (s, "turkish_locale", turkish_locale);
   tu_add (s, "callbacks_stop", callbacks_stop);
   tu_add (s, "run_failures", run_failures);
   tu_add (s, "set_key", set_key);
