@@ -85,8 +85,9 @@ static const char usage_text[] =
   "  --max-rows N  the row limit instead of [run] max_rows [1e7]\n"
   "  --no-provenance  no '#' lines (version, command, effective scene) after\n"
   "             the header line, and no '# end:' line\n"
-  "  --print-scene  print the effective scene (every key in use, defaults\n"
-  "             included; it reads back as the same scene) and exit\n"
+  "  --print-scene  write the effective scene (every key in use, defaults\n"
+  "             included; it reads back as the same scene) to standard\n"
+  "             output, or to -o FILE as any output, and exit\n"
   "\n"
   "Numbers (scene keys, options, eq inputs): one rule for all, 'man chaplygin',\n"
   "section NUMBERS (1/3 and 1e3 are numbers).\n"
@@ -372,14 +373,14 @@ write_run (const chaplygin_scene *sc, const char *input,
 {
   if (chaplygin_scene_check (sc, run, rep) != CHAPLYGIN_SCENE_OK)
     {
-      fprintf (stderr, "chaplygin: %s\n", rep->message);
+      cli_error ("%s", rep->message);
       return csv_exit_status (rep->status);
     }
   output out;
   int rc = output_open (&out, output_name, input);
   if (rc != EXIT_OK)
     return rc;
-  csv_options opt = { command, NULL, "chaplygin run" };
+  csv_options opt = { command, out.name, "chaplygin run", 0 };
   rc = csv_run (sc, run, out.stream, &opt, rep);
   if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
     rc = EXIT_FAILURE_LIB;
@@ -403,11 +404,11 @@ run_skate (int argc, char **argv)
   if (chaplygin_scene_read_pairs (sc, args.n, args.section, args.key,
                                   args.value, "skate", &rep) != 0)
     {
-      fprintf (stderr, "chaplygin: %s\n", rep.message);
+      cli_error ("%s", rep.message);
       rc = csv_exit_status (rep.status);
     }
   else if (args.print_scene)
-    rc = cli_print_scene (sc);
+    rc = cli_print_scene (sc, args.output, NULL);
   else
     {
       chaplygin_run_options run = { 0, 0, 1, 0, NULL, NULL, NULL, NULL,
@@ -473,7 +474,7 @@ parse_run (int argc, char **argv, run_args *args)
             }
           else
             {
-              fprintf (stderr, "chaplygin: run: unknown option '%s'\n", arg);
+              cli_error ("run: unknown option '%s'", arg);
               usage_hint ();
               return EXIT_USAGE;
             }
@@ -499,7 +500,7 @@ run_scene (int argc, char **argv)
     return EXIT_FAILURE_LIB;
   rc = cli_load_scene (args.scene_path, args.max_rows, sc);
   if (rc == EXIT_OK && args.print_scene)
-    rc = cli_print_scene (sc);
+    rc = cli_print_scene (sc, args.output, args.scene_path);
   else if (rc == EXIT_OK)
     {
       chaplygin_run_options run = { args.compare, 0, 1, 0, NULL, NULL, NULL,
@@ -528,6 +529,7 @@ main (int argc, char **argv)
     }
 
   const char *cmd = argv[1];
+  output_init ();
   cli_set_command (argc, argv);
   if (strcmp (cmd, "--help") == 0 || strcmp (cmd, "-h") == 0)
     return print_help ();
@@ -548,9 +550,9 @@ main (int argc, char **argv)
     return plot_main (argc - 2, argv + 2);
 
   if (cmd[0] == '-')
-    fprintf (stderr, "chaplygin: unknown option '%s'\n", cmd);
+    cli_error ("unknown option '%s'", cmd);
   else
-    fprintf (stderr, "chaplygin: unknown subcommand '%s'\n", cmd);
+    cli_error ("unknown subcommand '%s'", cmd);
   usage_hint ();
   return EXIT_USAGE;
 }

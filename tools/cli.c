@@ -2,11 +2,13 @@
 #include <config.h>
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "output.h"
 
 #define COMMAND_MAX 2048
 
@@ -57,8 +59,7 @@ cli_option (const char *cmd, const char *name, const char *short_name,
     {
       if (*i >= argc)
         {
-          fprintf (stderr, "chaplygin: %s: option '%s' requires a value\n",
-                   cmd, arg);
+          cli_error ("%s: option '%s' requires a value", cmd, arg);
           usage_hint (cmd);
           return -1;
         }
@@ -68,8 +69,7 @@ cli_option (const char *cmd, const char *name, const char *short_name,
     return 0;
   if (*v == '\0')
     {
-      fprintf (stderr, "chaplygin: %s: option '%s': empty value\n", cmd,
-               name);
+      cli_error ("%s: option '%s': empty value", cmd, name);
       return -1;
     }
   *value = v;
@@ -81,8 +81,8 @@ cli_scene_operand (const char *cmd, const char *arg, const char **path)
 {
   if (*path)
     {
-      fprintf (stderr, "chaplygin: %s: unexpected argument '%s' (one scene "
-               "file only)\n", cmd, arg);
+      cli_error ("%s: unexpected argument '%s' (one scene file only)", cmd,
+                 arg);
       usage_hint (cmd);
       return 2;
     }
@@ -95,7 +95,7 @@ cli_scene_given (const char *cmd, const char *path)
 {
   if (path)
     return 0;
-  fprintf (stderr, "chaplygin: %s: missing scene file\n", cmd);
+  cli_error ("%s: missing scene file", cmd);
   usage_hint (cmd);
   return 2;
 }
@@ -109,7 +109,7 @@ cli_load_scene (const char *path, const char *max_rows, chaplygin_scene *sc)
     : chaplygin_scene_read_file (sc, path, &rep);
   if (r != CHAPLYGIN_SCENE_OK)
     {
-      fprintf (stderr, "chaplygin: %s\n", rep.message);
+      cli_error ("%s", rep.message);
       return 2;
     }
   return max_rows ? cli_max_rows (max_rows, sc) : 0;
@@ -121,7 +121,7 @@ cli_max_rows (const char *text, chaplygin_scene *sc)
   chaplygin_scene_report rep;
   if (chaplygin_scene_set (sc, "max_rows", text, &rep) != 0)
     {
-      fprintf (stderr, "chaplygin: --max-rows: %s\n", rep.message);
+      cli_error ("--max-rows: %s", rep.message);
       return 2;
     }
   return 0;
@@ -132,25 +132,49 @@ cli_new_scene (void)
 {
   chaplygin_scene *sc = chaplygin_scene_new ();
   if (!sc)
-    fputs ("chaplygin: out of memory\n", stderr);
+    cli_error ("out of memory");
   return sc;
 }
 
 int
 cli_finish_stdout (void)
 {
+  errno = 0;
   if (fflush (stdout) != 0 || ferror (stdout))
     {
-      fprintf (stderr, "chaplygin: error writing to standard output: %s\n",
-               strerror (errno));
+      cli_error ("error writing to standard output: %s",
+                 strerror (errno ? errno : EIO));
       return 1;
     }
   return 0;
 }
 
 int
-cli_print_scene (const chaplygin_scene *sc)
+cli_print_scene (const chaplygin_scene *sc, const char *output_name,
+                 const char *input)
 {
-  chaplygin_scene_write (sc, stdout, "");
-  return cli_finish_stdout ();
+  output out;
+  int rc = output_open (&out, output_name, input);
+  if (rc != 0)
+    return rc;
+  if (chaplygin_scene_write (sc, out.stream, "") != CHAPLYGIN_SCENE_OK
+      && !ferror (out.stream))
+    {
+      cli_error ("%s: the scene cannot be written", out.name);
+      output_close (&out, 0);
+      return 1;
+    }
+  return output_close (&out, 1);  /* a write error: reported there */
+}
+
+void
+cli_error (const char *format, ...)
+{
+  char text[4096], shown[4 * sizeof text + 8];
+  va_list ap;
+  va_start (ap, format);
+  vsnprintf (text, sizeof text, format, ap);
+  va_end (ap);
+  fprintf (stderr, "chaplygin: %s\n",
+           chaplygin_text_shown (shown, sizeof shown, text, sizeof text));
 }

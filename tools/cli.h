@@ -38,14 +38,24 @@ int cli_load_scene (const char *path, const char *max_rows,
    0, or 2 after a message. */
 int cli_max_rows (const char *text, chaplygin_scene *sc);
 
-/* --print-scene: SC as a scene file on standard output.  Returns the exit
-   status. */
-int cli_print_scene (const chaplygin_scene *sc);
+/* --print-scene: SC as a scene file on the output OUTPUT (NULL or "-":
+   standard output; else a file written as every output is: output.h),
+   which may not be the scene INPUT.  Returns the exit status. */
+int cli_print_scene (const chaplygin_scene *sc, const char *output,
+                     const char *input);
 
 /* A new scene object, or NULL after a message. */
 chaplygin_scene *cli_new_scene (void);
 
 /* Flush standard output; 0, or 1 after a message on a write error. */
 int cli_finish_stdout (void);
+
+/* The message FORMAT, ... on standard error as "chaplygin: MESSAGE" and a
+   line end, every control byte of it shown as \xHH (chaplygin_text_shown):
+   a file name, an argument or a scene's text in a message cannot move the
+   cursor, change colours or start a line that looks like another
+   message.  The program's messages go through here. */
+void cli_error (const char *format, ...)
+  __attribute__ ((format (printf, 1, 2)));
 
 #endif

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli.h"
 #include "csv.h"
 #include "progress.h"
 #include "provenance.h"
@@ -98,11 +99,10 @@ static int
 say_write_error (const csv_sink *s)
 {
   if (s->opt->out_name)
-    fprintf (stderr, "chaplygin: error writing to %s: %s\n",
-             s->opt->out_name, strerror (s->write_errno));
+    cli_error ("error writing to %s: %s", s->opt->out_name,
+               strerror (s->write_errno));
   else
-    fprintf (stderr, "chaplygin: error writing output: %s\n",
-             strerror (s->write_errno));
+    cli_error ("error writing output: %s", strerror (s->write_errno));
   return 1;
 }
 
@@ -135,11 +135,11 @@ csv_run (const chaplygin_scene *sc, const chaplygin_run_options *run,
     return say_write_error (&s);
   if (status != CHAPLYGIN_SCENE_OK && status != CHAPLYGIN_SCENE_ERUN)
     {
-      fprintf (stderr, "chaplygin: %s\n", rep->message);
+      cli_error ("%s", rep->message);
       return csv_exit_status (status);
     }
-  if (rep->early)
-    fprintf (stderr, "chaplygin: %s\n", rep->note);
+  if (rep->early && !opt->quiet)
+    cli_error ("%s", rep->note);
   if (opt->command && rep->end[0])
     fprintf (out, "# end: %s\n", rep->end);
   errno = 0;
@@ -150,7 +150,7 @@ csv_run (const chaplygin_scene *sc, const chaplygin_run_options *run,
     }
   if (status == CHAPLYGIN_SCENE_ERUN)
     {
-      fprintf (stderr, "chaplygin: %s\n", rep->message);
+      cli_error ("%s", rep->message);
       return 1;
     }
   return 0;

@@ -17,6 +17,8 @@ typedef struct
   const char *out_name;         /* the output in write-error messages (NULL:
                                    "error writing output") */
   const char *bar_label;        /* the progress bar's label; NULL: none */
+  int quiet;                    /* 1: no line on stderr for an early end
+                                   (plot: said once, by its survey) */
 } csv_options;
 
 /* Run SC as RUN says (its callbacks are csv's) and write it to OUT as OPT

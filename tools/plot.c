@@ -171,7 +171,7 @@ data_block (FILE *gp, const char *name, const chaplygin_scene *sc,
 {
   chaplygin_run_options run = { compare, 0, 1, 0, NULL, NULL, NULL, NULL,
                                 NULL };
-  csv_options opt = { NULL, NULL, NULL };
+  csv_options opt = { NULL, NULL, NULL, 0 };
   fprintf (gp, "$%s << EOD\n", name);
   int rc = csv_run (sc, &run, gp, &opt, NULL);
   fputs ("EOD\n", gp);

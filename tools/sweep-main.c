@@ -54,8 +54,8 @@ static const char usage_text[] =
   "                  shard with more points is refused before anything is\n"
   "                  written\n"
   "  --no-provenance no '#' lines (version, command, scene) after the header\n"
-  "  --print-scene   print the effective scene (every key in use, defaults\n"
-  "                  included) and exit\n"
+  "  --print-scene   write the effective scene (every key in use, defaults\n"
+  "                  included) to standard output or -o FILE, and exit\n"
   "  -h, --help      print this text and exit\n"
   "The output does not depend on the number of threads.  A progress bar is\n"
   "drawn on standard error when it is a terminal (and the output is not),\n"
@@ -100,14 +100,13 @@ parse_shard (const char *text, int *shard, int *nshards)
     }
   if (i < 0)
     {
-      fprintf (stderr, "chaplygin: sweep: --shard '%s': not of the form "
-               "i/N with integers 0 <= i < N <= %ld\n", text, SHARDS_MAX);
+      cli_error ("sweep: --shard '%s': not of the form i/N with integers "
+                 "0 <= i < N <= %ld", text, SHARDS_MAX);
       return EXIT_USAGE;
     }
   if (i >= n)
     {
-      fprintf (stderr, "chaplygin: sweep: --shard '%s': need 0 <= i < N\n",
-               text);
+      cli_error ("sweep: --shard '%s': need 0 <= i < N", text);
       return EXIT_USAGE;
     }
   *shard = (int) i;
@@ -124,8 +123,8 @@ parse_threads (const char *text, int *threads)
   int r = chaplygin_number_integer (text, 1, THREADS_MAX, &v);
   if (r != CHAPLYGIN_NUMBER_OK)
     {
-      fprintf (stderr, "chaplygin: sweep: --threads '%s' %s (an integer "
-               "in 1..%ld)\n", text, chaplygin_number_problem (r), THREADS_MAX);
+      cli_error ("sweep: --threads '%s' %s (an integer in 1..%ld)", text,
+                 chaplygin_number_problem (r), THREADS_MAX);
       return EXIT_USAGE;
     }
   *threads = (int) v;
@@ -200,8 +199,7 @@ parse_sweep_args (int argc, char **argv, sweep_args *args)
             }
           else
             {
-              fprintf (stderr, "chaplygin: sweep: unknown option '%s'\n",
-                       arg);
+              cli_error ("sweep: unknown option '%s'", arg);
               usage_hint ();
               return EXIT_USAGE;
             }
@@ -223,7 +221,7 @@ write_sweep (const chaplygin_scene *sc, const sweep_args *args)
   chaplygin_scene_report rep;
   if (chaplygin_scene_check (sc, &run, &rep) != CHAPLYGIN_SCENE_OK)
     {
-      fprintf (stderr, "chaplygin: %s\n", rep.message);
+      cli_error ("%s", rep.message);
       return csv_exit_status (rep.status);
     }
   output out;
@@ -236,7 +234,7 @@ write_sweep (const chaplygin_scene *sc, const sweep_args *args)
   else
     snprintf (label, sizeof label, "sweep");
   csv_options opt = { args->no_provenance ? NULL : cli_command (), out.name,
-                      isatty (fileno (out.stream)) ? NULL : label };
+                      isatty (fileno (out.stream)) ? NULL : label, 0 };
   rc = csv_run (sc, &run, out.stream, &opt, NULL);
   if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
     rc = EXIT_OUTPUT;
@@ -258,12 +256,12 @@ sweep_main (int argc, char **argv)
   if (rc == EXIT_OK
       && chaplygin_scene_text (sc, "kind", kind, sizeof kind) != 0)
     {
-      fprintf (stderr, "chaplygin: %s: no [sweep] section\n",
-               chaplygin_scene_name (sc));
+      cli_error ("%s: no [sweep] section", chaplygin_scene_name (sc));
       rc = EXIT_USAGE;
     }
   if (rc == EXIT_OK)
-    rc = args.print_scene ? cli_print_scene (sc) : write_sweep (sc, &args);
+    rc = args.print_scene ? cli_print_scene (sc, args.output, args.scene_path)
+      : write_sweep (sc, &args);
   chaplygin_scene_free (sc);
   return rc;
 }
