@@ -5,7 +5,8 @@ tools_chaplygin_SOURCES = tools/chaplygin.c tools/csv.c tools/csv.h \
 	tools/sweep-main.c tools/sweep.h tools/progress.c tools/progress.h \
 	tools/eq.c tools/eq.h tools/cli.c tools/cli.h tools/output.c \
 	tools/output.h tools/provenance.c tools/provenance.h tools/plot.c \
-	tools/plot.h
+	tools/plot.h tools/plot-script.c tools/plot-script.h tools/gnuplot.c \
+	tools/gnuplot.h
 nodist_tools_chaplygin_SOURCES = tools/plot-style.h
 tools_chaplygin_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene \
 	-I$(top_builddir)/tools -DCHAPLYGIN_SCENES_DIR='"$(scenesdir)"'
