@@ -4,7 +4,12 @@
 # three sweeps; SVG; the axis labels per model (in the SVG's text); a
 # scene's title or file name that tries to make gnuplot run a command or
 # read a file draws as text and runs nothing; the row limit and -o rules
-# as for run; a missing gnuplot.  Skipped without gnuplot (pngcairo).
+# as for run; a missing gnuplot.  A failed write of the image never
+# replaces the previous file: a full disk (a 64 KiB tmpfs, as root; else
+# skipped) for PNG, SVG and -o - (exit 1), the file-size limit (ulimit
+# -f), and a gnuplot that exits 0 after a truncated image or none (a
+# stand-in script); gnuplot's messages shown only when it fails.
+# Skipped without gnuplot (pngcairo).
 # Run by `make check', or by hand:
 #   top_builddir=. top_srcdir=. sh tools/test-plot.sh
 # POSIX sh.
@@ -15,7 +20,7 @@ top_srcdir=${top_srcdir:-.}
 prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 
 . "$top_srcdir/tools/tap-lib.sh"
-tap_start test-plot 15
+tap_start test-plot 20
 
 if ! gnuplot -e 'set terminal pngcairo' </dev/null >/dev/null 2>&1; then
   while test "$count" -lt "$plan"; do
@@ -154,5 +159,74 @@ run plot "$tmp/fig6.ini" -o "$tmp/x.pdf"
 ok=1
 test "$rc" -eq 2 && test ! -e "$tmp/x.pdf" && ok=0
 result "$ok" "an unknown format (.pdf): exit 2"
+
+# ---- a failed write never replaces the image ----------------------------------------
+# no_temp NAME: no temporary file .NAME.XXXXXX left in $tmp/full.
+no_temp () {
+  test -z "$(ls -A "$tmp/full" | grep "^\.$1\.")"
+}
+mkdir "$tmp/full"
+if mount -t tmpfs -o size=64k tmpfs "$tmp/full" 2>/dev/null; then
+  trap 'umount "$tmp/full" 2>/dev/null; rm -rf "$tmp"' 0
+  dd if=/dev/zero of="$tmp/full/fill" bs=1024 count=40 2>/dev/null
+  ok=0
+  for f in f.png f.svg; do
+    echo previous >"$tmp/full/$f"
+    run plot "$tmp/fig6.ini" -o "$tmp/full/$f"
+    if test "$rc" -ne 1 || test "$(cat "$tmp/full/$f")" != previous || ! no_temp "$f" \
+       || ! grep -q "error writing to .*$f: No space left on device" "$tmp/err"; then
+      say "$f: exit $rc: $(cat "$tmp/err")"; ok=1
+    fi
+  done
+  rc=0
+  "$prog" plot "$tmp/fig6.ini" -o - >"$tmp/full/g.png" 2>"$tmp/err" || rc=$?
+  test "$rc" -eq 1 && grep -q 'error writing to standard output' "$tmp/err" || ok=1
+  result "$ok" "a full disk: PNG and SVG exit 1, the previous file intact, no temporary; -o - exit 1"
+  umount "$tmp/full"
+else
+  count=$((count + 1))
+  echo "ok $count # SKIP a full disk: cannot mount a tmpfs (needs root)"
+fi
+
+echo previous >"$tmp/full/l.png"
+(ulimit -f 40 && "$prog" plot "$tmp/fig6.ini" -o "$tmp/full/l.png") 2>"$tmp/err" && rc=0 || rc=$?
+ok=1
+test "$rc" -eq 1 && test "$(cat "$tmp/full/l.png")" = previous && no_temp l.png \
+  && grep -q 'File too large' "$tmp/err" && ok=0
+result "$ok" "ulimit -f below the image's size: exit 1, the previous file intact, no temporary"
+
+# Stand-ins for gnuplot that read the script and exit 0: one writes the
+# first 1000 bytes of a PNG (as gnuplot does when its write fails half
+# way), one nothing; one fails with a message.
+cat >"$tmp/gp-cut" <<EOF
+#!/bin/sh
+cat >/dev/null
+head -c 1000 "$tmp/fig6.png"
+EOF
+printf '#!/bin/sh\ncat >/dev/null\n' >"$tmp/gp-none"
+printf '#!/bin/sh\ncat >/dev/null\necho "line 7: something odd" >&2\nexit 1\n' >"$tmp/gp-fail"
+chmod +x "$tmp/gp-cut" "$tmp/gp-none" "$tmp/gp-fail"
+for f in c1 c2 c3; do echo previous >"$tmp/full/$f.png"; done
+rc=0
+GNUPLOT=$tmp/gp-cut "$prog" plot "$tmp/fig6.ini" -o "$tmp/full/c1.png" 2>"$tmp/err" || rc=$?
+ok=1
+test "$rc" -eq 1 && test "$(cat "$tmp/full/c1.png")" = previous && no_temp c1.png \
+  && grep -q "gnuplot's image is incomplete (1000 bytes" "$tmp/err" && ok=0
+result "$ok" "gnuplot exits 0 after a truncated PNG: exit 1, the previous file intact"
+
+rc=0
+GNUPLOT=$tmp/gp-none "$prog" plot "$tmp/fig6.ini" -o "$tmp/full/c2.png" 2>"$tmp/err" || rc=$?
+ok=1
+test "$rc" -eq 1 && test "$(cat "$tmp/full/c2.png")" = previous \
+  && grep -q 'gnuplot wrote no image' "$tmp/err" && ok=0
+result "$ok" "gnuplot exits 0 without an image: exit 1, the previous file intact"
+
+rc=0
+GNUPLOT=$tmp/gp-fail "$prog" plot "$tmp/fig6.ini" -o "$tmp/full/c3.png" 2>"$tmp/err" || rc=$?
+ok=1
+test "$rc" -eq 1 && test "$(cat "$tmp/full/c3.png")" = previous \
+  && grep -q '^chaplygin: plot: gnuplot failed (exit status 1); it said:$' "$tmp/err" \
+  && grep -qx 'chaplygin: plot: gnuplot: line 7: something odd' "$tmp/err" && ok=0
+result "$ok" "gnuplot fails: exit 1, its messages shown after the program's"
 
 test "$count" -eq "$plan" || echo "Bail out! ran $count tests, planned $plan"
