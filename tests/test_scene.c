@@ -372,7 +372,8 @@ START_TEST (syntax_variants)
 }
 END_TEST
 
-/* Lines up to inih's buffer (198 bytes without the line end). */
+/* Lines up to the reader's 8192 bytes (without the line end); values up
+   to 4095. */
 START_TEST (long_lines)
 {
   enum { MAX = 8192 };          /* the reader's longest line */
@@ -994,7 +995,7 @@ START_TEST (odd_inputs)
   /* A BOM only at the start. */
   expect_error ("[scene]\n\xef\xbb\xbfmodel = discrete\n", 2,
                 "[scene] \xef\xbb\xbfmodel", "unknown key");
-  /* inih cuts a section name to 49 bytes; the message cuts it to 40. */
+  /* A section name of 60 bytes: the message cuts it to 40. */
   snprintf (text, sizeof text, "[%060d]\nk = 1\n", 0);
   expect_error (text, 2, "[0000000000000000000000000000000000000000...] k",
                 "unknown section");

@@ -211,7 +211,7 @@ START_TEST (hostile_text)
            "is not a number");
   refused (FIG6 "[run]\nevery = 0\n", strlen (FIG6) + 16, E,
            "[run] every: value '0' is out of range (1..1000000000)");
-  /* a NUL byte, a CR inside a line, a line beyond inih's buffer */
+  /* a NUL byte, a CR inside a line, a line over 8192 bytes */
   char nul[] = FIG6 "[initial]\ntheta = 1\0 2\n";
   refused (nul, sizeof nul - 1, E, "NUL byte");
   refused (FIG6 "title = a\rb\n", strlen (FIG6) + 12, E,

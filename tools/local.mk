@@ -42,7 +42,7 @@ tools_scaled_cmp_LDADD = $(MPFR_LIBS) $(CODE_COVERAGE_LIBS) -lm
 tools_fuzz_scene_SOURCES = tools/fuzz-scene.c
 tools_fuzz_scene_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
 tools_fuzz_scene_LDADD = lib/libchaplygin-scene-core.la \
-	lib/libchaplygin-core.la $(INIH_LIBS) $(MPFR_LIBS) $(OPENMP_CFLAGS) \
+	lib/libchaplygin-core.la $(MPFR_LIBS) $(OPENMP_CFLAGS) \
 	$(CODE_COVERAGE_LIBS) -lm
 
 CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
@@ -67,12 +67,11 @@ fuzz: $(srcdir)/tools/fuzz-scene.c lib/libchaplygin-scene-core.la \
 	$(FUZZ_CC) -g -O1 -fsanitize=fuzzer,address,undefined \
 	  -fno-sanitize-recover=undefined -DCHAPLYGIN_LIBFUZZER \
 	  -I$(builddir) -I$(srcdir)/lib -I$(srcdir)/lib/scene \
-	  $(INIH_CFLAGS) -o fuzz-scene-libfuzzer $(srcdir)/tools/fuzz-scene.c \
+	  -o fuzz-scene-libfuzzer $(srcdir)/tools/fuzz-scene.c \
 	  $(addprefix $(srcdir)/lib/scene/,report.c number.c scene.c run.c \
-	    grid.c) lib/.libs/libchaplygin-core.a $(GSL_LIBS) $(INIH_LIBS) \
-	  $(MPFR_LIBS) -lm
+	    grid.c) lib/.libs/libchaplygin-core.a $(GSL_LIBS) $(MPFR_LIBS) -lm
 	mkdir -p fuzz-work && cp $(srcdir)/tools/fuzz-corpus/* fuzz-work/
-	./fuzz-scene-libfuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	./fuzz-scene-libfuzzer -max_total_time=$(FUZZ_SECONDS) -max_len=16384 \
 	  -dict=$(srcdir)/tools/fuzz-scene.dict fuzz-work
 .PHONY: fuzz
 CLEANFILES += fuzz-scene-libfuzzer
