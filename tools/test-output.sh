@@ -140,9 +140,9 @@ result "$ok" "... run to standard output: exit 1 with the write error"
 
 # ---- the output is never the scene --------------------------------------------------
 # @S@ the scene, @H@ a hard link to it, @L@ a symbolic link; a sweep's
-# scene for sweep.  The scene is rewritten in place (the links stay).
+# scene for sweep.  Each case makes them anew (a case that replaced the
+# scene must not change what the next one tests).
 cp "$tmp/s.ini" "$tmp/run.ini"
-ln "$tmp/s.ini" "$tmp/hard.ini"
 ln -s s.ini "$tmp/sym.ini"
 ok=0
 for args in "run - -o @S@" "sweep - -o @S@" "plot - -o @S@ --format svg" "run - -o @H@" \
@@ -151,7 +151,9 @@ for args in "run - -o @S@" "sweep - -o @S@" "plot - -o @S@ --format svg" "run - 
             "run @H@ --print-scene -o @S@"; do
   set -- $(echo "$args" | sed -e "s|@S@|$tmp/s.ini|g" -e "s|@D@|$tmp/./s.ini|g" \
              -e "s|@H@|$tmp/hard.ini|g" -e "s|@L@|$tmp/sym.ini|g")
+  rm -f "$tmp/s.ini" "$tmp/hard.ini"
   if test "$1" = sweep; then cat "$tmp/w.ini"; else cat "$tmp/run.ini"; fi >"$tmp/s.ini"
+  ln "$tmp/s.ini" "$tmp/hard.ini"
   cp "$tmp/s.ini" "$tmp/orig.ini"
   rc=0
   "$prog" "$@" <"$tmp/s.ini" >/dev/null 2>"$tmp/err" || rc=$?
