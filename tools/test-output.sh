@@ -210,7 +210,8 @@ result "$ok" "-o a loop of symbolic links: exit 1, the link left"
 esc=$(printf '\033')
 ok=0
 for args in "run NAME" "run $tmp/orig.ini -o DIR/x.csv" "run --NAME" "NAME" \
-            "plot $tmp/orig.ini -o NAME.pdf" "sweep NAME" "run $tmp/orig.ini NAME"; do
+            "plot $tmp/orig.ini -o NAME.pdf" "sweep NAME" "run $tmp/orig.ini NAME" \
+            "skate --NAME" "eq NAME" "eq 3.10 L0=NAME"; do
   set -- $args
   i=0
   for a in "$@"; do
