@@ -3,12 +3,12 @@
 # "chaplygin run" accepts, or refuses it (exit 2) with a message saying
 # why, before gnuplot runs: never a raw gnuplot error.  Scenes at the
 # edges: each model and view, collisions = 0 and 1, stop conditions that
-# end a run at once, tiny and huge states, a straight line (H = 0), sweeps
-# of one point, of one y, of points that all fail or lie beyond what
-# gnuplot draws.  Each case says which it must be: "draw" (exit 0, a
-# whole SVG, nothing from gnuplot on stderr) or "refuse TEXT" (exit 2, no
-# file, TEXT in the message); and run accepts every scene.  Skipped
-# without gnuplot.
+# end a run at once, tiny and huge states, far slots, a straight line
+# (H = 0), sweeps of one point, of one y, of points that all fail or lie
+# beyond what gnuplot draws.  Each case says which it must be: "draw"
+# (exit 0, a whole SVG, nothing from gnuplot on stderr) or "refuse TEXT"
+# (exit 2, no file, TEXT in the message); and run accepts every scene.
+# A run of one row is drawn as points.  Skipped without gnuplot.
 # Run by `make check', or by hand:
 #   top_builddir=. top_srcdir=. sh tools/test-plot-scenes.sh
 # POSIX sh.
@@ -39,6 +39,8 @@ draw | sigma4, one x | [scene];model = discrete;[sweep];kind = sigma4;x_min = -4
 draw | stability, one point | [scene];model = discrete;[sweep];kind = stability;x_min = -4;x_max = 2;nx = 1;y_min = 0;y_max = 1;ny = 1
 draw | stability, one y on a 3 x 3 grid | [scene];model = discrete;[sweep];kind = stability;x_min = -4;x_max = 2;nx = 3;y_min = 0.5;y_max = 0.5;ny = 3
 draw | basins, one point | [scene];model = discrete;[parameters];L0 = -0.5;Delta = 1;[initial];Omega = 0.8;[run];collisions = 10;[sweep];kind = basins;x_min = 0.0005;x_max = 0.5;nx = 1
+draw | discrete, a far slot (L0 = 1e200, V = 1, Omega = 1e-100) | [scene];model = discrete;[parameters];L0 = 1e200;Delta = 1/3;[initial];V = 1;Omega = 1e-100;[run];collisions = 3
+refuse beyond the doubles | discrete, a far slot (L0 = 1e300, V = Omega = 1: E = 5e599) | [scene];model = discrete;[parameters];L0 = 1e300;Delta = 1/3;[initial];V = 1;Omega = 1;[run];collisions = 3
 refuse beyond the doubles | discrete, V = Omega = 1e300 | [scene];model = discrete;[parameters];L0 = 1;Delta = 1/3;[initial];V = 1e300;Omega = 1e300;[run];collisions = 3
 refuse beyond the doubles | discrete phase-space, V = Omega = 1e-300 | [scene];model = discrete;[parameters];L0 = 1;Delta = 1/3;[initial];V = 1e-300;Omega = 1e-300;[run];collisions = 3;[plot];view = phase-space
 refuse beyond the doubles | massless, Omega = 1e300 | [scene];model = massless;[parameters];L0 = -0.5;[initial];V = 1;Omega = 1e300;[run];collisions = 3
@@ -51,7 +53,8 @@ EOF
 )
 
 . "$top_srcdir/tools/tap-lib.sh"
-tap_start test-plot-scenes "$(echo "$cases" | wc -l)"
+n_cases=$(echo "$cases" | wc -l)
+tap_start test-plot-scenes $((n_cases + 1))
 
 if ! gnuplot -e 'set terminal svg' </dev/null >/dev/null 2>&1; then
   while test "$count" -lt "$plan"; do
@@ -89,3 +92,12 @@ echo "$cases" | while IFS='|' read -r expect name lines; do
   fi
   result "$ok" "$name: $expect"
 done
+
+# The cases ran in a subshell (the pipe): go on counting after them.
+count=$n_cases
+# A run of one row (case 1: collisions = 0) is drawn as points (pt 7,
+# gnuplot's SVG marker gpPt6), not as a line of one point, which draws
+# nothing and says nothing.
+ok=1
+test -f "$tmp/c1.svg" && grep -q "xlink:href='#gpPt6'" "$tmp/c1.svg" && ok=0
+result "$ok" "a run of one row (collisions = 0) is drawn as points, not as an invisible line"
