@@ -604,6 +604,16 @@ step_g0_from_V (const step_work *w, double *gv0)
   return CHAPLYGIN_SUCCESS;
 }
 
+/* Nonzero where g at the far end from V+ (g_far_from_start) is the more
+   accurate: its terms g0 and |l0^2 - l1^2| below E and H's h^2. */
+static int
+gv_far_better (const step_work *w)
+{
+  const chaplygin_discrete *sys = w->sys;
+  const double delta = sys->Delta * fabs (2.0 * sys->L0 + sys->Delta);
+  return w->gv0 + delta < 1.0 - w->m.one_minus_h2;
+}
+
 /* Phase 3: the motion and its exact classification.  The classification
    and the (E, H) update need only E, H and 1 - h^2 (and g0 from V+ where
    the state knows it: from (E, H) alone g(l0) loses V+ when V+^2 << (1 +
@@ -662,10 +672,15 @@ step_classify (step_work *w)
     }
   /* g at the far end matters to the classification only for a motion
      towards l = 0 with turning points that does not cross it: from the
-     state that decides */
+     state that decides, or from V+ where that is the more accurate there:
+     g1 = g0 - |l0^2 - l1^2| from V+ is off by a few ulps of g0 + |l0^2 -
+     l1^2|, from E and H by a few ulps of h^2 (l1^2 + 1 - h^2 cancels:
+     V+ = -1, Omega+ = 1 at L0 = 10^40 has g0 = 1, h^2 = 10^80, and E and
+     H's g1 of +-10^64 missed the turning point 1/(2 L0) from the start) */
   const double *g_far = NULL;
   if (!seg->crosses && seg->toward && w->m.one_minus_h2 < 0.0)
-    g_far = v_decides ? step_gv1 (w) : step_g1 (w);
+    g_far = v_decides || (w->v_known && gv_far_better (w))
+      ? step_gv1 (w) : step_g1 (w);
   const int outcome = chp_segment_classify (seg, &w->m, g_far);
   if (outcome == CHP_SEGMENT_SPIN)
     return CHAPLYGIN_ESPIN;

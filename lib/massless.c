@@ -211,27 +211,33 @@ known_w0 (double V, struct segment *sg)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* w at the far end from the known w0 where that is the more accurate:
-   w1^2 = w0^2 + (l1^2 - l0^2), l1^2 - l0^2 = dir (2 L0 + 1) (rounded
-   once), taken where w0^2 + |2 L0 + 1| is below a quarter of l1^2 + p^2,
-   the scale of E and H's rounding of w1^2 (a slow start at a huge |l|:
-   V+ = Omega+ = 1 at L0 = 1e200, where E and H hold no digit of w1 and
-   the collision's V- came out 0).  Formed on the ratios to l1, which
-   neither overflow nor underflow.  Returns the sign of w1^2 (SIGN1, that
-   of E and H, where it keeps theirs). */
+/* w at l = L0 + D (|l| = A) from the known w0 at l0 = L0 + D0 where that
+   is the more accurate: w^2 = w0^2 + (l^2 - l0^2), l^2 - l0^2 = (D - D0)
+   (2 L0 + D + D0) (rounded twice), taken where w0^2 + |l^2 - l0^2| is
+   below a quarter of l^2 + p^2, the scale of E and H's rounding of w^2 (a
+   slow start at a huge |l|: V+ = Omega+ = 1 at L0 = 1e200, where E and H
+   hold no digit of w at the far end and the collision's V- came out 0,
+   and the dense output found every D beyond a turning point).  Formed in
+   units of 2^e ~ max(w0, sqrt|l^2 - l0^2|), in which neither term
+   overflows nor underflows beyond the other's rounding (w0 = 1 beside l =
+   1e200 lost w0^2 in ratios to l).  Returns the sign of w^2, or SIGN
+   (that of E and H) where it keeps theirs (*W2 and *W then unchanged). */
 static int
-w1_from_start (double L0, int dir, int sign1, struct segment *sg)
+w_from_start (double L0, double D, double D0, double A,
+              const struct segment *sg, int sign, double *w2, double *w)
 {
-  const double a1 = fabs (sg->l1);
-  if (!(a1 > 0.0))
-    return sign1;
-  const double r0 = sg->w0 / a1, q = sg->p / a1;
-  const double d = (dir * (2.0 * L0 + 1.0) / a1) / a1;
-  if (!(r0 * r0 + fabs (d) <= 0.25 * (1.0 + q * q)))
-    return sign1;
-  const double u = r0 * r0 + d;         /* (w1/l1)^2 */
-  sg->w1 = u > 0.0 ? a1 * sqrt (u) : 0.0;
-  sg->g1 = u > 0.0 ? sg->w1 * sg->w1 : u * a1 * a1;
+  const double dl2 = (D - D0) * (2.0 * L0 + (D + D0));
+  const double m = fmax (sg->w0, sqrt (fabs (dl2)));
+  if (!(m > 0.0))
+    return sign;                        /* w0 = 0 at D0: E and H's */
+  const int e = ilogb (m);
+  const double w0s = ldexp (sg->w0, -e), ds = ldexp (dl2, -2 * e);
+  const double as = ldexp (A, -e), ps = ldexp (sg->p, -e);
+  if (!(fma (w0s, w0s, fabs (ds)) <= 0.25 * fma (as, as, ps * ps)))
+    return sign;
+  const double u = fma (w0s, w0s, ds);  /* (w/2^e)^2 */
+  *w = u > 0.0 ? ldexp (sqrt (u), e) : 0.0;
+  *w2 = u > 0.0 ? *w * *w : ldexp (u, 2 * e);
   return (u > 0.0) - (u < 0.0);
 }
 
@@ -283,7 +289,8 @@ massless_segment (double L0, const chaplygin_discrete_state *in,
   if (in->V != 0.0 && H != 0.0)
     {
       CHP_TRY (known_w0 (in->V, sg));
-      sign1 = w1_from_start (L0, in->dir, sign1, sg);
+      sign1 = w_from_start (L0, far, sg->start, fabs (sg->l1), sg, sign1,
+                            &sg->g1, &sg->w1);
     }
   else if (H != 0.0 && sign0 <= 0)
     return CHAPLYGIN_ESTATE;            /* V+ = 0, or |l0| < p */
@@ -819,7 +826,9 @@ chaplygin_massless_flow (double L0, const chaplygin_discrete_state *st,
     {
       double lh, ll, w2, w;
       chp_two_sum (L0, D, &lh, &ll);
-      const int sign = w_of_l (st->E, H, lh, ll, &w2, &w);
+      int sign = w_of_l (st->E, H, lh, ll, &w2, &w);
+      if (sg.v_known)
+        sign = w_from_start (L0, D, D0, fabs (lh), &sg, sign, &w2, &w);
       if (lh == 0.0 || (lh < 0.0) != (sg.l0 < 0.0))
         return CHAPLYGIN_ESTATE;        /* across the peg: never reached */
       /* within rounding of the turning point D_c (on either side): D_c

@@ -1379,6 +1379,90 @@ START_TEST (far_slow_start)
 }
 END_TEST
 
+/* A reversal a hair from the rear end of a slot far from the mass centre
+   (V+ = -1, Omega+ = 1, Delta = 1/3: the turning point 1/(2 L0) from the
+   start, g0 = 1 beside h^2 = L0^2): E and H alone miss it (their g at the
+   far end is off by ulps of L0^2), the state's V+ decides.  The references
+   are tanh-sinh quadratures of tau = 2 int_{l_c}^{l_0} dl/|V| in mpmath at
+   2 log10(L0) + 40 digits (V^2 = 2E - H^2/(1 + l^2), l_0 - l_c formed as
+   (1 + l_0^2) V+^2/(2E (l_0 + l_c)) without cancellation).  Before the fix
+   eq 3.5 gave dtau = 0 at L0 = 1e40 and ERANGE at 1e100. */
+START_TEST (far_reversal_near_start)
+{
+  static const struct { double L0; const char *tau; } c[] = {
+    { 1e20, "1.9999999999999999999933e-20" },
+    { 1e40, "1.9999999999999999392e-40" },
+    { 1e100, "1.9999999999999999682e-100" },
+    { 1e150, "2.0000000000000000383e-150" },
+    { 1e155, "1.9999999999999999856e-155" },
+    { 1e250, "2.0000000000000001578e-250" },
+    { 1e300, "1.999999999999999895e-300" },
+  };
+  for (size_t k = 0; k < NELEM (c); k++)
+    {
+      chaplygin_discrete sys;
+      const double Delta = 1.0 / 3.0;
+      const double q[4] = { Delta, -1.0, 0.0, 1.0 };
+      double qn[4], dtau;
+      ck_assert_ok (chaplygin_discrete_init (&sys, c[k].L0, Delta));
+      ck_assert_ok (chaplygin_discrete_poincare (&sys, q, NULL, qn, &dtau));
+      /* back at the rear end's partner, the front: D = 0, V- = -V+
+         exactly (a known V+), Omega conserved to its rounding */
+      ck_assert (qn[CHAPLYGIN_D] == 0.0 && qn[CHAPLYGIN_V] == 1.0);
+      ck_assert_eps (qn[CHAPLYGIN_OMEGA], 1.0, 2);
+      /* n0 |V+|/(E l0): five roundings and E's own */
+      ck_assert_eps (dtau, strtod (c[k].tau, NULL), 4);
+      ck_assert_eps (qn[CHAPLYGIN_THETA], dtau, 4);
+    }
+}
+END_TEST
+
+/* Every state of a grid over 601 orders of magnitude of L0 (both signs),
+   speeds from 1e-100 to 1e100 of both signs and Delta from 1e-8 to 1e8
+   steps (chaplygin_discrete_poincare) to a finite state in positive time,
+   or is refused with ERANGE where it is unholdable (V+ and sqrt(1 + l0^2)
+   Omega+ beyond the doubles' range of each other).  Before the fix of
+   far_reversal_near_start 843 of the 25,800 states gave dtau = 0, a V-
+   wrong by 30 orders of magnitude or ERANGE. */
+START_TEST (far_grid_steps)
+{
+  static const double speed[] = { 1.0, 1e-10, 1e10, 1e-100, 1e100 };
+  static const double Deltas[] = { 1.0 / 3.0, 1e-8, 1e8 };
+  unsigned failed = 0, n = 0;
+  for (int e = -300; e <= 300; e += 7)
+    for (int sL = -1; sL <= 1; sL += 2)
+      for (size_t iv = 0; iv < NELEM (speed); iv++)
+        for (int sv = -1; sv <= 1; sv += 2)
+          for (size_t io = 0; io < NELEM (speed); io++)
+            for (size_t id = 0; id < NELEM (Deltas); id++)
+              {
+                const double L0 = sL * pow (10.0, e), Delta = Deltas[id];
+                const double V = sv * speed[iv], Omega = speed[io];
+                const double q[4] = { V < 0 ? Delta : 0.0, V, 0.0, Omega };
+                chaplygin_discrete sys;
+                double qn[4], dtau;
+                ck_assert_ok (chaplygin_discrete_init (&sys, L0, Delta));
+                int r = chaplygin_discrete_poincare (&sys, q, NULL, qn, &dtau);
+                const int unholdable = fabs (V) < 1e-150 * Omega
+                  * fmax (1.0, fabs (L0));
+                n++;
+                if (r == CHAPLYGIN_ERANGE && unholdable)
+                  continue;
+                if (r != CHAPLYGIN_SUCCESS || !(dtau > 0.0)
+                    || !isfinite (dtau) || !isfinite (qn[CHAPLYGIN_V])
+                    || !isfinite (qn[CHAPLYGIN_OMEGA]))
+                  {
+                    if (failed++ < 5)
+                      fprintf (stderr, "L0 %g Delta %g V %g Omega %g: "
+                               "status %d, dtau %g\n", L0, Delta, V, Omega,
+                               r, dtau);
+                  }
+              }
+  ck_assert_uint_eq (n, 25800);
+  ck_assert_uint_eq (failed, 0);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1396,5 +1480,7 @@ main (void)
   tu_add (s, "far_basins", far_basins);
   tu_add (s, "far_statuses", far_statuses);
   tu_add (s, "far_slow_start", far_slow_start);
+  tu_add (s, "far_reversal_near_start", far_reversal_near_start);
+  tu_add (s, "far_grid_steps", far_grid_steps);
   return tu_run (s);
 }

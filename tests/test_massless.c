@@ -1757,6 +1757,51 @@ START_TEST (test_slow_start)
 }
 END_TEST
 
+/* The dense output of a far slot's slow start (V+ = Omega+ = 1 from the
+   front end, scaled): chaplygin_massless_flow along the segment, where E
+   and H hold no digit of w (it found every D beyond a turning point, and
+   runs with samples failed); V(D) against the same motion in binary128:
+   V = s w/|l|, s^2 = 1 + sq (sq = 1 + L0^2), w^2 = w0^2 + D (2 L0 + D),
+   w0^2 = L0^2/s^2; at D = 1 the step's V-, heading and time. */
+START_TEST (test_slow_start_flow)
+{
+  static const double L0s[] = { 1e100, 1e200, 1e300, 3e15 };
+  for (size_t a = 0; a < NELEM (L0s); a++)
+    {
+      const double L0 = L0s[a], q[4] = { 0.0, 1.0, 0.0, 1.0 };
+      chaplygin_discrete_state st, next;
+      chaplygin_discrete_event ev;
+      double qs[4], V, Omega, dtheta, dtau;
+      int m;
+      ck_assert_ok (chaplygin_massless_scaled_state (L0, q, 0.0, NULL, &st,
+                                                     &m, qs));
+      ck_assert_ok (chaplygin_massless_step (L0, &st, CHAPLYGIN_WANT_ALL,
+                                             &next, &ev));
+      const q128 l = L0, s2 = 2 + l * l, w02 = l * l / s2;
+      /* positions a hair from the start, where w ~ w0 (w0 = 1 beside l =
+         1e200 in the scaled units: its square underflowed in ratios to
+         l), then along the slot to the far end */
+      static const double Ds[] = { 0x1p-1000, 1e-300, 1e-30, 0.0, 0.25, 0.5,
+                                   0.75, 1.0 };
+      for (size_t i = 0; i < NELEM (Ds); i++)
+        {
+          const double D = Ds[i];
+          ck_assert_ok (chaplygin_massless_flow (L0, &st, D, 0, &V, &Omega,
+                                                 &dtheta, &dtau));
+          const q128 w2 = w02 + D * (2 * l + D);
+          const double want = (double) (sqrtq (s2 * w2) / (l + D)
+                                        * (q128) ldexp (1.0, m));
+          /* w from w0 and the ratios (a few roundings), s w/|l| */
+          ck_assert_eps (V, want, 4);
+        }
+      /* at the far end the step's own values (two routes: 4 roundings) */
+      ck_assert_eps (V, ev.Vminus, 4);
+      ck_assert_eps (dtheta, ev.dtheta, 8);
+      ck_assert_eps (dtau, ev.dtau, 8);
+    }
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1775,6 +1820,7 @@ main (void)
   tu_add (s, "massless_omega", test_omega);
   tu_add (s, "massless_scaled_state", test_scaled_state);
   tu_add (s, "massless_slow_start", test_slow_start);
+  tu_add (s, "massless_slow_start_flow", test_slow_start_flow);
   TCase *t = tcase_create ("massless_flow");
   tcase_set_timeout (t, 60);
   tcase_add_test (t, test_flow);
