@@ -22,14 +22,16 @@ PY_TESTS = python/tests/conftest.py \
 	python/tests/test_vectorised.py python/tests/test_robust.py \
 	python/tests/test_scene.py python/tests/test_orbit.py \
 	python/tests/test_docs.py python/tests/test_smooth_path.py \
-	python/tests/test_equation.py python/tests/test_locale.py
+	python/tests/test_equation.py python/tests/test_locale.py \
+	python/tests/test_interrupt.py
 PY_GENERATED = python/gen/module.c python/gen/vec.c python/gen/vec.h \
 	python/chaplygin/_generated.py
 EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \
 	$(PY_TESTS) \
 	python/tests/run-pytest.in python/tests/cvalues.c \
-	python/src/chp_python.h python/src/orbit.c \
-	python/src/scene_api.c python/bench/bench.py python/bench/cbench.c \
+	python/src/chp_python.h python/src/orbit.c python/src/basins.c \
+	python/src/scene_api.c python/src/poll.h python/src/poll.c \
+	python/bench/bench.py python/bench/cbench.c \
 	python/examples/fig2a.py python/examples/fig3.py
 
 if ENABLE_PYTHON
@@ -57,11 +59,13 @@ python_chaplygin__chaplygin_cffi_la_LIBADD = python/libchp-py.la \
 	lib/libchaplygin-scene.la lib/libchaplygin.la $(GSL_LIBS) \
 	$(CODE_COVERAGE_LIBS) -lm
 
-# Our C: the generated loops, the orbits, and the columns of a scene run
-# by the scene engine (lib/scene/, through its public header).
+# Our C: the generated loops, the orbits, basins point by point, the
+# columns of a scene run by the scene engine (lib/scene/, through its
+# public header), and the poll of every loop (Ctrl-C).
 noinst_LTLIBRARIES += python/libchp-py.la
 python_libchp_py_la_SOURCES = python/src/chp_python.h python/src/orbit.c \
-	python/src/scene_api.c
+	python/src/basins.c python/src/scene_api.c python/src/poll.h \
+	python/src/poll.c
 nodist_python_libchp_py_la_SOURCES = python/gen/vec.c python/gen/vec.h
 python_libchp_py_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/python/src \
 	-I$(srcdir)/lib/scene -Ipython/gen

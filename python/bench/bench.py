@@ -17,6 +17,12 @@ run; math.hypot is the yardstick of a minimal Python call on this machine.
 The machine's cores may be shared: ratios from the same run are the
 numbers to compare, absolute times vary.
 
+The cost of polling for signals (Ctrl-C, python/src/poll.h): each long
+call timed with polling on and off (chaplygin._core._POLLING), and where
+the binding's loop replaces one call of the library (step_eh_n in chunks,
+basins point by point) that call too, in alternating repeats of the same
+run; minimum and median ratios.
+
     PYTHONPATH=python python3 python/bench/bench.py --cbench python/bench/cbench
 """
 import argparse
@@ -75,6 +81,79 @@ def cases(n, rng):
     return out
 
 
+def poll_cases(rng):
+    """(name, call, lib) of calls that poll, one per kind of loop; lib: the
+    library's own function over the same work (no poll), or None."""
+    ffi, lib = chaplygin.ffi, chaplygin.lib
+    sys_ = d.init(1.0, 1 / 3)
+    st = d.state_from_phase(sys_, [0, 1, 0, 0.5])
+    L0 = rng.uniform(-3, 3, 10**6)
+    fig3 = d.init(-0.5, 1.0)
+    fates = np.zeros(100000, chaplygin.Fate.dtype)
+    status = np.zeros(100000, np.intc)
+    run = {'scene': {'model': 'discrete'},
+           'parameters': {'L0': 1, 'Delta': '1/3'},
+           'initial': {'V': 1, 'Omega': 0.5},
+           'run': {'collisions': 200000, 'every': 1000, 'outputs': 'E,H'}}
+
+    def lib_eh_n():
+        s = st.copy()
+        lib.chaplygin_discrete_step_eh_n(sys_._c, s._c, 10**7,
+                                         ffi.new('unsigned long *'))
+
+    def lib_basins():
+        lib.chaplygin_discrete_basins(
+            fig3._c, 0.8, 0.0005, 0.5, 100000, 10**6,
+            ffi.cast('chaplygin_fate *', fates.ctypes.data),
+            ffi.cast('int *', status.ctypes.data), ffi.NULL)
+    return [
+        ('discrete.sigma4, 10^6 elements (generated loop)',
+         lambda: d.sigma4(L0, 1 / 3, dir=1), None),
+        ('discrete.orbit, 2 10^5 collisions, request all',
+         lambda: d.orbit(sys_, st, 200000, keep='last'), None),
+        ('discrete.step_eh_n, 10^7 steps (chunks)',
+         lambda: d.step_eh_n(sys_, st, 10**7), lib_eh_n),
+        ('discrete.basins, 10^5 points (point by point)', lambda: d.basins(
+            fig3, 0.8, 0.0005, 0.5, 100000, 10**6), lib_basins),
+        ('run_scene, 2 10^5 collisions', lambda: chaplygin.run_scene(run),
+         None),
+    ]
+
+
+def poll_overhead(rounds, repeats, rng):
+    """Minimum and median ratios of each call's time with polling on
+    against off and against the library's own function, alternating."""
+    core = chaplygin._core
+    print('\npolling for signals: time with polling on, off (ms), and of '
+          'the library\'s\nown unpolled function; ratios on/off and '
+          'on/library, min and median')
+    print('%-48s %8s %8s %8s %6s %6s %6s %6s' % (
+        'call', 'off min', 'on min', 'lib min', 'min', 'med', 'min', 'med'))
+    for name, call, ref in poll_cases(rng):
+        t = {'on': [], 'off': [], 'lib': []}
+        runs = [('off', call), ('on', call)] + ([('lib', ref)] if ref
+                                               else [])
+        call()
+        for _ in range(rounds * repeats):
+            for what, fn in runs:
+                core._POLLING = what == 'on'
+                t0 = time.perf_counter_ns()
+                fn()
+                t[what].append((time.perf_counter_ns() - t0) / 1e6)
+        core._POLLING = True
+
+        def ratios(ref):
+            if not t[ref]:
+                return '%6s %6s' % ('-', '-')
+            return '%6.3f %6.3f' % (
+                min(t['on']) / min(t[ref]),
+                statistics.median(t['on']) / statistics.median(t[ref]))
+        print('%-48s %s %s %s %s %s' % (
+            name, fmt(min(t['off'])), fmt(min(t['on'])),
+            fmt(min(t['lib'])) if t['lib'] else '%8s' % '-',
+            ratios('off'), ratios('lib')))
+
+
 def run_c(cbench, kind, path, n, repeats, extra):
     r = subprocess.run([cbench, kind, path, str(n), str(repeats)] + extra,
                        capture_output=True, text=True, check=True)
@@ -102,11 +181,16 @@ def main():
     ap.add_argument('--repeats', type=int, default=7)
     ap.add_argument('--rounds', type=int, default=3)
     ap.add_argument('--only', default=None)
+    ap.add_argument('--poll-only', action='store_true',
+                    help='only the cost of polling for signals')
     args = ap.parse_args()
     rng = np.random.default_rng(20260)
     print('chaplygin %s, Python %s, NumPy %s, %d elements, %d rounds x %d '
           'repeats' % (chaplygin.__version__, sys.version.split()[0],
                        np.__version__, args.n, args.rounds, args.repeats))
+    poll_overhead(args.rounds, args.repeats, rng)
+    if args.poll_only:
+        return 0
     print('\nvectorised call vs the same loop in C (ns per element)')
     print('%-8s %-42s %8s %8s %8s %8s %6s %6s' % (
         'case', 'call', 'C min', 'C med', 'Py min', 'Py med', 'min', 'med'))

@@ -7,7 +7,9 @@
 
 import collections
 import math
+import numbers
 import operator
+import threading
 
 import numpy as np
 
@@ -26,6 +28,52 @@ _SC = frozenset([int, float, bool, np.float64, np.float32, np.float16,
                  np.int8, np.int16, np.int32, np.int64, np.uint8, np.uint16,
                  np.uint32, np.uint64, np.bool_])
 _SQ = frozenset([list, tuple])
+
+# ---------------------------------------------------------------------------
+# Signals during long calls.  Every C loop of the binding (the generated
+# chpv_ loops, python/src) takes a poll, which it calls every 50 ms
+# (python/src/poll.h): chp_py_poll, a cffi callback.  cffi takes the GIL
+# to call it and the interpreter runs the pending signal handlers on
+# entering it; the exception one raises (KeyboardInterrupt) goes to
+# _poll_raised, which keeps it for _polled to raise and stops the loop.
+# Only Python's main thread runs signal handlers: other threads pass no
+# poll (and so never wait for the GIL).
+
+_RAISED = []        # one slot per polled call in progress, innermost last
+_POLLING = True     # False: no poll (python/bench/bench.py's reference)
+
+
+def _poll_raised(exc_type, exc, tb):
+    if _RAISED and _RAISED[-1] is None:
+        _RAISED[-1] = exc
+    return 1
+
+
+@_ffi.def_extern(onerror=_poll_raised)
+def chp_py_poll():
+    """The poll of the C loops: the signal handlers run on entry."""
+    return 0
+
+
+_POLL = _lib.chp_py_poll
+_get_ident = threading.get_ident
+_main_thread = threading.main_thread
+
+
+def _polled(fn, *args):
+    """fn(*args, poll): a C loop of the binding, polling from the main
+    thread; the exception a signal handler raised during it is raised."""
+    if not _POLLING or _get_ident() != _main_thread().ident:
+        return fn(*args, _NULL)
+    _RAISED.append(None)
+    try:
+        r = fn(*args, _POLL)
+    finally:
+        exc = _RAISED.pop()
+    if exc is not None:
+        raise exc
+    return r
+
 
 # ---------------------------------------------------------------------------
 # C types as NumPy dtypes
@@ -811,7 +859,8 @@ def _vec(cname, inputs, wants, opt, errors, spec=None):
     status = np.empty(shape, np.intc)
     c_ptrs = _ffi.new('char *[]', ptrs) if ptrs else _NULL
     c_strides = _ffi.new('ptrdiff_t[]', strides) if strides else _NULL
-    nfail = loop(n, c_ptrs, c_strides, _ffi.cast('int *', _ptr(status)))
+    nfail = _polled(loop, n, c_ptrs, c_strides,
+                    _ffi.cast('int *', _ptr(status)))
     del keep
     if nfail:
         bad = status != 0

@@ -18,7 +18,7 @@ import numpy as np
 from . import _core
 from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_struct, _flat,
                     _ptr, _options, _request, _struct_class, _nt, _SC,
-                    _check_errors, _scalar_dtype)
+                    _check_errors, _scalar_dtype, _polled)
 from ._groups import export
 
 __all__ = []
@@ -65,16 +65,6 @@ def step_eh_n(sys, state, n, *, errors='raise'):
     """
     _system(sys)
     _check_errors(errors)
-    if type(state) is DiscreteState and type(n) in _SC:
-        st = state.copy()
-        done = _ffi.new('unsigned long *')
-        rc = _lib.chaplygin_discrete_step_eh_n(sys._c, st._c, n, done)
-        if rc and errors == 'raise':
-            _fail(rc, 'chaplygin_discrete_step_eh_n', partial=st,
-                  done=done[0])
-        if errors == 'return':
-            return _nt(('state', 'done', 'status'))(st, done[0], rc)
-        return st
     a = _as_struct('state', 'chaplygin_discrete_state', state)
     nn = _as_int('n', n, _UL)
     shape = np.broadcast_shapes(a.shape, nn.shape)
@@ -82,12 +72,11 @@ def step_eh_n(sys, state, n, *, errors='raise'):
     nn, n_stride = _flat(nn, shape, 0)
     done = np.zeros(shape, _UL)
     status = np.empty(shape, np.intc)
-    ptrs = _ffi.new('char *[]', [_ffi.cast('char *', sys._c), _ptr(out),
-                                 _ptr(nn), _ptr(done)])
-    strides = _ffi.new('ptrdiff_t[]', [0, out.itemsize, n_stride,
-                                       done.itemsize])
-    nfail = _lib.chpv_chaplygin_discrete_step_eh_n(
-        out.size, ptrs, strides, _ffi.cast('int *', _ptr(status)))
+    nfail = _polled(_lib.chp_py_discrete_step_eh_n, sys._c, out.size,
+                    _ffi.cast('chaplygin_discrete_state *', _ptr(out)),
+                    _ffi.cast('unsigned long *', _ptr(nn)), n_stride,
+                    _ffi.cast('unsigned long *', _ptr(done)),
+                    _ffi.cast('int *', _ptr(status)))
     return _finish(out, done, status, nfail, errors,
                    'chaplygin_discrete_step_eh_n', ('state', 'done'))
 
@@ -138,8 +127,8 @@ def _orbit(cname, call, state, n, request, keep, events, errors, opt=None):
     ev = np.empty(shape + (n,), DiscreteEvent.dtype) if events else None
     status = np.empty(shape, np.intc)
     done = np.empty(shape, _UL)
-    nfail = call(m, _ptr(a), stride, n, request, keep_all, out, ev, status,
-                 done)
+    nfail = _polled(call, m, _ptr(a), stride, n, request, keep_all, out, ev,
+                    status, done)
     if nfail:
         bad = status != 0
         if keep_all:
@@ -199,14 +188,15 @@ def orbit(sys, state, n, *, request='all', method=None, tol=None,
     _system(sys)
     opt = _options(method, tol, precision)
 
-    def call(m, init, stride, n, request, keep_all, out, ev, status, done):
+    def call(m, init, stride, n, request, keep_all, out, ev, status, done,
+             poll):
         return _lib.chp_py_discrete_orbit(
             sys._c, m, init, stride, n, request, opt, keep_all,
             _ffi.cast('chaplygin_discrete_state *', _ptr(out)),
             _NULL if ev is None else
             _ffi.cast('chaplygin_discrete_event *', _ptr(ev)),
             _ffi.cast('int *', _ptr(status)),
-            _ffi.cast('unsigned long *', _ptr(done)))
+            _ffi.cast('unsigned long *', _ptr(done)), poll)
     return _orbit('chaplygin_discrete_step', call, state, n, request, keep,
                   events, errors)
 
@@ -316,10 +306,10 @@ def basins(sys, Omega0, V_lo, V_hi, n, max_collisions, *, errors='raise'):
     n = int(_as_int('n', n, _scalar_dtype('size_t')))
     out = np.zeros(n, Fate.dtype)
     status = np.zeros(n, np.intc)
-    rc = _lib.chaplygin_discrete_basins(
-        sys._c, Omega0, V_lo, V_hi, n, max_collisions,
-        _ffi.cast('chaplygin_fate *', _ptr(out)) if n else _NULL,
-        _ffi.cast('int *', _ptr(status)) if n else _NULL, _NULL)
+    rc = _polled(_lib.chp_py_discrete_basins,
+                 sys._c, Omega0, V_lo, V_hi, n, max_collisions,
+                 _ffi.cast('chaplygin_fate *', _ptr(out)) if n else _NULL,
+                 _ffi.cast('int *', _ptr(status)) if n else _NULL)
     if rc and (not n or not status.any()):
         status[...] = rc            # a failure of the call as a whole
     if rc and errors == 'raise':

@@ -25,13 +25,14 @@ def orbit(L0, state, n, *, request='all', keep='all', events=False,
     """
     L0 = float(L0)
 
-    def call(m, init, stride, n, request, keep_all, out, ev, status, done):
+    def call(m, init, stride, n, request, keep_all, out, ev, status, done,
+             poll):
         return _lib.chp_py_massless_orbit(
             L0, m, init, stride, n, request, keep_all,
             _ffi.cast('chaplygin_discrete_state *', _ptr(out)),
             _NULL if ev is None else
             _ffi.cast('chaplygin_discrete_event *', _ptr(ev)),
             _ffi.cast('int *', _ptr(status)),
-            _ffi.cast('unsigned long *', _ptr(done)))
+            _ffi.cast('unsigned long *', _ptr(done)), poll)
     return _discrete._orbit('chaplygin_massless_step', call, state, n,
                             request, keep, events, errors)

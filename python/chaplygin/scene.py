@@ -43,7 +43,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from ._core import (_ffi, _lib, SceneError, error_class)
+from ._core import (_ffi, _lib, SceneError, error_class, _polled)
 
 __all__ = ['run_scene', 'to_ini', 'INTEGER_COLUMNS']
 
@@ -164,27 +164,22 @@ def run_scene(scene, compare=False):
     """
     table = _ffi.new('chp_py_table **')
     rep = _ffi.new('chaplygin_scene_report *')
-    keep = []
     if isinstance(scene, Mapping):
         triples = _triples(scene)
         cells = [[_ffi.new('char[]', _text(t, 'a key or value'))
                   for t in row] for row in triples]
-        keep.append(cells)
         sec = _ffi.new('char *[]', [c[0] for c in cells] or [_ffi.NULL])
         key = _ffi.new('char *[]', [c[1] for c in cells] or [_ffi.NULL])
         val = _ffi.new('char *[]', [c[2] for c in cells] or [_ffi.NULL])
-        rc = _lib.chp_py_scene_run(_ffi.NULL, len(triples), sec, key, val,
-                                   b'<dict>', bool(compare), _ffi.NULL,
-                                   table, rep)
+        args = (_ffi.NULL, len(triples), sec, key, val, b'<dict>')
     elif isinstance(scene, (str, bytes, os.PathLike)):
         path = _text(os.fsencode(scene), 'a file name')
-        rc = _lib.chp_py_scene_run(path, 0, _ffi.NULL, _ffi.NULL, _ffi.NULL,
-                                   _ffi.NULL, bool(compare), _ffi.NULL,
-                                   table, rep)
+        args = (path, 0, _ffi.NULL, _ffi.NULL, _ffi.NULL, _ffi.NULL)
     else:
         raise TypeError('run_scene: a file name or a dict expected, not %s'
                         % type(scene).__name__)
     try:
+        rc = _polled(_lib.chp_py_scene_run, *args, bool(compare), table, rep)
         columns = _columns(table[0]) if table[0] != _ffi.NULL else {}
     finally:
         _lib.chp_py_table_free(table[0])

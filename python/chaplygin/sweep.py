@@ -4,8 +4,10 @@ y = (1/Delta)^2 >= 0.
   sigma4(x, y, dir)   Fig. 2(a): sigma4 (3.10) over x for each y
   stability(x, y)     Fig. 2(b): the stability regions on the grid x by y
 
-Both call the library's own array functions (one call per y for sigma4);
-grid_point (also chaplygin.grid_point) is the grid of every sweep.
+Both call the library's own array functions, on blocks of at most _BLOCK
+points (the interpreter runs signal handlers between the calls: Ctrl-C
+interrupts a sweep); grid_point (also chaplygin.grid_point) is the grid of
+every sweep.
 """
 import numpy as np
 
@@ -13,6 +15,15 @@ from ._core import (_ffi, _lib, _NULL, _fail, _as_float, _ptr, _nt,
                     _check_errors)
 
 __all__ = ['sigma4', 'stability', 'grid_point']
+
+# Points per call of a sweep function: about 1 ms.
+_BLOCK = 1 << 16
+
+
+def _blocks(n):
+    """(start, count) of the blocks of N points (one empty block for N = 0:
+    the call still checks its other arguments)."""
+    return [(j, min(_BLOCK, n - j)) for j in range(0, n, _BLOCK)] or [(0, 0)]
 
 
 def sigma4(x, y, dir, *, errors='raise'):
@@ -41,16 +52,18 @@ def sigma4(x, y, dir, *, errors='raise'):
     status = np.zeros((ys.size,) + xa.shape, np.intc)
     n = xa.size
     first = 0
+    xp = _ffi.cast('double *', _ptr(xa) if n else 0)
     for i, yv in enumerate(ys):
-        o, s = out[i], status[i]
-        rc = _lib.chaplygin_sweep_sigma4(
-            dir, float(yv), n, _ffi.cast('double *', _ptr(xa)) if n else _NULL,
-            _ffi.cast('double *', _ptr(o)) if n else _NULL,
-            _ffi.cast('int *', _ptr(s)) if n else _NULL)
-        if rc and not n or rc and not s.any():
-            s[...] = rc            # a failure of the call as a whole
-        if rc and not first:
-            first = rc
+        o, st = out[i].reshape(-1), status[i].reshape(-1)
+        op = _ffi.cast('double *', _ptr(o) if n else 0)
+        sp = _ffi.cast('int *', _ptr(st) if n else 0)
+        for j, k in _blocks(n):
+            rc = _lib.chaplygin_sweep_sigma4(dir, float(yv), k, xp + j,
+                                             op + j, sp + j)
+            if rc and not (n and st[j:j + k].any()):
+                st[j:j + k] = rc        # a failure of the call as a whole
+            if rc and not first:
+                first = rc
     bad = status != 0
     out[bad] = np.nan
     out = out.reshape(shape)
@@ -82,12 +95,18 @@ def stability(x, y):
     region = np.zeros((ya.size, xa.size), np.uint8)
     if region.size == 0:
         return region
-    rc = _lib.chaplygin_sweep_stability(
-        xa.size, _ffi.cast('double *', _ptr(xa)), ya.size,
-        _ffi.cast('double *', _ptr(ya)),
-        _ffi.cast('unsigned char *', _ptr(region)))
-    if rc:
-        _fail(rc, 'chaplygin_sweep_stability')
+    nx = xa.size
+    xp = _ffi.cast('double *', _ptr(xa))
+    yp = _ffi.cast('double *', _ptr(ya))
+    rp = _ffi.cast('unsigned char *', _ptr(region))
+    rows = max(1, _BLOCK // nx)             # whole rows, or one in blocks
+    for i in range(0, ya.size, rows):
+        ny = min(rows, ya.size - i)
+        for j, k in _blocks(nx) if rows == 1 else [(0, nx)]:
+            rc = _lib.chaplygin_sweep_stability(k, xp + j, ny, yp + i,
+                                                rp + i * nx + j)
+            if rc:
+                _fail(rc, 'chaplygin_sweep_stability')
     return region
 
 

@@ -9,6 +9,7 @@
 
 #include "chaplygin-scene.h"
 #include "chp_python.h"
+#include "poll.h"
 
 /* One column: reals (x, and e where a value lies beyond the doubles) or
    integers (n), and which cells are missing. */
@@ -26,7 +27,7 @@ struct chp_py_table
   column data[CHAPLYGIN_COLUMNS_MAX];
   size_t ncols, rows, cap;
   int nomem;
-  int (*poll) (void);           /* nonzero: stop (a signal is pending) */
+  chp_py_poller poller;         /* polled by the progress callback */
 };
 
 /* Room for one more row in every column of T: 0, or -1 without memory. */
@@ -105,7 +106,7 @@ poll_progress (void *user, double done, double total)
   chp_py_table *t = user;
   (void) done;
   (void) total;
-  return t->poll ? t->poll () : 0;
+  return chp_py_poll_stop (&t->poller);
 }
 
 void
@@ -126,8 +127,8 @@ chp_py_table_free (chp_py_table *t)
 int
 chp_py_scene_run (const char *path, size_t n, const char *const *section,
                   const char *const *key, const char *const *value,
-                  const char *name, int compare, int (*poll) (void),
-                  chp_py_table **table, chaplygin_scene_report *rep)
+                  const char *name, int compare, chp_py_table **table,
+                  chaplygin_scene_report *rep, int (*poll) (void))
 {
   chaplygin_scene *sc = chaplygin_scene_new ();
   chp_py_table *t = calloc (1, sizeof *t);
@@ -141,7 +142,7 @@ chp_py_scene_run (const char *path, size_t n, const char *const *section,
       rep->status = CHAPLYGIN_SCENE_ENOMEM;
       return rep->status;
     }
-  t->poll = poll;
+  chp_py_poller_init (&t->poller, poll);
   r = path ? chaplygin_scene_read_file (sc, path, rep)
     : chaplygin_scene_read_pairs (sc, n, section, key, value, name, rep);
   chaplygin_run_options run = { compare, 0, 1, 0, NULL, take_row,
