@@ -16,12 +16,23 @@ keywords: numbers (int, float: read back exactly), fractions.Fraction (as
 p/q, exactly) or strings as `chaplygin eq` takes them ('1/3', 'quadrature');
 dir is +1 or -1.  Every input given must be used by the label.
 
+Outputs beyond the doubles: where V and Omega make a state whose E or H
+would leave the doubles, the label is evaluated in the units of a velocity
+scaling (r.inputs says so) and an output is x 2^e; in r.outputs (and
+r.printed) it is the float ldexp(x, e), +-inf or 0.0 (or a subnormal)
+where that leaves the doubles, as run_scene's columns are, with a
+RuntimeWarning naming the outputs; r.exact (r.printed_exact) holds every
+finite real output (printed form) exactly, as a fractions.Fraction (the
+program prints its decimal, %.17g of the exact value).
+
 Errors: an unknown label or inputs that do not fit it raise EquationError;
 inputs the library rejects (outside the domain) and failures of the
 library raise the exception of the library's status (DomainError, ...).
 """
 import fractions
+import math
 import numbers
+import warnings
 
 import numpy as np
 
@@ -86,18 +97,23 @@ class Equation:
     computed it, and how), printed (name -> the printed form's value, None
     where it is undefined at these inputs; only outputs with a printed
     form), errata (name -> the erratum of that printed form), relative
-    (name -> |printed - value|/|value|), inputs (the inputs as read, as the
+    (name -> |printed - value|/|value|), exact and printed_exact (name ->
+    the fractions.Fraction of a finite real output, of its printed form:
+    exact also beyond the doubles), inputs (the inputs as read, as the
     program shows them), and the label's label, title, paper and note.
     An output is also an attribute and an item: r.sigma4, r['sigma4']."""
 
     def __init__(self, label, title, paper, note, inputs, outputs, functions,
-                 methods, printed, errata, relative):
+                 methods, printed, errata, relative, exact=None,
+                 printed_exact=None):
         self.label, self.title, self.paper, self.note = (label, title, paper,
                                                          note)
         self.inputs = inputs
         self.outputs, self.functions, self.methods = (outputs, functions,
                                                       methods)
         self.printed, self.errata, self.relative = printed, errata, relative
+        self.exact = {} if exact is None else exact
+        self.printed_exact = {} if printed_exact is None else printed_exact
 
     def __getitem__(self, name):
         return self.outputs[name]
@@ -133,13 +149,17 @@ def _text(name, v):
                     % (name, type(v).__name__))
 
 
-def _value(o):
-    kind = o.kind
-    if kind == 0:
-        return float(o.x)
-    if kind == 1:
-        return int(o.n)
-    return _string(o.word)
+def _real(x, e):
+    """x 2^e: (the float, rounded to +-inf or 0 beyond the doubles, as
+    run_scene's columns; the exact Fraction, None for a non-finite x)."""
+    x, e = float(x), int(e)
+    if not math.isfinite(x):
+        return x, None
+    q = fractions.Fraction(x) * fractions.Fraction(2) ** e
+    try:
+        return math.ldexp(x, e), q
+    except OverflowError:
+        return math.copysign(math.inf, x), q
 
 
 def eq(label, **inputs):
@@ -170,17 +190,41 @@ def eq(label, **inputs):
                                               detail='eq %s: %s'
                                               % (label, msg))
     outs = [res.out[i] for i in range(res.n_out)]
-    value = {_string(o.name): _value(o) for o in outs}
-    printed, errata, relative = {}, {}, {}
+    value, exact, printed, printed_exact, errata, relative = ({}, {}, {}, {},
+                                                              {}, {})
+    beyond = []                 # outputs whose float is not their value
     for o in outs:
         name = _string(o.name)
+        if o.kind == 0:
+            value[name], q = _real(o.x, o.e)
+            if q is not None:
+                exact[name] = q
+            if o.e:
+                beyond.append(name)
+        else:
+            value[name] = int(o.n) if o.kind == 1 else _string(o.word)
         if o.printed == 0:
             continue
-        printed[name] = (None if o.printed == 2 else
-                         int(o.pn) if o.kind == 1 else float(o.px))
+        if o.printed == 2:
+            printed[name] = None
+        elif o.kind == 1:
+            printed[name] = int(o.pn)
+        else:
+            printed[name], q = _real(o.px, o.pe)
+            if q is not None:
+                printed_exact[name] = q
+            if o.pe:
+                beyond.append(name + ' (printed)')
         errata[name] = _string(o.perratum)
         if o.has_rel:
             relative[name] = float(o.rel)
+    if beyond:
+        warnings.warn('eq %s: %s beyond the doubles (evaluated in the units '
+                      'of a velocity scaling), rounded to inf, 0 or a '
+                      'subnormal; exact '
+                      'values in .exact, .printed_exact'
+                      % (label, ', '.join(beyond)), RuntimeWarning,
+                      stacklevel=2)
     e = res.entry
     return Equation(
         label=_string(e.label), title=_string(e.title),
@@ -191,4 +235,5 @@ def eq(label, **inputs):
         outputs=value,
         functions={_string(o.name): _string(o.function) for o in outs},
         methods={_string(o.name): _string(o.method) for o in outs},
-        printed=printed, errata=errata, relative=relative)
+        printed=printed, errata=errata, relative=relative, exact=exact,
+        printed_exact=printed_exact)

@@ -4,6 +4,7 @@ outputs, names and values bit for bit (the CSV's %.17g reads back
 exactly), with the same printed forms; and results pickle, errors are
 the right exceptions, the labels are the registry's."""
 import csv
+import decimal
 import io
 import math
 import pickle
@@ -98,6 +99,54 @@ def test_printed_forms():
     r = c.eq('2.1', L=1, V=-1e308, Omega=0.5)
     assert r.outputs['dS/dtau'] == 1e308 and r.printed['dS/dtau'] == -1e308
     assert r.relative['dS/dtau'] == 2.0 and r.errata['dS/dtau'] == 'E1'
+
+
+def decimal17(q):
+    """The Fraction Q rounded to 17 significant digits (what %.17g prints
+    of the exact value), as a Decimal."""
+    with decimal.localcontext() as ctx:
+        ctx.prec = 17
+        return decimal.Decimal(q.numerator) / decimal.Decimal(q.denominator)
+
+
+BEYOND = [   # (label, inputs, the outputs beyond the doubles)
+    ('B.3', {'L0': 1e200, 'Delta': 1, 'V': 1, 'Omega': 1},
+     ['E_next', 'H_next']),                         # E ~ 5e399: inf
+    ('B.9', {'L0': 1, 'Delta': '1/3', 'V': '1e-200', 'Omega': '1e-200',
+             'n': 3}, ['E_n', 'E_n (printed)']),    # E ~ 1.5e-400: 0
+]
+
+
+@pytest.mark.parametrize('label,inputs,beyond', BEYOND,
+                         ids=[b[0] for b in BEYOND])
+def test_outputs_beyond_the_doubles(label, inputs, beyond, program):
+    """An output x 2^e of an evaluation in a velocity scaling's units: the
+    float is its rounding (inf, 0), with a RuntimeWarning naming it, and
+    exact (printed_exact) is its exact value, which the program prints:
+    %.17g of the exact value, against the Fraction rounded by decimal."""
+    with pytest.warns(RuntimeWarning) as w:
+        r = c.eq(label, **inputs)
+    assert len(w) == 1 and ', '.join(beyond) in str(w[0].message)
+    rows = program_rows(program, label,
+                        ['%s=%s' % kv for kv in inputs.items()])
+    assert list(r.outputs) == [row['output'] for row in rows]
+    for row in rows:
+        name, text = row['output'], row['value']
+        if name in r.exact:
+            assert decimal17(r.exact[name]) == decimal.Decimal(text), name
+        # float() of the decimal: correctly rounded, inf beyond the doubles
+        assert r.outputs[name] == value_of(text), (name, text)
+        if row['printed'] not in ('', 'undefined'):
+            assert decimal17(r.printed_exact[name]) == \
+                decimal.Decimal(row['printed'])
+            assert r.printed[name] == value_of(row['printed'])
+            assert r.relative[name] == pytest.approx(
+                float(row['relative_difference']), rel=5e-3)
+    for name in beyond:
+        v = (r.printed[name.split()[0]] if name.endswith('(printed)')
+             else r.outputs[name])
+        assert v in (0.0, math.inf), name
+    assert pickle.loads(pickle.dumps(r)) == r
 
 
 def test_errors():
