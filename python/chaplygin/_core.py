@@ -540,11 +540,21 @@ _NT_CACHE = {}
 
 
 def _nt(fields):
+    """The named tuple class 'Result' of FIELDS (made once).  Its instances
+    pickle as (FIELDS, values), rebuilt by _result: the class itself is not
+    importable (one per tuple of fields)."""
     cls = _NT_CACHE.get(fields)
     if cls is None:
         cls = _NT_CACHE[fields] = _namedtuple('Result', fields,
                                               rename=True)
+        cls.__module__ = __name__
+        cls.__reduce__ = lambda self: (_result, (fields, tuple(self)))
     return cls
+
+
+def _result(fields, values):
+    """A Result of FIELDS (unpickling)."""
+    return _nt(fields)(*values)
 
 
 def _pick(names, flags, values):
