@@ -7,11 +7,11 @@
 Every public function of the C library <chaplygin.h> is here, named after
 it without the prefix and sorted by system:
 
-    chaplygin_discrete_sigma4      chaplygin.discrete.sigma4(L0, Delta, dir=1)
+    chaplygin_discrete_sigma4      chaplygin.discrete.sigma4(L0, Delta, dir)
     chaplygin_smooth_closed_form   chaplygin.smooth.closed_form(L, q0, S)
     chaplygin_massless_step        chaplygin.massless.step(L0, state)
     chaplygin_printed_discrete_f3  chaplygin.printed.discrete_f3(sys, ...)
-    chaplygin_sweep_sigma4         chaplygin.sweep.sigma4(x, y, dir=1)
+    chaplygin_sweep_sigma4         chaplygin.sweep.sigma4(x, y, dir)
     chaplygin_strerror             chaplygin.strerror(status)
 
 with the C parameter names as keyword arguments, outputs returned (several

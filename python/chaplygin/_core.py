@@ -6,6 +6,7 @@
 """Internal machinery of the chaplygin package (see chaplygin.vectorised)."""
 
 import collections
+import decimal
 import math
 import numbers
 import operator
@@ -598,9 +599,27 @@ def _limits(dtype):
     return lim
 
 
+# Argument conversion: every number and array a wrapper takes passes
+# _as_float, _as_int, _as_struct or _real, which raise TypeError for what is
+# not a number (None, str, bytes, objects: NumPy would make None NaN and
+# '1.5' 1.5) and refuse masked arrays (np.asarray drops the mask: masked
+# points would be computed and returned unmasked).
+
+_REAL_TYPES = (numbers.Real, decimal.Decimal)
+
+
+def _refuse_masked(name, x):
+    if isinstance(x, np.ma.MaskedArray):
+        raise TypeError(
+            '%s: a masked array (numpy.ma) is not taken, its mask would be '
+            'ignored: pass x.filled(np.nan) (masked points then fail alone, '
+            'errors="return" gives their status) or x.compressed()' % name)
+
+
 def _as_float(name, x):
     if type(x) is np.ndarray and x.dtype is _F8:
         return x
+    _refuse_masked(name, x)
     a = np.asarray(x)
     kind = a.dtype.kind
     if a.dtype == _F8:
@@ -608,12 +627,24 @@ def _as_float(name, x):
     if kind in 'biuf':
         return a.astype(np.float64)
     if kind == 'O':
-        try:
-            return a.astype(np.float64)
-        except (TypeError, ValueError) as e:
-            raise TypeError('%s: real numbers expected (%s)' % (name, e)) \
-                from None
+        for v in a.flat:
+            if not isinstance(v, _REAL_TYPES) or \
+                    isinstance(v, np.ma.MaskedArray):
+                raise TypeError('%s: real numbers expected, not %s'
+                                % (name, type(v).__name__))
+        return a.astype(np.float64)
     raise TypeError('%s: real numbers expected, not %s' % (name, a.dtype))
+
+
+def _real(name, x):
+    """One real number X as a float (TypeError otherwise)."""
+    if type(x) is float or type(x) is int:
+        return float(x)
+    a = _as_float(name, x)
+    if a.ndim:
+        raise TypeError('%s: one number expected, not an array of shape %s'
+                        % (name, a.shape))
+    return float(a)
 
 
 def _as_int(name, x, dtype):
@@ -623,6 +654,7 @@ def _as_int(name, x, dtype):
             raise OverflowError('%s: %d out of the range of C %s'
                                 % (name, x, dtype))
         return np.asarray(x, dtype)
+    _refuse_masked(name, x)
     a = np.asarray(x)
     kind = a.dtype.kind
     if kind == 'O':
@@ -654,6 +686,7 @@ def _as_struct(name, ctype, x):
     dt = cls.dtype
     if isinstance(x, cls):
         return np.frombuffer(_ffi.buffer(x._c), dtype=dt).reshape(())
+    _refuse_masked(name, x)
     if isinstance(x, np.ndarray) and x.dtype == dt:
         return x
     if isinstance(x, np.ndarray) and x.dtype.names:

@@ -18,7 +18,7 @@ import numpy as np
 from . import _core
 from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_struct, _flat,
                     _ptr, _options, _request, _struct_class, _nt, _SC,
-                    _check_errors, _scalar_dtype, _polled)
+                    _check_errors, _scalar_dtype, _polled, _real)
 from ._groups import export
 
 __all__ = []
@@ -304,6 +304,9 @@ def basins(sys, Omega0, V_lo, V_hi, n, max_collisions, *, errors='raise'):
     _check_errors(errors)
     _system(sys)
     n = int(_as_int('n', n, _scalar_dtype('size_t')))
+    Omega0, V_lo, V_hi = (_real('Omega0', Omega0), _real('V_lo', V_lo),
+                          _real('V_hi', V_hi))
+    max_collisions = _count('max_collisions', max_collisions)
     out = np.zeros(n, Fate.dtype)
     status = np.zeros(n, np.intc)
     rc = _polled(_lib.chp_py_discrete_basins,
@@ -337,6 +340,9 @@ def basin_boundaries(sys, Omega0, V_lo, V_hi, n_grid, max_collisions):
     """
     _system(sys)
     n_grid = int(_as_int('n_grid', n_grid, _scalar_dtype('size_t')))
+    Omega0, V_lo, V_hi = (_real('Omega0', Omega0), _real('V_lo', V_lo),
+                          _real('V_hi', V_hi))
+    max_collisions = _count('max_collisions', max_collisions)
     cap = 2 * n_grid + 1
     while True:
         out = np.empty(cap, np.float64)

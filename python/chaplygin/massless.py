@@ -4,7 +4,7 @@ Generated wrappers of every chaplygin_massless_* function, and by hand
 orbit(L0, state, n): the return map (B.15) along n collisions from one or
 many post-collision states, the loop in C (as chaplygin.discrete.orbit).
 """
-from ._core import _ffi, _lib, _NULL, _ptr
+from ._core import _ffi, _lib, _NULL, _ptr, _real
 from ._groups import export
 from . import discrete as _discrete
 
@@ -23,7 +23,7 @@ def orbit(L0, state, n, *, request='all', keep='all', events=False,
     chaplygin_massless_step per collision; shapes, keep, events and errors
     as chaplygin.discrete.orbit.
     """
-    L0 = float(L0)
+    L0 = _real('L0', L0)
 
     def call(m, init, stride, n, request, keep_all, out, ev, status, done,
              poll):

@@ -12,7 +12,7 @@ By hand (the path is read and written):
 import numpy as np
 
 from ._core import _ffi, _lib, _fail, _check_errors, _nt, _SC, \
-    _struct_class
+    _struct_class, _as_float, _real
 from ._groups import export
 
 __all__ = []
@@ -40,7 +40,7 @@ def _time(tau):
         raise TypeError('tau: one number expected, not %s (a walk is '
                         'sequential: smooth.path takes many times)'
                         % type(tau).__name__)
-    return float(tau)
+    return _real('tau', tau)
 
 
 def path_advance(m, path, tau, *, errors='raise'):
@@ -94,16 +94,17 @@ def path(m, taus, C0=None, *, errors='raise'):
     """
     _typed(m, SmoothMotion, 'm', 'chaplygin.smooth.motion_init(L, q0)')
     _check_errors(errors)
-    t = np.asarray(taus, dtype=np.float64)
+    t = _as_float('taus', taus)
     if t.ndim != 1:
         raise ValueError('taus: a 1-d sequence of times expected')
     Cv = np.full((t.size, 2), np.nan)
     Gv = np.full((t.size, 2), np.nan)
     p = SmoothPath()
-    if C0 is not None and np.shape(C0) != (2,):
+    c0 = _ffi.NULL if C0 is None else _as_float('C0', C0)
+    if C0 is not None and c0.shape != (2,):
         raise ValueError('C0: two numbers (x, y) expected')
-    c0 = _ffi.NULL if C0 is None else _ffi.new(
-        'double[2]', [float(v) for v in C0])
+    if C0 is not None:
+        c0 = _ffi.new('double[2]', c0.tolist())
     rc = _lib.chaplygin_smooth_path_init(0.0, c0, p._c)
     G = _ffi.new('double[2]')
     for i in range(t.size):

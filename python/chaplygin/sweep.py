@@ -12,7 +12,8 @@ every sweep.
 import numpy as np
 
 from ._core import (_ffi, _lib, _NULL, _fail, _as_float, _ptr, _nt,
-                    _check_errors)
+                    _check_errors, _real, _as_int, _scalar_dtype,
+                    _refuse_masked)
 
 __all__ = ['sigma4', 'stability', 'grid_point']
 
@@ -123,16 +124,18 @@ def grid_point(lo, hi, n, i):
     C: int chaplygin_grid_point(double lo, double hi, size_t n, size_t i,
     double *v)
     """
-    n = int(n)
+    lo, hi = _real('lo', lo), _real('hi', hi)
+    n = int(_as_int('n', n, _scalar_dtype('size_t')))
+    _refuse_masked('i', i)
     idx = np.asarray(i)
     if idx.dtype.kind not in 'iu':
         raise TypeError('grid_point: i is an integer or an array of them')
-    if n < 0 or (idx < 0).any():
+    if (idx < 0).any():
         _fail(_lib.CHAPLYGIN_EINVAL, 'chaplygin_grid_point')
     v = _ffi.new('double *')
     out = np.empty(idx.shape, np.float64)
     for k, ik in np.ndenumerate(idx):
-        rc = _lib.chaplygin_grid_point(float(lo), float(hi), n, int(ik), v)
+        rc = _lib.chaplygin_grid_point(lo, hi, n, int(ik), v)
         if rc:
             _fail(rc, 'chaplygin_grid_point')
         out[k] = v[0]

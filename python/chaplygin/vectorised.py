@@ -17,9 +17,13 @@ structured array of its dtype (chaplygin.as_columns splits one into a dict
 of plain arrays).  The results are exactly those of the scalar calls, bit
 for bit.
 
-Types.  Real inputs are converted to float64; integer inputs (dir,
-reversal, n, request) must be integers (an array of floats is a TypeError,
-a value outside the C type an OverflowError).  Non-contiguous, strided,
+Types.  Real inputs are converted to float64 from numbers (numbers.Real
+and decimal.Decimal); None, text, bytes and other objects, also inside
+lists and object arrays, are a TypeError (not NaN, not a parsed number);
+integer inputs (dir, reversal, n, request) must be integers (an array of
+floats is a TypeError, a value outside the C type an OverflowError).
+Masked arrays (numpy.ma) are a TypeError: their mask would be lost; pass
+x.filled(np.nan) or x.compressed().  Non-contiguous, strided,
 broadcast and read-only arrays are read in place where one stride fits and
 copied otherwise; nothing is written into an input.
 

@@ -2,6 +2,7 @@
 # the automake test harness (CHAPLYGIN_TAP=1, set by python/run-pytest).
 import os
 import subprocess
+import types
 
 import pytest
 
@@ -85,3 +86,25 @@ def pytest_unconfigure(config):
     if not _TAP:
         lines = ['1..0 # SKIP no tests ran']
     print('\n' + '\n'.join(lines), flush=True)
+
+
+def public_functions():
+    """{name: function}: the public callables of chaplygin and of its
+    public modules (their __all__; classes and modules aside), each once."""
+    import chaplygin as c
+    mods = [('', c)] + [(n, m) for n, m in vars(c).items()
+                        if isinstance(m, types.ModuleType)
+                        and m.__name__ == 'chaplygin.' + n   # not lib
+                        and not n.startswith('_')]
+    out, seen = {}, set()
+    for prefix, mod in mods:
+        for n in getattr(mod, '__all__', []) if prefix else dir(mod):
+            f = getattr(mod, n)
+            if n.startswith('_') or isinstance(f, (type, types.ModuleType)) \
+                    or not callable(f) or id(f) in seen \
+                    or not getattr(f, '__module__', '').startswith(
+                        'chaplygin'):
+                continue
+            seen.add(id(f))
+            out[prefix + '.' + n if prefix else n] = f
+    return out

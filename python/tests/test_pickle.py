@@ -13,7 +13,6 @@ import concurrent.futures
 import multiprocessing
 import pickle
 import struct
-import types
 import warnings
 
 import numpy as np
@@ -21,6 +20,7 @@ import pytest
 
 import chaplygin as c
 from chaplygin import _generated, discrete as d
+from conftest import public_functions
 from test_vectorised import inputs_of, GENERATED
 
 SYS = d.init(1.0, 1 / 3)
@@ -92,27 +92,6 @@ HAND = {
     'error_class': [lambda: c.error_class(2)],
     'as_columns': [lambda: c.as_columns(d.orbit(SYS, ST, 2))],
 }
-
-
-def public_functions():
-    """{name: function}: the public callables of chaplygin and of its
-    public modules (their __all__; classes and modules aside), each once."""
-    mods = [('', c)] + [(n, m) for n, m in vars(c).items()
-                        if isinstance(m, types.ModuleType)
-                        and m.__name__ == 'chaplygin.' + n   # not lib
-                        and not n.startswith('_')]
-    out, seen = {}, set()
-    for prefix, mod in mods:
-        for n in getattr(mod, '__all__', []) if prefix else dir(mod):
-            f = getattr(mod, n)
-            if n.startswith('_') or isinstance(f, (type, types.ModuleType)) \
-                    or not callable(f) or id(f) in seen \
-                    or not getattr(f, '__module__', '').startswith(
-                        'chaplygin'):
-                continue
-            seen.add(id(f))
-            out[prefix + '.' + n if prefix else n] = f
-    return out
 
 
 PUBLIC = public_functions()
