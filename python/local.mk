@@ -24,7 +24,7 @@ PY_TESTS = python/tests/conftest.py \
 	python/tests/test_docs.py python/tests/test_smooth_path.py \
 	python/tests/test_equation.py python/tests/test_locale.py \
 	python/tests/test_interrupt.py python/tests/test_pickle.py \
-	python/tests/test_types.py
+	python/tests/test_types.py python/tests/test_gen_write.py
 PY_GENERATED = python/gen/module.c python/gen/vec.c python/gen/vec.h \
 	python/chaplygin/_generated.py
 EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \
