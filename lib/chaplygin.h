@@ -1183,6 +1183,9 @@ int chaplygin_discrete_state_to_phase (const chaplygin_discrete *sys,
    Errors: CHAPLYGIN_EINVAL (a null pointer), and those of the three
    functions: CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE, CHAPLYGIN_ERANGE (a start the
    doubles cannot hold even scaled).
+
+   @tau: (default=0.0)
+   @peg: (default=None)
  */
 int chaplygin_discrete_scaled_state (const chaplygin_discrete *sys,
                                      const double q[4], double tau,
@@ -2523,6 +2526,9 @@ int chaplygin_massless_state_to_phase (double L0,
    chaplygin_massless_state_to_phase.
 
    Errors: as chaplygin_discrete_scaled_state.
+
+   @tau: (default=0.0)
+   @peg: (default=None)
  */
 int chaplygin_massless_scaled_state (double L0, const double q[4],
                                      double tau, const double peg[2],

@@ -194,8 +194,12 @@ def test_the_issue_examples():
         d.sigma4(None, 1 / 3, dir=1)
     with pytest.raises(TypeError):
         d.sigma4(np.array([1.0, None]), 1 / 3, dir=1)
+    # peg is optional (the header's default None: the state's own origin)
+    a = d.scaled_state(SYS, [0, 1, 0, 0.5], 0.0, None)
+    b = d.scaled_state(SYS, [0, 1, 0, 0.5], peg=[0.0, 0.0])
+    assert a.st == b.st and a.m == b.m == d.scaled_state(SYS, [0, 1, 0, 0.5]).m
     with pytest.raises(TypeError):
-        d.scaled_state(SYS, [0, 1, 0, 0.5], 0.0, None)
+        d.scaled_state(SYS, [0, 1, 0, 0.5], None)
     with pytest.raises(TypeError, match=r'masked array.*filled\(np.nan\)'):
         d.sigma4(masked([1.0, 2.0]), 1 / 3, dir=1)
     # numbers of other kinds are numbers: Fraction, Decimal, NumPy's, bool
