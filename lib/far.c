@@ -194,8 +194,7 @@ chp_far_phase (chp_far *f, double l0, double V, double Omega, double *Vs,
 /* The speed sp = max(|V|, sqrt(1 + l0^2) |Omega|) of a phase state and
    *e = ilogb(sp) (0 for sp = 0 or non-finite inputs).  Where the product
    overflows (finite inputs: |Omega| > 1 there, up to V = Omega = DBL_MAX),
-   sp = +Inf and *e from the product formed 2^-64 lower, exactly (both
-   factors then normal): the exponent an unbounded format would give. */
+   sp = +Inf and *e the exponent an unbounded format would give. */
 static double
 speed (double l0, double V, double Omega, int *e)
 {
@@ -204,8 +203,16 @@ speed (double l0, double V, double Omega, int *e)
   if (sp > 0.0 && isfinite (sp))
     *e = ilogb (sp);
   else if (isinf (sp) && isfinite (V) && isfinite (Omega) && isfinite (l0))
-    *e = ilogb (fmax (ldexp (fabs (V), -64),
-                      hypot (1.0, l0) * ldexp (fabs (Omega), -64))) + 64;
+    {
+      /* the product's exponent from its factors' (each below 1024, so no
+         int overflow: 2^-64 lower was still infinite for l0 = 1e300,
+         Omega = 1e100) and the product of their significands in [1, 4),
+         rounded as an unbounded format would */
+      const double h = hypot (1.0, l0), w = fabs (Omega);
+      const int eh = ilogb (h), ew = ilogb (w);
+      const int ep = eh + ew + ilogb (scalbn (h, -eh) * scalbn (w, -ew));
+      *e = V != 0.0 && ilogb (fabs (V)) > ep ? ilogb (fabs (V)) : ep;
+    }
   return sp;
 }
 
