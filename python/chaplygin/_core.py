@@ -608,8 +608,17 @@ def _limits(dtype):
 _REAL_TYPES = (numbers.Real, decimal.Decimal)
 
 
+def _holds_masked(seq):
+    """Whether the (nested) list or tuple SEQ holds numpy.ma.masked, which
+    np.asarray would make NaN with a warning."""
+    return any(v is np.ma.masked
+               or (type(v) in (list, tuple) and _holds_masked(v))
+               for v in seq)
+
+
 def _refuse_masked(name, x):
-    if isinstance(x, np.ma.MaskedArray):
+    if isinstance(x, np.ma.MaskedArray) or (
+            type(x) in (list, tuple) and _holds_masked(x)):
         raise TypeError(
             '%s: a masked array (numpy.ma) is not taken, its mask would be '
             'ignored: pass x.filled(np.nan) (masked points then fail alone, '

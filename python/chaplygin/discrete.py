@@ -18,7 +18,8 @@ import numpy as np
 from . import _core
 from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_struct, _flat,
                     _ptr, _options, _request, _struct_class, _nt, _SC,
-                    _check_errors, _scalar_dtype, _polled, _real)
+                    _check_errors, _scalar_dtype, _polled, _real,
+                    _refuse_masked)
 from ._groups import export
 
 __all__ = []
@@ -212,6 +213,8 @@ def _fate(cname, sys, init_kind, init, max_collisions, reversal_cap, errors):
         type(init) is DiscreteState if init_kind == 'state'
         else (type(init) in (list, tuple) and len(init) == 4))
     if scalar:
+        if init_kind != 'state':
+            _refuse_masked('qplus', init)
         f = _ffi.new('chaplygin_fate *')
         rev = _ffi.new('unsigned long[]', cap) if cap else _NULL
         rc = getattr(_lib, cname)(sys._c, init._c if init_kind == 'state'

@@ -91,16 +91,19 @@ EXEMPT = {
 
 def bad_values(kind):
     if kind == 'int':
-        return INT_BAD + [masked(3)]
+        return INT_BAD + [masked(3), [3, np.ma.masked]]
     if kind == 'real':
         return REAL_BAD + [masked(0.5), np.ma.masked_array(0.5, mask=True)]
     if kind == 'array4':
         return [None, [None, 0, 0, 0.8], ['0', '0.3', '0', '0.8'],
-                masked([0, 0.3, 0, 0.8], (4,))]
+                masked([0, 0.3, 0, 0.8], (4,)), [0, 0.3, np.ma.masked, 0.8]]
     if kind == 'reals':
-        return [None, [None], ['1.5'], [object()], masked([0.5, 1.0])]
+        # numpy.ma.masked in a list: np.asarray would make it NaN
+        return [None, [None], ['1.5'], [object()], masked([0.5, 1.0]),
+                [0.5, np.ma.masked], [[0.5], [np.ma.masked]]]
     if kind == 'pair':          # None: the default
-        return [[None, 1.0], ['1', '2'], masked([0.5, 1.0])]
+        return [[None, 1.0], ['1', '2'], masked([0.5, 1.0]),
+                (np.ma.masked, 1.0)]
     if kind == 'state':
         return [None, '1', object(), np.ma.masked_array(
             np.zeros(2, c.DiscreteState.dtype))]
