@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "chaplygin-scene.h"
+#include "cli.h"
 #include "eq.h"
 
 enum
@@ -177,17 +178,6 @@ static const char eq_usage[] =
   "dir is +1 or -1.  [NAME=x] is optional with default x; (a | b) means\n"
   "either set of inputs.\n";
 
-static int
-finish (FILE *f)
-{
-  if (fflush (f) != 0 || ferror (f))
-    {
-      fputs ("chaplygin: eq: error writing to standard output\n", stderr);
-      return EQ_LIBRARY;
-    }
-  return EQ_OK;
-}
-
 /* Evaluate LABEL at the NAME=VALUE words WORDS[0..N-1] and print it.
    Returns the exit status. */
 static int
@@ -247,7 +237,7 @@ evaluate (const char *label, int n, char **words, int csv)
     print_csv (&res, stdout);
   else
     print_report (&res, stdout);
-  return finish (stdout);
+  return cli_finish_stdout () ? EQ_LIBRARY : EQ_OK;
 }
 
 int
@@ -266,7 +256,7 @@ eq_main (int argc, char **argv)
       else if (strcmp (argv[i], "--help") == 0 || strcmp (argv[i], "-h") == 0)
         {
           fputs (eq_usage, stdout);
-          return finish (stdout);
+          return cli_finish_stdout () ? EQ_LIBRARY : EQ_OK;
         }
       else if (argv[i][0] == '-' && argv[i][1] == '-')
         {
@@ -290,7 +280,7 @@ eq_main (int argc, char **argv)
           return EQ_USAGE;
         }
       print_list (csv, stdout);
-      return finish (stdout);
+      return cli_finish_stdout () ? EQ_LIBRARY : EQ_OK;
     }
   if (!label)
     {

@@ -44,7 +44,7 @@ done
 n_signals=$(echo $signals | wc -w)
 
 . "$top_srcdir/tools/tap-lib.sh"
-tap_start test-output $((13 + n_signals))
+tap_start test-output $((14 + n_signals))
 
 say () { echo "# $*" >&2; }
 abs_prog=$(cd "$(dirname "$prog")" && pwd)/$(basename "$prog")
@@ -137,6 +137,20 @@ result "$ok" "ulimit -f: run -o FILE fails (EFBIG, not SIGXFSZ): exit 1, FILE as
 ok=1
 test "$rc" -eq 1 && grep -q 'error writing to standard output: File too large' "$tmp/err" && ok=0
 result "$ok" "... run to standard output: exit 1 with the write error"
+
+# /dev/full as standard output of the commands that print without -o
+ok=0
+for args in "eq 3.10 L0=1 Delta=1/3 dir=-1" "eq --list" "eq --help" "--help" \
+            "skate --L0 1 --Delta 1/3 --V 1 --Omega 0.5"; do
+  rc=0
+  # shellcheck disable=SC2086
+  "$prog" $args >/dev/full 2>"$tmp/err" || rc=$?
+  if test "$rc" -ne 1 \
+     || ! grep -q 'error writing .*No space left on device' "$tmp/err"; then
+    say "$args: exit $rc: $(cat "$tmp/err")"; ok=1
+  fi
+done
+result "$ok" "standard output on /dev/full (eq, eq --list, --help, skate): exit 1, the write error named"
 
 # ---- the output is never the scene --------------------------------------------------
 # @S@ the scene, @H@ a hard link to it, @L@ a symbolic link; a sweep's
