@@ -149,7 +149,13 @@ START_TEST (ties_to_even)
       arb_clear (ball);
     }
   /* the named ones */
+  fmpq_zero (q);                        /* 0: +0 */
+  double z = -1.0;
+  ck_assert (chp_cert_round_fmpq (q, &z) == CHAPLYGIN_SUCCESS
+             && same (z, 0.0));
   set_midpoint (q, 0.0, 0x1p-1074);     /* to +0 */
+  check_one (q);
+  fmpq_neg (q, q);                      /* to -0 */
   check_one (q);
   set_midpoint (q, 1.0, nextafter (1.0, 2.0));
   check_one (q);
