@@ -19,6 +19,16 @@ def build(*parts):
     return os.path.join(BUILDDIR, *parts)
 
 
+def child_env():
+    """The environment of a child Python that imports the build tree's
+    package first."""
+    e = dict(os.environ)
+    e['PYTHONPATH'] = os.pathsep.join(
+        [build('python')] + [p for p in e.get('PYTHONPATH', '').split(
+            os.pathsep) if p])
+    return e
+
+
 @pytest.fixture(scope='session')
 def srcdir():
     return SRCDIR

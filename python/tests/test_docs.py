@@ -14,17 +14,9 @@ import pytest
 
 import chaplygin
 from chaplygin import _generated
-from conftest import src, build, public_functions
+from conftest import src, child_env, public_functions
 
 GROUPS = ('smooth', 'discrete', 'massless', 'printed', 'sweep')
-
-
-def env():
-    e = dict(os.environ)
-    e['PYTHONPATH'] = os.pathsep.join(
-        [build('python')] + [p for p in e.get('PYTHONPATH', '').split(
-            os.pathsep) if p])
-    return e
 
 
 def test_readme_command():
@@ -33,7 +25,7 @@ def test_readme_command():
         readme = fh.read()
     m = re.search(r'python3 -c "(import chaplygin;[^"]*)"', readme)
     assert m, 'the README shows no python3 -c "import chaplygin; ..."'
-    r = subprocess.run([sys.executable, '-c', m.group(1)], env=env(),
+    r = subprocess.run([sys.executable, '-c', m.group(1)], env=child_env(),
                        capture_output=True, text=True, cwd='/')
     assert r.returncode == 0, r.stderr
     v = float(r.stdout.strip())
@@ -93,7 +85,7 @@ def test_examples_run(name, tmp_path):
     out = tmp_path / (name + '.png')
     r = subprocess.run([sys.executable, src('python', 'examples',
                                             name + '.py'), str(out)],
-                       env=dict(env(), MPLBACKEND='Agg'), capture_output=True,
+                       env=dict(child_env(), MPLBACKEND='Agg'), capture_output=True,
                        text=True, cwd=str(tmp_path), timeout=300)
     assert r.returncode == 0, r.stderr
     try:

@@ -20,7 +20,7 @@ import pytest
 
 import chaplygin as c
 from chaplygin import _core, discrete as d
-from conftest import build
+from conftest import child_env
 
 # Each call runs for minutes (or forever) unless interrupted.
 CHILD = textwrap.dedent('''
@@ -86,14 +86,6 @@ LATENCY = 1.0       # the issue's bound ("within about a second"); the poll's
                     # period is 0.05 s, measured 0.2 to 64 ms here
 
 
-def env():
-    e = dict(os.environ)
-    e['PYTHONPATH'] = os.pathsep.join(
-        [build('python')] + [p for p in e.get('PYTHONPATH', '').split(
-            os.pathsep) if p])
-    return e
-
-
 class Lines:
     """The child's stdout, line by line, with a deadline."""
 
@@ -121,7 +113,7 @@ def interrupted():
     process's return code and the time it took to end."""
     p = subprocess.Popen([sys.executable, '-c', CHILD] + ENTRY_POINTS,
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                         env=env())
+                         env=child_env())
     lines, out = Lines(p.stdout), {}
     try:
         for name in ENTRY_POINTS:
