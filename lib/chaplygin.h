@@ -75,8 +75,8 @@ extern "C" {
 
 /** The status codes CHAPLYGIN_SUCCESS (0), CHAPLYGIN_EINVAL (1),
    CHAPLYGIN_EDOM (2), CHAPLYGIN_ESTATE (3), CHAPLYGIN_ESPIN (4),
-   CHAPLYGIN_ERANGE (5), CHAPLYGIN_ENOCONV (6) and CHAPLYGIN_ENOMEM (7).  Their
-   meanings are listed in @ref{Errors}.
+   CHAPLYGIN_ERANGE (5), CHAPLYGIN_ENOCONV (6), CHAPLYGIN_ENOMEM (7) and
+   CHAPLYGIN_ECAP (8).  Their meanings are listed in @ref{Errors}.
  */
 enum chaplygin_status
 {
@@ -93,7 +93,9 @@ enum chaplygin_status
   CHAPLYGIN_ERANGE = 5,   /* the result is not representable in double */
   CHAPLYGIN_ENOCONV = 6,  /* quadrature or ODE integration did not reach the
                              requested tolerance */
-  CHAPLYGIN_ENOMEM = 7    /* memory allocation failed */
+  CHAPLYGIN_ENOMEM = 7,   /* memory allocation failed */
+  CHAPLYGIN_ECAP = 8      /* the certified method would need more than its
+                             precision or size cap to prove the result */
 };
 
 /** Return a static English sentence describing @status, or
@@ -127,9 +129,24 @@ typedef enum
                                   default; */
   CHAPLYGIN_QUADRATURE = 1,   /** adaptive Gauss--Kronrod quadrature of the
                                   paper's integrand; */
-  CHAPLYGIN_ODE = 2           /** Runge--Kutta--Prince--Dormand 8(9)
-                                  integration of (3.1). */
+  CHAPLYGIN_ODE = 2,          /** Runge--Kutta--Prince--Dormand 8(9)
+                                  integration of (3.1); */
+  CHAPLYGIN_CERTIFIED = 3     /** exact decisions and Arb balls: every
+                                  result the double nearest to the exact
+                                  value (@pxref{Certified method}); only
+                                  in a build with Arb
+                                  (chaplygin_method_available). */
 } chaplygin_method;
+
+/** Set `*@available` to 1 if @method is built into this library, else 0:
+   CHAPLYGIN_CERTIFIED needs Arb at build time (configure's `--without-arb`
+   leaves it out, and every function then refuses it with CHAPLYGIN_EINVAL);
+   the other methods always are.
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer, or a @method that is none of
+   enum chaplygin_method).
+ */
+int chaplygin_method_available (int method, int *available);
 
 /** The stopping rule of the closed form's Carlson integrals
    (@pxref{Carlson integrals}):
@@ -1248,6 +1265,141 @@ int chaplygin_discrete_segment_flow (const chaplygin_discrete *sys,
                                      const chaplygin_options *opt, double *V,
                                      double *Omega, double *dtheta,
                                      double *dtau);
+
+/** @section Certified orbits
+   @brief Exact state, proven doubles: the certified method's runs.
+   @cindex certified method
+   @cindex correct rounding
+
+   A certified orbit follows the discrete skate from a start given by doubles
+   (or by exact ratios of doubles) with its energy and momentum kept as exact
+   rationals, so that every decision of the model (reversal or not, the end
+   the peg leaves, the spinning state) is the sign of an exact quantity, and
+   the heading, time and peg positions as Arb balls, whose precision is raised
+   (Ziv's strategy) until each result's rounding is decided.  After $n$
+   collisions every double it returns is the double nearest (ties to even) to
+   the exact value of the model for the exact start: nothing is rounded in
+   between.  @xref{Certified method}, for what is proven and how.
+ */
+
+/** The enclosures of a certified step's results: `[0]` the largest double
+   not above the exact value, `[1]` the smallest not below it (equal where the
+   value is a double; the result returned is one of the two).
+   @fields
+   Members not requested are left as they were.
+ */
+typedef struct
+{
+  double E[2];      /** energy $E_n$; */
+  double H[2];      /** momentum $H_n$; */
+  double theta[2];  /** heading $theta_n$ (with CHAPLYGIN_WANT_THETA); */
+  double tau[2];    /** time $tau_n$ (with CHAPLYGIN_WANT_TAU); */
+  double peg_x[2];  /** the peg's first coordinate (with CHAPLYGIN_WANT_PEG); */
+  double peg_y[2];  /** its second coordinate. */
+} chaplygin_certified_bounds;
+
+/** An orbit followed by the certified method: opaque, made by
+   chaplygin_certified_orbit_new or chaplygin_certified_orbit_new_exact,
+   advanced by chaplygin_certified_orbit_step, released by
+   chaplygin_certified_orbit_free.  One orbit is used by one thread at a time;
+   different orbits are independent.
+ */
+typedef struct chaplygin_certified_orbit chaplygin_certified_orbit;
+
+/** Start a certified orbit of the system @sys from the post-collision state
+   @start, whose `dir`, $E$, $H$, `theta`, `tau` and `peg` are taken as exact
+   (its `V` is checked as chaplygin_discrete_step checks it, and not used:
+   $V^+$ is the model's, from $E$ and $H$).  @request (the bits of enum
+   chaplygin_request) says which of heading, time and peg the orbit follows;
+   $E$, $H$ and `dir` always.  `*@orbit` receives the orbit (release it with
+   chaplygin_certified_orbit_free); on a failure it is set to null.
+
+   Domain: as chaplygin_discrete_step's: @sys initialised by
+   chaplygin_discrete_init (its @L0 and @Delta are the exact parameters);
+   $E > 0$ and $(V^+)^2 = 2E - H^2/(1 + l_0^2) > 0$, decided exactly.
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer, `dir`, unknown request bits, or a
+   build without Arb), CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE, CHAPLYGIN_ENOMEM.
+
+   @orbit: (out)
+ */
+int chaplygin_certified_orbit_new (const chaplygin_discrete *sys,
+                                   const chaplygin_discrete_state *start,
+                                   unsigned request,
+                                   chaplygin_certified_orbit **orbit);
+
+/** As chaplygin_certified_orbit_new, for exact rational inputs: each of @L0,
+   @Delta, @E and @H is the ratio `[0]/[1]` of two doubles, taken exactly (so
+   $L_0 = 1/3$ is {1, 3}, not the double nearest to it); @dir, @theta, @tau
+   and @peg as in a chaplygin_discrete_state.
+
+   Domain: finite numerators, finite nonzero denominators; $Delta > 0$;
+   $E > 0$ and $(V^+)^2 > 0$, decided exactly.
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer, @dir, unknown request bits, a
+   build without Arb), CHAPLYGIN_EDOM (non-finite, a zero denominator,
+   $Delta <= 0$), CHAPLYGIN_ESTATE, CHAPLYGIN_ENOMEM.
+
+   @orbit: (out)
+ */
+int chaplygin_certified_orbit_new_exact (const double L0[2],
+                                         const double Delta[2], int dir,
+                                         const double E[2], const double H[2],
+                                         double theta, double tau,
+                                         const double peg[2], unsigned request,
+                                         chaplygin_certified_orbit **orbit);
+
+/** Set the caps of @orbit: @max_bits bounds both the working precision of its
+   balls and the size in bits of its exact energy and momentum (numerator
+   plus denominator).  The default, 1048576 (@pxref{Certified method}),
+   holds several thousand collisions of any orbit; a step that would need more
+   returns CHAPLYGIN_ECAP.
+
+   Domain: $64 <= @max_bits <= 2^30$.
+
+   Errors: CHAPLYGIN_EINVAL.
+ */
+int chaplygin_certified_orbit_cap (chaplygin_certified_orbit *orbit,
+                                   unsigned long max_bits);
+
+/** (B.3) and (B.4), certified: advance @orbit by one collision and write the
+   state after it to @out, the event to @ev and the enclosures to @bounds (@ev
+   and @bounds may be null).  $E$, $H$ and `dir` always, and the heading,
+   time and peg as the orbit's request says (the others are 0 in @out and
+   @bounds); every double is the nearest to the exact value of the model after
+   all the orbit's collisions from its exact start.  `V` in @out, and the
+   event's `Vminus`, `Dc`, `dtheta` (with CHAPLYGIN_WANT_THETA) and `dtau`
+   (with CHAPLYGIN_WANT_TAU) are certified likewise.  A turning point exactly
+   at the far end counts as a reversal, as in chaplygin_discrete_step.
+
+   On a failure the orbit is left as it was before the call and @out, @ev and
+   @bounds are untouched: CHAPLYGIN_ECAP means that this collision (the
+   orbit's count plus 1) could not be certified within the cap; the previous
+   ones were.
+
+   Errors: CHAPLYGIN_EINVAL (null @orbit or @out), CHAPLYGIN_ESPIN (the path
+   reaches $l = 0$ with $2E = H^2$ exactly), CHAPLYGIN_ERANGE (a result beyond
+   the doubles), CHAPLYGIN_ECAP, CHAPLYGIN_ENOMEM.
+
+   @ev: (optional=True)
+   @bounds: (optional=True)
+ */
+int chaplygin_certified_orbit_step (chaplygin_certified_orbit *orbit,
+                                    chaplygin_discrete_state *out,
+                                    chaplygin_discrete_event *ev,
+                                    chaplygin_certified_bounds *bounds);
+
+/** Set `*@n` to the number of collisions @orbit has certified.
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer).
+ */
+int chaplygin_certified_orbit_collisions (const chaplygin_certified_orbit *orbit,
+                                          unsigned long *n);
+
+/** Release @orbit (null is allowed) and everything it holds.  Always
+   CHAPLYGIN_SUCCESS.
+ */
+int chaplygin_certified_orbit_free (chaplygin_certified_orbit *orbit);
 
 /** @section Stability
    @brief (3.9)--(3.12), (4.1), (B.14), Figure 2.

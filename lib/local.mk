@@ -41,13 +41,23 @@ lib_libchaplygin_core_la_SOURCES = \
 	lib/leg.h \
 	lib/leg.c \
 	lib/printed.c
+# the certified method (issue 28): built where configure finds Arb
+if HAVE_ARB
+lib_libchaplygin_core_la_SOURCES += \
+	lib/cert-round.h \
+	lib/cert-round.c \
+	lib/cert-leg.h \
+	lib/cert-leg.c \
+	lib/certified.c
+endif
+EXTRA_DIST += lib/certified.h
 lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(FP_CFLAGS) \
 	$(CODEGEN_CFLAGS) $(GSL_CFLAGS)
-lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
+lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(ARB_LIBS) $(CODE_COVERAGE_LIBS)
 
 lib_LTLIBRARIES = lib/libchaplygin.la
 lib_libchaplygin_la_SOURCES =
-lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(CODE_COVERAGE_LIBS)
+lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(ARB_LIBS) $(CODE_COVERAGE_LIBS)
 lib_libchaplygin_la_LDFLAGS = -version-info 2:0:0 -export-symbols-regex '^chaplygin_'
 include_HEADERS = lib/chaplygin.h
 

@@ -14,6 +14,7 @@
 #include <stddef.h>
 
 #include "chaplygin.h"
+#include "certified.h"
 #include "collision.h"
 #include "eft.h"
 #include "far.h"
@@ -931,6 +932,11 @@ step_general (const chaplygin_discrete *sys,
               const chaplygin_options *opt, chaplygin_discrete_state *out,
               chaplygin_discrete_event *ev)
 {
+#if HAVE_ARB
+  /* exact decisions and balls (certified.c); tol and precision unused */
+  if (opt && opt->method == CHAPLYGIN_CERTIFIED)
+    return chp_certified_step (sys, in, request, out, ev);
+#endif
   return step_core (sys, in, request, opt, out, ev);
 }
 

@@ -28,6 +28,9 @@ chaplygin_strerror (int status)
       return "quadrature or ODE integration did not reach the requested tolerance";
     case CHAPLYGIN_ENOMEM:
       return "memory allocation failed";
+    case CHAPLYGIN_ECAP:
+      return "the certified method would need more than its precision or "
+        "size cap to prove the result";
     default:
       return "unknown status";
     }
@@ -45,4 +48,26 @@ chp_options_resolve (const chaplygin_options *opt, chaplygin_options *out)
     return CHAPLYGIN_EINVAL;
   *out = *o;
   return CHAPLYGIN_SUCCESS;
+}
+
+/* chaplygin_method_available: CHAPLYGIN_CERTIFIED where configure found
+   Arb (HAVE_ARB), the others always. */
+int
+chaplygin_method_available (int method, int *available)
+{
+  if (!available)
+    return CHAPLYGIN_EINVAL;
+  switch (method)
+    {
+    case CHAPLYGIN_CLOSED_FORM:
+    case CHAPLYGIN_QUADRATURE:
+    case CHAPLYGIN_ODE:
+      *available = 1;
+      return CHAPLYGIN_SUCCESS;
+    case CHAPLYGIN_CERTIFIED:
+      *available = HAVE_ARB;
+      return CHAPLYGIN_SUCCESS;
+    default:
+      return CHAPLYGIN_EINVAL;
+    }
 }

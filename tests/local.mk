@@ -101,16 +101,19 @@ endif
 tests_test_carlson_arb_SOURCES = tests/test_carlson.c
 tests_test_carlson_arb_CFLAGS = $(TEST_CFLAGS) -DCHP_TEST_ARB
 tests_test_carlson_arb_LDADD = $(TEST_LDADD) -lquadmath $(ARB_LIBS)
-# the certified method's correct rounding (lib/cert-round.c, issue 28:
-# compiled into its test until the method lands) against MPFR
+# the certified method (issue 28): its correct rounding against MPFR, its
+# orbits against Arb's rigorous integration of the integrands and the
+# exact model
 if HAVE_ARB
-check_PROGRAMS += tests/test_cert_round
-TESTS += tests/test_cert_round
+check_PROGRAMS += tests/test_cert_round tests/test_certified
+TESTS += tests/test_cert_round tests/test_certified
 endif
-tests_test_cert_round_SOURCES = tests/test_cert_round.c lib/cert-round.c \
-	lib/cert-round.h
+tests_test_cert_round_SOURCES = tests/test_cert_round.c
 tests_test_cert_round_CFLAGS = $(TEST_CFLAGS)
 tests_test_cert_round_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_certified_SOURCES = tests/test_certified.c
+tests_test_certified_CFLAGS = $(TEST_CFLAGS)
+tests_test_certified_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 tests_test_quad_SOURCES = tests/test_quad.c
 tests_test_quad_CFLAGS = $(TEST_CFLAGS)
 tests_test_quad_LDADD = $(TEST_LDADD)

@@ -1,0 +1,895 @@
+/* certified.c -- the certified method (issue 28): orbits of the discrete
+   skate with exact energy and momentum and Arb balls for the rest, every
+   returned double the nearest to the model's exact value.  Uses
+   cert-leg.h, cert-round.h and the public types; built only with Arb.
+
+   Method.
+   - State.  The parameters L0, Delta and the post-collision E, H are exact
+     rationals (fmpq): the return map (3.7) is rational, E' = E + C1 H^2,
+     H' = C2 H with C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)),
+     C2 = (1 + b b')/(1 + b^2), b = L0 + D- the end the peg leaves and b' the
+     other.  So E_n and H_n are exact, and every decision is the sign of an
+     exact rational (below).  Their rounding is exact (chp_cert_round_fmpq).
+   - Decisions, from q = 1 - H^2/(2E) and the path la -> lb in l = L0 + D:
+     q > 0: no turning point; q = 0: the spinning state (3.8) if the path
+     reaches l = 0 (CHAPLYGIN_ESPIN), else none; q < 0: a reversal iff the
+     path reaches l = 0 or lb^2 + q <= 0 (a turning point exactly at the far
+     end counts as a reversal, the library's convention, Signs).
+   - Heading, time, peg: sums of Arb balls (cert-leg.c for each leg), at a
+     working precision PREC.  Where a sum's rounding is not decided, PREC is
+     doubled and the orbit replayed from its exact start (Ziv's strategy; the
+     exact state makes the replay the same orbit); past the cap the step
+     fails with CHAPLYGIN_ECAP.  Values that can be rational are recognised:
+     a square root of a rational that is a square (V-, Dc), and the time of a
+     straight motion (H = 0) at a speed sqrt(2E) that is rational, where the
+     time is carried exactly.  Every other result is irrational (an
+     algebraic non-rational number, or the transcendental heading and time
+     of a turning motion), so that a ball eventually decides its rounding;
+     the cap bounds the cost where the balls cannot shrink fast enough. */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include <arb.h>
+#include <flint/fmpq.h>
+
+/* GCC 12 misreads FLINT's fmpq_t (a struct of two fmpz, passed as a
+   one-element array) through the inlined helpers below as 8-byte regions
+   (-Wstringop-overread/-overflow on every fmpq call); no access here
+   leaves an fmpq_t. */
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
+
+#include "chaplygin.h"
+#include "cert-leg.h"
+#include "cert-round.h"
+#include "certified.h"
+
+/* the first working precision (bits), and the default cap */
+enum { PREC_START = 128, CAP_DEFAULT = 1 << 20, CAP_MIN = 64 };
+#define CAP_MAX (1UL << 30)
+
+struct chaplygin_certified_orbit
+{
+  unsigned request;
+  unsigned long cap;            /* max precision and exact size, bits */
+  fmpq_t L0, Delta;
+  fmpq_t l[2];                  /* L0 + D at the ends: L0, L0 + Delta */
+  fmpq_t D[2];                  /* the ends: 0, Delta */
+  /* the exact start, for replays */
+  int dir0;
+  fmpq_t E0, H0;
+  double theta0, tau0, peg0[2];
+  /* the state after n collisions */
+  unsigned long n;
+  slong prec;
+  int dir;
+  fmpq_t E, H;
+  arb_t theta, tau, peg[2];
+  /* a straight motion (H = 0) at a rational speed: the time exactly */
+  int tau_exact;
+  fmpq_t dtau_q, tau_q;
+};
+
+/* ---- exact numbers ---------------------------------------------------- */
+
+/* *Q = the double X exactly (finite). */
+static void
+q_of_double (fmpq_t q, double x)
+{
+  arf_t a;
+  arf_init (a);
+  arf_set_d (a, x);
+  arf_get_fmpq (q, a);
+  arf_clear (a);
+}
+
+/* *Q = R[0]/R[1] exactly; 0 if not finite or R[1] = 0. */
+static int
+q_of_ratio (fmpq_t q, const double r[2])
+{
+  if (!isfinite (r[0]) || !isfinite (r[1]) || r[1] == 0.0)
+    return 0;
+  fmpq_t d;
+  fmpq_init (d);
+  q_of_double (q, r[0]);
+  q_of_double (d, r[1]);
+  fmpq_div (q, q, d);
+  fmpq_clear (d);
+  return 1;
+}
+
+/* Nonzero, with *S = sqrt(Q) exactly, where Q >= 0 is the square of a
+   rational. */
+static int
+q_sqrt_exact (fmpq_t s, const fmpq_t q)
+{
+  if (fmpq_sgn (q) < 0 || !fmpz_is_square (fmpq_numref (q))
+      || !fmpz_is_square (fmpq_denref (q)))
+    return 0;
+  fmpz_sqrt (fmpq_numref (s), fmpq_numref (q));
+  fmpz_sqrt (fmpq_denref (s), fmpq_denref (q));
+  return 1;
+}
+
+/* 2E (1 + l^2) - H^2: the sign of V^2 at l (exact). */
+static void
+g_at (fmpq_t g, const fmpq_t E, const fmpq_t H, const fmpq_t l)
+{
+  fmpq_t t;
+  fmpq_init (t);
+  fmpq_mul (t, l, l);
+  fmpq_add_ui (t, t, 1);
+  fmpq_mul (g, t, E);
+  fmpq_mul_2exp (g, g, 1);
+  fmpq_mul (t, H, H);
+  fmpq_sub (g, g, t);
+  fmpq_clear (t);
+}
+
+/* V^2 = [2E (1 + l^2) - H^2]/(1 + l^2) at l. */
+static void
+v2_at (fmpq_t v2, const fmpq_t E, const fmpq_t H, const fmpq_t l)
+{
+  fmpq_t n;
+  fmpq_init (n);
+  g_at (v2, E, H, l);
+  fmpq_mul (n, l, l);
+  fmpq_add_ui (n, n, 1);
+  fmpq_div (v2, v2, n);
+  fmpq_clear (n);
+}
+
+static slong
+q_bits (const fmpq_t q)
+{
+  return (slong) (fmpz_bits (fmpq_numref (q)) + fmpz_bits (fmpq_denref (q)));
+}
+
+/* ---- rounding --------------------------------------------------------- */
+
+enum { ROUND_OK = 0, ROUND_UNDECIDED = 1, ROUND_RANGE = 2 };
+
+/* *X = the nearest double to every point of B (ROUND_OK); ROUND_RANGE where all of
+   B rounds beyond DBL_MAX; ROUND_UNDECIDED otherwise. */
+static int
+round_ball (const arb_t b, double *x)
+{
+  if (chp_cert_round_arb (b, x))
+    return ROUND_OK;
+  if (!arb_is_finite (b))
+    return ROUND_UNDECIDED;
+  /* |B| >= DBL_MAX + ulp(DBL_MAX)/2 = 2^1024 - 2^970 throughout */
+  arf_t lo, t;
+  arf_init (lo);
+  arf_init (t);
+  arb_get_abs_lbound_arf (lo, b, ARF_PREC_EXACT);
+  arf_one (t);
+  arf_mul_2exp_si (t, t, 1024);
+  arf_t u;
+  arf_init (u);
+  arf_one (u);
+  arf_mul_2exp_si (u, u, 970);
+  arf_sub (t, t, u, ARF_PREC_EXACT, ARF_RND_DOWN);
+  const int over = arf_cmp (lo, t) >= 0;
+  arf_clear (lo);
+  arf_clear (t);
+  arf_clear (u);
+  return over ? ROUND_RANGE : ROUND_UNDECIDED;
+}
+
+/* Enclosure doubles of the ball B: below and above every point. */
+static void
+ball_bounds (const arb_t b, double out[2])
+{
+  arf_t lo, hi;
+  arf_init (lo);
+  arf_init (hi);
+  arb_get_interval_arf (lo, hi, b, ARF_PREC_EXACT);
+  out[0] = arf_get_d (lo, ARF_RND_FLOOR);
+  out[1] = arf_get_d (hi, ARF_RND_CEIL);
+  arf_clear (lo);
+  arf_clear (hi);
+}
+
+/* *X = Q rounded, OUT its enclosure (may be null). */
+static int
+round_q (const fmpq_t q, double *x, double out[2])
+{
+  int s = chp_cert_round_fmpq (q, x);
+  if (s != CHAPLYGIN_SUCCESS || !out)
+    return s;
+  arb_t b;
+  arb_init (b);
+  arb_set_fmpq (b, q, 128);
+  ball_bounds (b, out);
+  arb_clear (b);
+  /* the ball of 128 bits may reach past X's neighbours only for an exact
+     double X, where the bounds are X itself */
+  fmpq_t t;
+  fmpq_init (t);
+  q_of_double (t, *x);
+  if (fmpq_equal (t, q))
+    out[0] = out[1] = *x;
+  fmpq_clear (t);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* ---- one step, exactly ------------------------------------------------ */
+
+/* What a step decides and needs, from the exact state (dir, E, H). */
+typedef struct
+{
+  int start, leave, arrive;     /* end indices: 0 front, 1 rear */
+  int reversal;
+  fmpq_t q;                     /* 1 - H^2/(2E) */
+  fmpq_t E1, H1;                /* after the collision */
+} step_plan;
+
+static void
+plan_init (step_plan *p)
+{
+  fmpq_init (p->q);
+  fmpq_init (p->E1);
+  fmpq_init (p->H1);
+}
+
+static void
+plan_clear (step_plan *p)
+{
+  fmpq_clear (p->q);
+  fmpq_clear (p->E1);
+  fmpq_clear (p->H1);
+}
+
+/* Plan the step of O from (DIR, E, H): CHAPLYGIN_SUCCESS or ESPIN. */
+static int
+plan_step (const chaplygin_certified_orbit *o, int dir, const fmpq_t E,
+           const fmpq_t H, step_plan *p)
+{
+  const int s = dir > 0 ? 0 : 1, f = 1 - s;
+  const fmpq *la = o->l[s], *lb = o->l[f];
+  fmpq_t t, u;
+  fmpq_init (t);
+  fmpq_init (u);
+  /* q = 1 - H^2/(2E) */
+  fmpq_mul (t, H, H);
+  fmpq_div (t, t, E);
+  fmpq_div_2exp (t, t, 1);
+  fmpq_one (p->q);
+  fmpq_sub (p->q, p->q, t);
+  const int sq = fmpq_sgn (p->q);
+  const int reaches0 = fmpq_sgn (la) * fmpq_sgn (lb) <= 0;
+  p->start = s;
+  p->reversal = 0;
+  if (sq == 0 && reaches0)
+    {
+      fmpq_clear (t);
+      fmpq_clear (u);
+      return CHAPLYGIN_ESPIN;
+    }
+  if (sq < 0)
+    {
+      fmpq_mul (t, lb, lb);
+      fmpq_add (t, t, p->q);
+      p->reversal = reaches0 || fmpq_sgn (t) <= 0;
+    }
+  p->leave = p->reversal ? s : f;
+  p->arrive = 1 - p->leave;
+  /* (3.7) at the end the peg leaves: b = l[leave], b' = l[arrive] */
+  const fmpq *b = o->l[p->leave], *bp = o->l[p->arrive];
+  fmpq_mul (t, b, b);
+  fmpq_add_ui (t, t, 1);        /* 1 + b^2 */
+  fmpq_mul (u, b, bp);
+  fmpq_add_ui (u, u, 1);        /* 1 + b b' */
+  fmpq_div (u, u, t);           /* C2 */
+  fmpq_mul (p->H1, H, u);
+  fmpq_mul (u, bp, bp);
+  fmpq_add_ui (u, u, 1);
+  fmpq_mul (u, u, t);
+  fmpq_mul (u, u, t);
+  fmpq_mul_2exp (u, u, 1);      /* 2 (1 + b^2)^2 (1 + b'^2) */
+  fmpq_mul (t, o->Delta, H);
+  fmpq_mul (t, t, t);
+  fmpq_div (t, t, u);           /* -C1 H^2 */
+  fmpq_sub (p->E1, E, t);
+  fmpq_clear (t);
+  fmpq_clear (u);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The balls of the step: heading and time increments of the leg. */
+static void
+leg_balls (const chaplygin_certified_orbit *o, const step_plan *p,
+           const fmpq_t E, const fmpq_t H, slong prec, arb_t dtheta,
+           arb_t dtau)
+{
+  arb_t I1, I2, s;
+  arb_init (I1);
+  arb_init (I2);
+  arb_init (s);
+  chp_cert_leg (I1, I2, p->q, o->l[p->start], o->l[1 - p->start],
+                p->reversal, prec);
+  arb_set_fmpq (s, E, prec);
+  arb_mul_2exp_si (s, s, 1);
+  arb_rsqrt (s, s, prec);       /* 1/sqrt(2E) */
+  arb_mul (dtau, I2, s, prec);
+  arb_set_fmpq (dtheta, H, prec);
+  arb_mul (dtheta, dtheta, s, prec);
+  arb_mul (dtheta, dtheta, I1, prec);
+  arb_clear (I1);
+  arb_clear (I2);
+  arb_clear (s);
+}
+
+/* The running sums after the step P from (E, H): heading THETA1, time
+   TAU1 and (as O's request says) the peg, PG0 and PG1 updated in place;
+   the increments DTH, DTA; at PREC. */
+static void
+sums_after (const chaplygin_certified_orbit *o, const step_plan *p,
+            const fmpq_t E, const fmpq_t H, const arb_t theta,
+            const arb_t tau, slong prec, arb_t theta1, arb_t tau1,
+            arb_t pg0, arb_t pg1, arb_t dth, arb_t dta)
+{
+  leg_balls (o, p, E, H, prec, dth, dta);
+  arb_add (theta1, theta, dth, prec);
+  arb_add (tau1, tau, dta, prec);
+  if (o->request & CHAPLYGIN_WANT_PEG)
+    {
+      /* P' = P + (D- - D+') (cos theta', sin theta') */
+      arb_t c, sn, d;
+      fmpq_t dd;
+      arb_init (c);
+      arb_init (sn);
+      arb_init (d);
+      fmpq_init (dd);
+      fmpq_sub (dd, o->D[p->leave], o->D[p->arrive]);
+      arb_set_fmpq (d, dd, prec);
+      arb_sin_cos (sn, c, theta1, prec);
+      arb_addmul (pg0, c, d, prec);
+      arb_addmul (pg1, sn, d, prec);
+      arb_clear (c);
+      arb_clear (sn);
+      arb_clear (d);
+      fmpq_clear (dd);
+    }
+}
+
+/* ---- the orbit -------------------------------------------------------- */
+
+static void
+orbit_reset (chaplygin_certified_orbit *o)
+{
+  o->n = 0;
+  o->dir = o->dir0;
+  fmpq_set (o->E, o->E0);
+  fmpq_set (o->H, o->H0);
+  arb_set_d (o->theta, o->theta0);
+  arb_set_d (o->tau, o->tau0);
+  arb_set_d (o->peg[0], o->peg0[0]);
+  arb_set_d (o->peg[1], o->peg0[1]);
+  if (o->tau_exact)
+    q_of_double (o->tau_q, o->tau0);
+}
+
+/* Advance O by one collision at O->prec, committing (used by replays; the
+   caller knows the step succeeds). */
+static void
+orbit_advance (chaplygin_certified_orbit *o)
+{
+  step_plan p;
+  arb_t dth, dta;
+  plan_init (&p);
+  arb_init (dth);
+  arb_init (dta);
+  (void) plan_step (o, o->dir, o->E, o->H, &p);
+  sums_after (o, &p, o->E, o->H, o->theta, o->tau, o->prec, o->theta,
+              o->tau, o->peg[0], o->peg[1], dth, dta);
+  if (o->tau_exact)
+    fmpq_add (o->tau_q, o->tau_q, o->dtau_q);
+  fmpq_swap (o->E, p.E1);
+  fmpq_swap (o->H, p.H1);
+  if (p.reversal)
+    o->dir = -o->dir;
+  o->n++;
+  plan_clear (&p);
+  arb_clear (dth);
+  arb_clear (dta);
+}
+
+/* Replay O from its start to its current count at precision PREC. */
+static void
+orbit_replay (chaplygin_certified_orbit *o, slong prec)
+{
+  const unsigned long n = o->n;
+  o->prec = prec;
+  orbit_reset (o);
+  while (o->n < n)
+    orbit_advance (o);
+}
+
+/* A new orbit with the exact parameters and start (checked by the caller
+   for finiteness): validates the rest.  *ORBIT on success. */
+static int
+orbit_make (const fmpq_t L0, const fmpq_t Delta, int dir, const fmpq_t E,
+            const fmpq_t H, double theta, double tau, const double peg[2],
+            unsigned request, chaplygin_certified_orbit **orbit)
+{
+  if (fmpq_sgn (Delta) <= 0)
+    return CHAPLYGIN_EDOM;
+  if (fmpq_sgn (E) <= 0)
+    return CHAPLYGIN_ESTATE;
+  chaplygin_certified_orbit *o = malloc (sizeof *o);
+  if (!o)
+    return CHAPLYGIN_ENOMEM;
+  if (request & CHAPLYGIN_WANT_PEG)
+    request |= CHAPLYGIN_WANT_THETA;
+  o->request = request;
+  o->cap = CAP_DEFAULT;
+  fmpq_init (o->L0);
+  fmpq_init (o->Delta);
+  fmpq_set (o->L0, L0);
+  fmpq_set (o->Delta, Delta);
+  for (int i = 0; i < 2; i++)
+    {
+      fmpq_init (o->l[i]);
+      fmpq_init (o->D[i]);
+      arb_init (o->peg[i]);
+      o->peg0[i] = peg[i];
+    }
+  fmpq_set (o->l[0], L0);
+  fmpq_add (o->l[1], L0, Delta);
+  fmpq_set (o->D[1], Delta);
+  o->dir0 = dir;
+  fmpq_init (o->E0);
+  fmpq_init (o->H0);
+  fmpq_init (o->E);
+  fmpq_init (o->H);
+  fmpq_set (o->E0, E);
+  fmpq_set (o->H0, H);
+  o->theta0 = theta;
+  o->tau0 = tau;
+  arb_init (o->theta);
+  arb_init (o->tau);
+  fmpq_init (o->dtau_q);
+  fmpq_init (o->tau_q);
+  /* a straight motion at a rational speed: dtau = Delta/sqrt(2E) exactly */
+  fmpq_t s;
+  fmpq_init (s);
+  fmpq_mul_2exp (s, E, 1);
+  o->tau_exact = fmpq_is_zero (H) && q_sqrt_exact (s, s);
+  if (o->tau_exact)
+    fmpq_div (o->dtau_q, Delta, s);
+  fmpq_clear (s);
+  o->prec = PREC_START;
+  orbit_reset (o);
+  /* (V+)^2 > 0 at the start, exactly */
+  fmpq_t g;
+  fmpq_init (g);
+  g_at (g, E, H, o->l[dir > 0 ? 0 : 1]);
+  const int ok = fmpq_sgn (g) > 0;
+  fmpq_clear (g);
+  if (!ok)
+    {
+      chaplygin_certified_orbit_free (o);
+      return CHAPLYGIN_ESTATE;
+    }
+  *orbit = o;
+  return CHAPLYGIN_SUCCESS;
+}
+
+static int
+request_ok (unsigned request)
+{
+  return (request & ~(unsigned) CHAPLYGIN_WANT_ALL) == 0;
+}
+
+int
+chaplygin_certified_orbit_new (const chaplygin_discrete *sys,
+                               const chaplygin_discrete_state *start,
+                               unsigned request,
+                               chaplygin_certified_orbit **orbit)
+{
+  if (orbit)
+    *orbit = NULL;
+  if (!sys || !start || !orbit || !request_ok (request)
+      || (start->dir != 1 && start->dir != -1))
+    return CHAPLYGIN_EINVAL;
+  if (!isfinite (sys->L0) || !isfinite (sys->Delta) || !isfinite (start->E)
+      || !isfinite (start->H) || !isfinite (start->theta)
+      || !isfinite (start->tau) || !isfinite (start->peg[0])
+      || !isfinite (start->peg[1]) || !isfinite (start->V))
+    return CHAPLYGIN_EDOM;
+  if (!(sys->Delta > 0.0))
+    return CHAPLYGIN_EDOM;
+  if (start->V != 0.0 && (start->V > 0.0) != (start->dir > 0))
+    return CHAPLYGIN_ESTATE;
+  fmpq_t L0, Delta, E, H;
+  fmpq_init (L0);
+  fmpq_init (Delta);
+  fmpq_init (E);
+  fmpq_init (H);
+  q_of_double (L0, sys->L0);
+  q_of_double (Delta, sys->Delta);
+  q_of_double (E, start->E);
+  q_of_double (H, start->H);
+  int status = orbit_make (L0, Delta, start->dir, E, H, start->theta,
+                           start->tau, start->peg, request, orbit);
+  if (status == CHAPLYGIN_SUCCESS && start->V != 0.0)
+    {
+      /* a V+ left from another state: as chaplygin_discrete_step, refused
+         where it differs from E and H's by more than 2^-20 of 2E */
+      fmpq_t v2, d, e;
+      fmpq_init (v2);
+      fmpq_init (d);
+      fmpq_init (e);
+      v2_at (v2, E, H, (*orbit)->l[start->dir > 0 ? 0 : 1]);
+      q_of_double (d, start->V);
+      fmpq_mul (d, d, d);
+      fmpq_sub (d, d, v2);
+      fmpq_abs (d, d);
+      fmpq_mul_2exp (e, E, 1);
+      fmpq_div_2exp (e, e, 20);
+      if (fmpq_cmp (d, e) > 0)
+        {
+          chaplygin_certified_orbit_free (*orbit);
+          *orbit = NULL;
+          status = CHAPLYGIN_ESTATE;
+        }
+      fmpq_clear (v2);
+      fmpq_clear (d);
+      fmpq_clear (e);
+    }
+  fmpq_clear (L0);
+  fmpq_clear (Delta);
+  fmpq_clear (E);
+  fmpq_clear (H);
+  return status;
+}
+
+int
+chaplygin_certified_orbit_new_exact (const double L0[2],
+                                     const double Delta[2], int dir,
+                                     const double E[2], const double H[2],
+                                     double theta, double tau,
+                                     const double peg[2], unsigned request,
+                                     chaplygin_certified_orbit **orbit)
+{
+  if (orbit)
+    *orbit = NULL;
+  if (!L0 || !Delta || !E || !H || !peg || !orbit || !request_ok (request)
+      || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  fmpq_t qL, qD, qE, qH;
+  fmpq_init (qL);
+  fmpq_init (qD);
+  fmpq_init (qE);
+  fmpq_init (qH);
+  int status = CHAPLYGIN_EDOM;
+  if (q_of_ratio (qL, L0) && q_of_ratio (qD, Delta) && q_of_ratio (qE, E)
+      && q_of_ratio (qH, H) && isfinite (theta) && isfinite (tau)
+      && isfinite (peg[0]) && isfinite (peg[1]))
+    status = orbit_make (qL, qD, dir, qE, qH, theta, tau, peg, request,
+                         orbit);
+  fmpq_clear (qL);
+  fmpq_clear (qD);
+  fmpq_clear (qE);
+  fmpq_clear (qH);
+  return status;
+}
+
+int
+chaplygin_certified_orbit_cap (chaplygin_certified_orbit *orbit,
+                               unsigned long max_bits)
+{
+  if (!orbit || max_bits < CAP_MIN || max_bits > CAP_MAX)
+    return CHAPLYGIN_EINVAL;
+  orbit->cap = max_bits;
+  return CHAPLYGIN_SUCCESS;
+}
+
+int
+chaplygin_certified_orbit_collisions (const chaplygin_certified_orbit *orbit,
+                                      unsigned long *n)
+{
+  if (!orbit || !n)
+    return CHAPLYGIN_EINVAL;
+  *n = orbit->n;
+  return CHAPLYGIN_SUCCESS;
+}
+
+int
+chaplygin_certified_orbit_free (chaplygin_certified_orbit *o)
+{
+  if (!o)
+    return CHAPLYGIN_SUCCESS;
+  fmpq_clear (o->L0);
+  fmpq_clear (o->Delta);
+  for (int i = 0; i < 2; i++)
+    {
+      fmpq_clear (o->l[i]);
+      fmpq_clear (o->D[i]);
+      arb_clear (o->peg[i]);
+    }
+  fmpq_clear (o->E0);
+  fmpq_clear (o->H0);
+  fmpq_clear (o->E);
+  fmpq_clear (o->H);
+  arb_clear (o->theta);
+  arb_clear (o->tau);
+  fmpq_clear (o->dtau_q);
+  fmpq_clear (o->tau_q);
+  free (o);
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* ---- the certified step's outputs ------------------------------------- */
+
+/* The step's results, rounded. */
+typedef struct
+{
+  chaplygin_discrete_state st;
+  chaplygin_discrete_event ev;
+  chaplygin_certified_bounds b;
+} step_out;
+
+/* V- (sign S) and, on a reversal, Dc: the square roots of exact rationals,
+   exact where those are squares, else balls at PREC. */
+static int
+round_algebraic (const chaplygin_certified_orbit *o, const step_plan *p,
+                 slong prec, step_out *r)
+{
+  fmpq_t v2, s;
+  arb_t b;
+  fmpq_init (v2);
+  fmpq_init (s);
+  arb_init (b);
+  int rc = ROUND_OK;
+  const int sign = p->reversal ? -o->dir : o->dir;
+  v2_at (v2, o->E, o->H, o->l[p->leave]);
+  if (q_sqrt_exact (s, v2))
+    {
+      if (sign < 0)
+        fmpq_neg (s, s);
+      rc = round_q (s, &r->ev.Vminus, NULL) == CHAPLYGIN_SUCCESS
+        ? ROUND_OK : ROUND_RANGE;
+    }
+  else
+    {
+      arb_set_fmpq (b, v2, prec);
+      arb_sqrt (b, b, prec);
+      if (sign < 0)
+        arb_neg (b, b);
+      rc = round_ball (b, &r->ev.Vminus);
+    }
+  r->ev.Dc = 0.0;
+  if (rc == ROUND_OK && p->reversal)
+    {
+      /* Dc = side sqrt(-q) - L0, on the side of the start */
+      const int side = fmpq_sgn (o->l[p->start]);
+      fmpq_neg (v2, p->q);
+      if (q_sqrt_exact (s, v2))
+        {
+          if (side < 0)
+            fmpq_neg (s, s);
+          fmpq_sub (s, s, o->L0);
+          rc = round_q (s, &r->ev.Dc, NULL) == CHAPLYGIN_SUCCESS
+            ? ROUND_OK : ROUND_RANGE;
+        }
+      else
+        {
+          arb_t L;
+          arb_init (L);
+          arb_set_fmpq (b, v2, prec);
+          arb_sqrt (b, b, prec);
+          if (side < 0)
+            arb_neg (b, b);
+          arb_set_fmpq (L, o->L0, prec);
+          arb_sub (b, b, L, prec);
+          rc = round_ball (b, &r->ev.Dc);
+          arb_clear (L);
+        }
+    }
+  fmpq_clear (v2);
+  fmpq_clear (s);
+  arb_clear (b);
+  return rc;
+}
+
+/* Round ball B into *X and its bounds OUT (may be null); accumulate the
+   worst outcome into *RC. */
+static void
+take (const arb_t b, double *x, double out[2], int *rc)
+{
+  int r = round_ball (b, x);
+  if (r == ROUND_OK && out)
+    ball_bounds (b, out);
+  if (r > *rc)
+    *rc = r;
+}
+
+/* Try the step of O at its precision: ROUND_OK with *R filled, ROUND_UNDECIDED,
+   ROUND_RANGE; *ESPIN set where the motion ends in the spinning state. */
+static int
+try_step (const chaplygin_certified_orbit *o, step_out *r, int *espin)
+{
+  const slong prec = o->prec;
+  step_plan p;
+  plan_init (&p);
+  *espin = plan_step (o, o->dir, o->E, o->H, &p) == CHAPLYGIN_ESPIN;
+  if (*espin)
+    {
+      plan_clear (&p);
+      return ROUND_OK;
+    }
+  int rc = ROUND_OK;
+  /* E, H exactly */
+  if (round_q (p.E1, &r->st.E, r->b.E) != CHAPLYGIN_SUCCESS
+      || round_q (p.H1, &r->st.H, r->b.H) != CHAPLYGIN_SUCCESS)
+    rc = ROUND_RANGE;
+  r->st.dir = p.reversal ? -o->dir : o->dir;
+  r->ev.reversal = p.reversal;
+  if (rc == ROUND_OK
+      && (round_q (o->D[p.leave], &r->ev.Dminus, NULL) != CHAPLYGIN_SUCCESS
+          || round_q (o->D[p.arrive], &r->ev.Dplus, NULL)
+          != CHAPLYGIN_SUCCESS))
+    rc = ROUND_RANGE;
+  if (rc == ROUND_OK)
+    {
+      int a = round_algebraic (o, &p, prec, r);
+      if (a > rc)
+        rc = a;
+    }
+  r->st.V = r->ev.Vminus;
+  /* the sums */
+  arb_t th, ta, p0, p1, dth, dta;
+  arb_init (th);
+  arb_init (ta);
+  arb_init (p0);
+  arb_init (p1);
+  arb_init (dth);
+  arb_init (dta);
+  arb_set (p0, o->peg[0]);
+  arb_set (p1, o->peg[1]);
+  r->st.theta = r->st.tau = 0.0;
+  r->st.peg[0] = r->st.peg[1] = 0.0;
+  r->ev.dtheta = r->ev.dtau = 0.0;
+  if (rc == ROUND_OK && (o->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU)))
+    {
+      sums_after (o, &p, o->E, o->H, o->theta, o->tau, prec, th, ta, p0,
+                  p1, dth, dta);
+      if (o->request & CHAPLYGIN_WANT_THETA)
+        {
+          take (th, &r->st.theta, r->b.theta, &rc);
+          take (dth, &r->ev.dtheta, NULL, &rc);
+        }
+      if (o->request & CHAPLYGIN_WANT_TAU)
+        {
+          if (o->tau_exact)
+            {
+              fmpq_t t;
+              fmpq_init (t);
+              fmpq_add (t, o->tau_q, o->dtau_q);
+              if (round_q (t, &r->st.tau, r->b.tau) != CHAPLYGIN_SUCCESS
+                  || round_q (o->dtau_q, &r->ev.dtau, NULL)
+                  != CHAPLYGIN_SUCCESS)
+                rc = ROUND_RANGE;
+              fmpq_clear (t);
+            }
+          else
+            {
+              take (ta, &r->st.tau, r->b.tau, &rc);
+              take (dta, &r->ev.dtau, NULL, &rc);
+            }
+        }
+      if (o->request & CHAPLYGIN_WANT_PEG)
+        {
+          take (p0, &r->st.peg[0], r->b.peg_x, &rc);
+          take (p1, &r->st.peg[1], r->b.peg_y, &rc);
+        }
+    }
+  arb_clear (th);
+  arb_clear (ta);
+  arb_clear (p0);
+  arb_clear (p1);
+  arb_clear (dth);
+  arb_clear (dta);
+  plan_clear (&p);
+  return rc;
+}
+
+int
+chaplygin_certified_orbit_step (chaplygin_certified_orbit *o,
+                                chaplygin_discrete_state *out,
+                                chaplygin_discrete_event *ev,
+                                chaplygin_certified_bounds *bounds)
+{
+  if (!o || !out)
+    return CHAPLYGIN_EINVAL;
+  /* the exact state's size: its growth is the cost of exactness */
+  if ((unsigned long) (q_bits (o->E) + q_bits (o->H)) > o->cap)
+    return CHAPLYGIN_ECAP;
+  step_out r;
+  int espin;
+  for (;;)
+    {
+      const int rc = try_step (o, &r, &espin);
+      if (espin)
+        return CHAPLYGIN_ESPIN;
+      if (rc == ROUND_RANGE)
+        return CHAPLYGIN_ERANGE;
+      if (rc == ROUND_OK)
+        break;
+      /* Ziv: twice the precision, the orbit replayed from its start */
+      if ((unsigned long) o->prec * 2 > o->cap)
+        return CHAPLYGIN_ECAP;
+      orbit_replay (o, o->prec * 2);
+    }
+  orbit_advance (o);
+  *out = r.st;
+  if (ev)
+    *ev = r.ev;
+  if (bounds)
+    {
+      unsigned want = o->request;
+      bounds->E[0] = r.b.E[0];
+      bounds->E[1] = r.b.E[1];
+      bounds->H[0] = r.b.H[0];
+      bounds->H[1] = r.b.H[1];
+      if (want & CHAPLYGIN_WANT_THETA)
+        {
+          bounds->theta[0] = r.b.theta[0];
+          bounds->theta[1] = r.b.theta[1];
+        }
+      if (want & CHAPLYGIN_WANT_TAU)
+        {
+          bounds->tau[0] = r.b.tau[0];
+          bounds->tau[1] = r.b.tau[1];
+        }
+      if (want & CHAPLYGIN_WANT_PEG)
+        {
+          bounds->peg_x[0] = r.b.peg_x[0];
+          bounds->peg_x[1] = r.b.peg_x[1];
+          bounds->peg_y[0] = r.b.peg_y[0];
+          bounds->peg_y[1] = r.b.peg_y[1];
+        }
+    }
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* ---- chaplygin_discrete_step's certified method ----------------------- */
+
+int
+chp_certified_step (const chaplygin_discrete *sys,
+                    const chaplygin_discrete_state *in, unsigned request,
+                    chaplygin_discrete_state *out,
+                    chaplygin_discrete_event *ev)
+{
+  if (!out)
+    return CHAPLYGIN_EINVAL;
+  if (request & CHAPLYGIN_WANT_PEG)
+    request |= CHAPLYGIN_WANT_THETA;
+  chaplygin_certified_orbit *o;
+  int status = chaplygin_certified_orbit_new (sys, in, request, &o);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status;
+  chaplygin_discrete_state next;
+  status = chaplygin_certified_orbit_step (o, &next, ev, NULL);
+  chaplygin_certified_orbit_free (o);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status;
+  /* the fields not requested are the input's, as for the other methods */
+  if (!(request & CHAPLYGIN_WANT_THETA))
+    next.theta = in->theta;
+  if (!(request & CHAPLYGIN_WANT_TAU))
+    next.tau = in->tau;
+  if (!(request & CHAPLYGIN_WANT_PEG))
+    {
+      next.peg[0] = in->peg[0];
+      next.peg[1] = in->peg[1];
+    }
+  *out = next;
+  return CHAPLYGIN_SUCCESS;
+}

@@ -1,0 +1,769 @@
+/* test_certified.c -- the certified method (lib/certified.c, cert-leg.c;
+   issue 28) against a separate route written here:
+   - E' and H' from the phase form of the collision, (3.6) and (3.3):
+     Omega+ = [1 + L0 (L0 + Delta)] Omega-/(1 + l+^2), E' = V-^2/2 +
+     (1 + l+^2) Omega+^2/2, in exact rationals (the library uses
+     E + C1 H^2, H' = C2 H);
+   - the reversal decided by the minimum of V^2 over the path (the library:
+     the sign of q, then of lb^2 + q);
+   - heading and time by Arb's rigorous numerical integration
+     (acb_calc_integrate) of the paper's integrands in D, |H|/sqrt(Q(D))
+     and 1/|V(D)| (a reversal's leg with D - Dc = (D+ - Dc) w^2, which
+     removes the square-root singularity), where the library uses
+     Carlson's R_F and R_D of the reduced forms.
+   The route's balls (at 300 bits) must decide each rounding; the library's
+   doubles must then equal them: 0 ulps.  Built where configure found Arb. */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+
+#include <acb_calc.h>
+#include <arb.h>
+#include <flint/fmpq.h>
+
+#include "testutil.h"
+#include "cert-round.h"
+#include "chaplygin.h"
+
+enum { RP = 300 };              /* the reference route's precision */
+
+/* ---- the reference route ---------------------------------------------- */
+
+typedef struct
+{
+  arb_t L0, twoE, H2, absH;
+  int kind;                     /* 0 heading, 1 time */
+  int rev;                      /* reversal leg: w-substituted */
+  arb_t la, lt;                 /* leg start and turning point (rev) */
+} integrand;
+
+/* f(D) on a straight leg: l = L0 + D; heading |H|/sqrt((1+l^2) g), time
+   sqrt(1+l^2)/sqrt(g), g = 2E (1 + l^2) - H^2; on a reversal leg the
+   variable is w, l = lt + (la - lt) w^2 and the factors of w cancel:
+   |dl|/sqrt(g) = 2 |la - lt| dw/sqrt(2E (la - lt)(l + lt)). */
+static int
+f_leg (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
+{
+  const integrand *p = param;
+  const int an = order != 0;
+  acb_t l, n, g, t;
+  acb_init (l);
+  acb_init (n);
+  acb_init (g);
+  acb_init (t);
+  if (!p->rev)
+    {
+      acb_add_arb (l, z, p->L0, prec);
+      acb_sqr (n, l, prec);
+      acb_add_ui (n, n, 1, prec);       /* 1 + l^2 */
+      acb_mul_arb (g, n, p->twoE, prec);
+      acb_sub_arb (g, g, p->H2, prec);
+      acb_rsqrt_analytic (g, g, an, prec);
+    }
+  else
+    {
+      arb_t d;
+      arb_init (d);
+      arb_sub (d, p->la, p->lt, prec);
+      acb_sqr (l, z, prec);
+      acb_mul_arb (l, l, d, prec);
+      acb_add_arb (l, l, p->lt, prec);
+      acb_sqr (n, l, prec);
+      acb_add_ui (n, n, 1, prec);
+      acb_add_arb (g, l, p->lt, prec);
+      acb_mul_arb (g, g, d, prec);
+      acb_mul_arb (g, g, p->twoE, prec);
+      acb_rsqrt_analytic (g, g, an, prec);
+      arb_abs (d, d);
+      arb_mul_2exp_si (d, d, 1);
+      acb_mul_arb (g, g, d, prec);
+      arb_clear (d);
+    }
+  acb_sqrt_analytic (t, n, an, prec);
+  if (p->kind == 0)
+    {
+      acb_div (g, g, t, prec);
+      acb_mul_arb (g, g, p->absH, prec);
+    }
+  else
+    acb_mul (g, g, t, prec);
+  acb_set (res, g);
+  acb_clear (l);
+  acb_clear (n);
+  acb_clear (g);
+  acb_clear (t);
+  return 0;
+}
+
+/* Integral of P's integrand from A to B (real) into R. */
+static void
+integrate (arb_t r, integrand *p, const arb_t A, const arb_t B)
+{
+  acb_t res, a, b;
+  mag_t tol;
+  acb_calc_integrate_opt_t opt;
+  acb_init (res);
+  acb_init (a);
+  acb_init (b);
+  mag_init (tol);
+  acb_calc_integrate_opt_init (opt);
+  acb_set_arb (a, A);
+  acb_set_arb (b, B);
+  mag_set_ui_2exp_si (tol, 1, -RP + 20);
+  acb_calc_integrate (res, f_leg, p, a, b, RP - 20, tol, opt, RP);
+  arb_set (r, acb_realref (res));
+  arb_abs (r, r);
+  acb_clear (res);
+  acb_clear (a);
+  acb_clear (b);
+  mag_clear (tol);
+}
+
+/* The exact model, stepped by the reference route. */
+typedef struct
+{
+  fmpq_t L0, Delta, E, H;
+  int dir;
+  arb_t theta, tau, peg[2];
+} ref_orbit;
+
+static void
+ref_init (ref_orbit *r, const double L0[2], const double Delta[2], int dir,
+          const double E[2], const double H[2], double theta, double tau)
+{
+  fmpq_init (r->L0);
+  fmpq_init (r->Delta);
+  fmpq_init (r->E);
+  fmpq_init (r->H);
+  fmpq_set_si (r->L0, 0, 1);
+  const double *src[4] = { L0, Delta, E, H };
+  fmpq *dst[4] = { r->L0, r->Delta, r->E, r->H };
+  for (int i = 0; i < 4; i++)
+    {
+      fmpq_t a, b;
+      arf_t t;
+      fmpq_init (a);
+      fmpq_init (b);
+      arf_init (t);
+      arf_set_d (t, src[i][0]);
+      arf_get_fmpq (a, t);
+      arf_set_d (t, src[i][1]);
+      arf_get_fmpq (b, t);
+      fmpq_div (dst[i], a, b);
+      fmpq_clear (a);
+      fmpq_clear (b);
+      arf_clear (t);
+    }
+  r->dir = dir;
+  arb_init (r->theta);
+  arb_init (r->tau);
+  arb_init (r->peg[0]);
+  arb_init (r->peg[1]);
+  arb_set_d (r->theta, theta);
+  arb_set_d (r->tau, tau);
+}
+
+static void
+ref_clear (ref_orbit *r)
+{
+  fmpq_clear (r->L0);
+  fmpq_clear (r->Delta);
+  fmpq_clear (r->E);
+  fmpq_clear (r->H);
+  arb_clear (r->theta);
+  arb_clear (r->tau);
+  arb_clear (r->peg[0]);
+  arb_clear (r->peg[1]);
+}
+
+/* One step of the reference: *REV the reversal; *SPIN where the path
+   reaches V = 0 at l = 0 (the spinning state); DTH, DTA the increments,
+   VM2 = V-^2 exactly, DC the turning point's D (a ball). */
+static void
+ref_step (ref_orbit *r, int *rev, int *spin, arb_t dth, arb_t dta,
+          fmpq_t vm2, arb_t dc)
+{
+  fmpq_t la, lb, lmin2, g, t, lp, lm, Om, E1, H1;
+  fmpq *v[] = { la, lb, lmin2, g, t, lp, lm, Om, E1, H1 };
+  for (int i = 0; i < 10; i++)
+    fmpq_init (v[i]);
+  /* the ends in l: the start and the far end */
+  fmpq_set (la, r->L0);
+  fmpq_add (lb, r->L0, r->Delta);
+  if (r->dir < 0)
+    fmpq_swap (la, lb);
+  /* min of l^2 over the path, and 2E (1 + lmin^2) - H^2 */
+  if (fmpq_sgn (la) * fmpq_sgn (lb) <= 0)
+    fmpq_zero (lmin2);
+  else
+    {
+      fmpq_mul (lmin2, la, la);
+      fmpq_mul (t, lb, lb);
+      if (fmpq_cmp (t, lmin2) < 0)
+        fmpq_set (lmin2, t);
+    }
+  fmpq_add_ui (g, lmin2, 1);
+  fmpq_mul (g, g, r->E);
+  fmpq_mul_2exp (g, g, 1);
+  fmpq_mul (t, r->H, r->H);
+  fmpq_sub (g, g, t);
+  *spin = fmpq_is_zero (g) && fmpq_is_zero (lmin2);
+  *rev = !*spin && fmpq_sgn (g) <= 0;
+  if (*spin)
+    goto done;
+  integrand p;
+  arb_init (p.L0);
+  arb_init (p.twoE);
+  arb_init (p.H2);
+  arb_init (p.absH);
+  arb_init (p.la);
+  arb_init (p.lt);
+  arb_set_fmpq (p.L0, r->L0, RP);
+  arb_set_fmpq (p.twoE, r->E, RP);
+  arb_mul_2exp_si (p.twoE, p.twoE, 1);
+  fmpq_mul (t, r->H, r->H);
+  arb_set_fmpq (p.H2, t, RP);
+  arb_set_fmpq (p.absH, r->H, RP);
+  arb_abs (p.absH, p.absH);
+  p.rev = *rev;
+  arb_t A, B;
+  arb_init (A);
+  arb_init (B);
+  if (!*rev)
+    {
+      arb_zero (A);
+      arb_set_fmpq (B, r->Delta, RP);
+      p.kind = 0;
+      integrate (dth, &p, A, B);
+      p.kind = 1;
+      integrate (dta, &p, A, B);
+    }
+  else
+    {
+      /* lt = sgn(la) sqrt(H^2/(2E) - 1) */
+      fmpq_div (t, t, r->E);
+      fmpq_div_2exp (t, t, 1);
+      fmpq_sub_ui (t, t, 1);
+      arb_set_fmpq (p.lt, t, RP);
+      arb_sqrt (p.lt, p.lt, RP);
+      if (fmpq_sgn (la) < 0)
+        arb_neg (p.lt, p.lt);
+      arb_set_fmpq (p.la, la, RP);
+      arb_sub (dc, p.lt, p.L0, RP);
+      arb_zero (A);
+      arb_one (B);
+      p.kind = 0;
+      integrate (dth, &p, A, B);
+      p.kind = 1;
+      integrate (dta, &p, A, B);
+      arb_mul_2exp_si (dth, dth, 1);
+      arb_mul_2exp_si (dta, dta, 1);
+    }
+  if (fmpq_sgn (r->H) < 0)
+    arb_neg (dth, dth);
+  arb_add (r->theta, r->theta, dth, RP);
+  arb_add (r->tau, r->tau, dta, RP);
+  /* the collision in phase form: the peg leaves at lm, the new at lp */
+  if (*rev)
+    {
+      fmpq_set (lm, la);
+      fmpq_set (lp, lb);
+    }
+  else
+    {
+      fmpq_set (lm, lb);
+      fmpq_set (lp, la);
+    }
+  /* V-^2 = 2E - H^2/(1 + lm^2); Omega- = H/(1 + lm^2) */
+  fmpq_mul (t, lm, lm);
+  fmpq_add_ui (t, t, 1);
+  fmpq_div (Om, r->H, t);
+  fmpq_mul (vm2, r->H, Om);
+  fmpq_mul_2exp (g, r->E, 1);
+  fmpq_sub (vm2, g, vm2);
+  /* (3.6): Omega+ = [1 + L0 (L0 + Delta)] Omega-/(1 + lp^2) */
+  fmpq_add (t, r->L0, r->Delta);
+  fmpq_mul (t, t, r->L0);
+  fmpq_add_ui (t, t, 1);
+  fmpq_mul (Om, Om, t);
+  fmpq_mul (t, lp, lp);
+  fmpq_add_ui (t, t, 1);
+  fmpq_div (Om, Om, t);
+  /* (3.4), (3.3) at the new peg */
+  fmpq_mul (H1, t, Om);
+  fmpq_mul (E1, H1, Om);
+  fmpq_add (E1, E1, vm2);
+  fmpq_div_2exp (E1, E1, 1);
+  /* the peg: P' = P + (D- - D+') (cos theta', sin theta') */
+  {
+    arb_t c, s, d;
+    arb_init (c);
+    arb_init (s);
+    arb_init (d);
+    arb_sin_cos (s, c, r->theta, RP);
+    arb_set_fmpq (d, r->Delta, RP);
+    if ((r->dir > 0) == (*rev != 0))
+      arb_neg (d, d);
+    arb_addmul (r->peg[0], c, d, RP);
+    arb_addmul (r->peg[1], s, d, RP);
+    arb_clear (c);
+    arb_clear (s);
+    arb_clear (d);
+  }
+  fmpq_swap (r->E, E1);
+  fmpq_swap (r->H, H1);
+  if (*rev)
+    r->dir = -r->dir;
+  arb_clear (A);
+  arb_clear (B);
+  arb_clear (p.L0);
+  arb_clear (p.twoE);
+  arb_clear (p.H2);
+  arb_clear (p.absH);
+  arb_clear (p.la);
+  arb_clear (p.lt);
+done:
+  for (int i = 0; i < 10; i++)
+    fmpq_clear (v[i]);
+}
+
+/* The reference ball B must decide its rounding; the library's X must
+   equal it (0 ulps), and lie in its bounds where BOUNDS is not null. */
+static void
+check_ball (const arb_t b, double x, const double *bounds, const char *what,
+            int k)
+{
+  double want;
+  ck_assert_msg (chp_cert_round_arb (b, &want),
+                 "%s (step %d): the reference does not decide", what, k);
+  ck_assert_msg (x == want && signbit (x) == signbit (want),
+                 "%s (step %d): %.17g, nearest %.17g", what, k, x, want);
+  if (bounds)
+    {
+      arb_t lo;
+      arb_init (lo);
+      ck_assert_msg (bounds[0] <= x && x <= bounds[1], "%s bounds", what);
+      arb_set_d (lo, bounds[0]);
+      ck_assert_msg (arb_le (lo, b), "%s: lower bound inside", what);
+      arb_set_d (lo, bounds[1]);
+      ck_assert_msg (arb_ge (lo, b), "%s: upper bound inside", what);
+      arb_clear (lo);
+    }
+}
+
+static void
+check_q (const fmpq_t q, double x, const double *bounds, const char *what,
+         int k)
+{
+  double want;
+  ck_assert (chp_cert_round_fmpq (q, &want) == CHAPLYGIN_SUCCESS);
+  ck_assert_msg (x == want, "%s (step %d): %.17g, nearest %.17g", what, k,
+                 x, want);
+  if (bounds)
+    {
+      fmpq_t b;
+      arf_t t;
+      fmpq_init (b);
+      arf_init (t);
+      arf_set_d (t, bounds[0]);
+      arf_get_fmpq (b, t);
+      ck_assert_msg (fmpq_cmp (b, q) <= 0, "%s: lower bound above", what);
+      arf_set_d (t, bounds[1]);
+      arf_get_fmpq (b, t);
+      ck_assert_msg (fmpq_cmp (b, q) >= 0, "%s: upper bound below", what);
+      ck_assert (bounds[0] == x || nextafter (bounds[0], INFINITY) == x);
+      ck_assert (bounds[1] == x || nextafter (bounds[1], -INFINITY) == x);
+      fmpq_clear (b);
+      arf_clear (t);
+    }
+}
+
+/* Run N certified collisions of the exact start against the reference;
+   returns the number of reversals seen. */
+static int
+compare_orbit (const double L0[2], const double Delta[2], int dir,
+               const double E[2], const double H[2], double theta,
+               double tau, int n)
+{
+  const double peg[2] = { 0.0, 0.0 };
+  chaplygin_certified_orbit *o;
+  ck_assert_int_eq (chaplygin_certified_orbit_new_exact
+                    (L0, Delta, dir, E, H, theta, tau, peg,
+                     CHAPLYGIN_WANT_ALL, &o), CHAPLYGIN_SUCCESS);
+  ref_orbit r;
+  ref_init (&r, L0, Delta, dir, E, H, theta, tau);
+  arb_t dth, dta, dc;
+  fmpq_t vm2;
+  arb_init (dth);
+  arb_init (dta);
+  arb_init (dc);
+  fmpq_init (vm2);
+  int reversals = 0;
+  for (int k = 1; k <= n; k++)
+    {
+      chaplygin_discrete_state st;
+      chaplygin_discrete_event ev;
+      chaplygin_certified_bounds b;
+      int rev, spin;
+      const int s = chaplygin_certified_orbit_step (o, &st, &ev, &b);
+      ref_step (&r, &rev, &spin, dth, dta, vm2, dc);
+      if (spin)
+        {
+          ck_assert_int_eq (s, CHAPLYGIN_ESPIN);
+          break;
+        }
+      ck_assert_int_eq (s, CHAPLYGIN_SUCCESS);
+      ck_assert_int_eq (ev.reversal, rev);
+      ck_assert_int_eq (st.dir, r.dir);
+      reversals += rev;
+      check_q (r.E, st.E, b.E, "E", k);
+      check_q (r.H, st.H, b.H, "H", k);
+      check_ball (r.theta, st.theta, b.theta, "theta", k);
+      check_ball (r.tau, st.tau, b.tau, "tau", k);
+      check_ball (r.peg[0], st.peg[0], b.peg_x, "peg x", k);
+      check_ball (r.peg[1], st.peg[1], b.peg_y, "peg y", k);
+      check_ball (dth, ev.dtheta, NULL, "dtheta", k);
+      check_ball (dta, ev.dtau, NULL, "dtau", k);
+      /* V- = sgn sqrt(V-^2) */
+      arb_t v;
+      arb_init (v);
+      arb_set_fmpq (v, vm2, RP);
+      arb_sqrt (v, v, RP);
+      if (st.dir < 0)           /* V- has the sign of the new dir */
+        arb_neg (v, v);
+      check_ball (v, ev.Vminus, NULL, "V-", k);
+      ck_assert (st.V == ev.Vminus);
+      arb_clear (v);
+      if (rev)
+        check_ball (dc, ev.Dc, NULL, "Dc", k);
+      unsigned long done;
+      ck_assert (chaplygin_certified_orbit_collisions (o, &done) == 0
+                 && done == (unsigned long) k);
+    }
+  arb_clear (dth);
+  arb_clear (dta);
+  arb_clear (dc);
+  fmpq_clear (vm2);
+  ref_clear (&r);
+  chaplygin_certified_orbit_free (o);
+  return reversals;
+}
+
+/* ---- tests ------------------------------------------------------------ */
+
+/* Random starts, one to six collisions each: every output equal to the
+   reference's rounding.  Reversals occur in about 14% of the steps. */
+START_TEST (random_orbits)
+{
+  tu_rng g;
+  tu_rng_seed (&g, 20261128);
+  int reversals = 0, steps = 0;
+  for (int i = 0; i < 60; i++)
+    {
+      chaplygin_discrete sys;
+      const double L0 = tu_uniform (&g, -3.0, 3.0);
+      const double Delta = tu_uniform (&g, 0.05, 3.0);
+      const double V = tu_uniform (&g, -2.0, 2.0);
+      const double Omega = tu_uniform (&g, -2.5, 2.5);
+      ck_assert (chaplygin_discrete_init (&sys, L0, Delta) == 0);
+      const double q[4] = { V > 0 ? 0.0 : Delta, V, tu_uniform (&g, -4, 4),
+        Omega };
+      chaplygin_discrete_state st;
+      if (V == 0.0
+          || chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st))
+        continue;
+      const double l0[2] = { L0, 1 }, d[2] = { Delta, 1 }, e[2] = { st.E, 1 },
+        h[2] = { st.H, 1 };
+      const int n = 1 + i % 6;
+      reversals += compare_orbit (l0, d, st.dir, e, h, st.theta, 0.25, n);
+      steps += n;
+    }
+  ck_assert_int_gt (reversals, steps / 10);
+}
+END_TEST
+
+/* A long reversing orbit: Figure 3's line (L0 = -1/2, Delta = 1) from
+   V+ = 0.3, Omega+ = 4/5: 40 collisions, every one certified. */
+START_TEST (long_orbit)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, -0.5, 1.0) == 0);
+  const double q[4] = { 0.0, 0.3, 0.0, 0.8 };
+  chaplygin_discrete_state st;
+  ck_assert (chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &st)
+             == 0);
+  const double l0[2] = { -0.5, 1 }, d[2] = { 1, 1 }, e[2] = { st.E, 1 },
+    h[2] = { st.H, 1 };
+  ck_assert_int_gt (compare_orbit (l0, d, 1, e, h, 0.0, 0.0, 40), 0);
+}
+END_TEST
+
+/* Exact rational parameters (L0 = 1/3, Delta = 2/7) and state. */
+START_TEST (rational_inputs)
+{
+  const double l0[2] = { 1, 3 }, d[2] = { 2, 7 }, e[2] = { 5, 11 },
+    h[2] = { -3, 13 };
+  compare_orbit (l0, d, 1, e, h, 0.1, 0.0, 8);
+  /* from l = -7/5 towards 0 with H^2/(2E) - 1 = 65/32 > (39/35)^2: a
+     reversal first */
+  const double l1[2] = { -7, 5 }, e1[2] = { 1, 1 }, h1[2] = { 9, 4 };
+  ck_assert_int_gt (compare_orbit (l1, d, 1, e1, h1, 0.0, 0.0, 8), 0);
+}
+END_TEST
+
+/* E' exactly at a rounding midpoint: L0 = 0, Delta = 1, E = 2,
+   H = 3 2^-25: no reversal, C1 = -1/8, E' = 2 - 9 2^-53, halfway between
+   2 - 4 2^-52 and 2 - 5 2^-52: ties to even gives 2 - 2^-50.  H' = H/2. */
+START_TEST (tie_in_energy)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, 0.0, 1.0) == 0);
+  chaplygin_discrete_state in = { 1, 2.0, 3 * 0x1p-25, 0, 0, { 0, 0 }, 0 },
+    out;
+  chaplygin_options opt = CHAPLYGIN_OPTIONS_DEFAULT;
+  opt.method = CHAPLYGIN_CERTIFIED;
+  ck_assert_int_eq (chaplygin_discrete_step (&sys, &in, 0, &opt, &out, NULL),
+                    CHAPLYGIN_SUCCESS);
+  ck_assert (out.E == 2.0 - 0x1p-50);
+  ck_assert (out.H == 3 * 0x1p-26);
+  const double l0[2] = { 0, 1 }, dd[2] = { 1, 1 }, e[2] = { 2, 1 },
+    h[2] = { 3 * 0x1p-25, 1 };
+  compare_orbit (l0, dd, 1, e, h, 0.0, 0.0, 3);
+}
+END_TEST
+
+/* A turning point exactly at a rounding midpoint: L0 = -2^53,
+   Delta = 2^54, from the rear (l = 2^53) with E = 1, H = 2: it turns at
+   l = 1, D = 2^53 + 1, halfway between 2^53 and 2^53 + 2: ties to even
+   gives 2^53 (recognised as an exact square root: a ball never decides). */
+START_TEST (tie_in_turning_point)
+{
+  const double l0[2] = { -0x1p53, 1 }, d[2] = { 0x1p54, 1 }, e[2] = { 1, 1 },
+    h[2] = { 2, 1 }, peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  ck_assert_int_eq (chaplygin_certified_orbit_new_exact
+                    (l0, d, -1, e, h, 0.0, 0.0, peg, 0, &o), 0);
+  chaplygin_discrete_state st;
+  chaplygin_discrete_event ev;
+  ck_assert_int_eq (chaplygin_certified_orbit_step (o, &st, &ev, NULL), 0);
+  ck_assert_int_eq (ev.reversal, 1);
+  ck_assert (ev.Dc == 0x1p53);
+  ck_assert_int_eq (st.dir, 1);
+  chaplygin_certified_orbit_free (o);
+}
+END_TEST
+
+/* Boundaries decided exactly.  A turning point exactly at the far end
+   (L0 = 1, Delta = 1, from the rear, E = 1, H = 2: g(1) = 0) is a reversal
+   with Dc = 0; 2E = H^2 on a path through l = 0 is the spinning state;
+   2E = H^2 away from 0 is a motion without a turning point. */
+START_TEST (exact_boundaries)
+{
+  const double one[2] = { 1, 1 }, e1[2] = { 1, 1 }, h2[2] = { 2, 1 },
+    peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  chaplygin_discrete_state st;
+  chaplygin_discrete_event ev;
+  ck_assert_int_eq (chaplygin_certified_orbit_new_exact
+                    (one, one, -1, e1, h2, 0, 0, peg, CHAPLYGIN_WANT_ALL,
+                     &o), 0);
+  ck_assert_int_eq (chaplygin_certified_orbit_step (o, &st, &ev, NULL), 0);
+  ck_assert_int_eq (ev.reversal, 1);
+  ck_assert (ev.Dc == 0.0 && !signbit (ev.Dc));
+  chaplygin_certified_orbit_free (o);
+  compare_orbit (one, one, -1, e1, h2, 0, 0, 4);
+  /* the spinning state */
+  const double lm[2] = { -1, 2 }, e2[2] = { 2, 1 };
+  ck_assert_int_eq (chaplygin_certified_orbit_new_exact
+                    (lm, one, 1, e2, h2, 0, 0, peg, 0, &o), 0);
+  ck_assert_int_eq (chaplygin_certified_orbit_step (o, &st, &ev, NULL),
+                    CHAPLYGIN_ESPIN);
+  unsigned long n = 7;
+  ck_assert (chaplygin_certified_orbit_collisions (o, &n) == 0 && n == 0);
+  chaplygin_certified_orbit_free (o);
+  /* q = 0 away from l = 0: the elementary primitives */
+  compare_orbit (one, one, -1, e2, h2, 0.5, 0, 1);
+  /* the closed form agrees on the reversal at the far end */
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, 1.0, 1.0) == 0);
+  chaplygin_discrete_state in = { -1, 1.0, 2.0, 0, 0, { 0, 0 }, 0 };
+  ck_assert (chaplygin_discrete_step (&sys, &in, 0, NULL, &st, &ev) == 0);
+  ck_assert_int_eq (ev.reversal, 1);
+}
+END_TEST
+
+/* A straight motion (H = 0) at a rational speed: the time is rational and
+   here lands on a midpoint: E = 1/2 (V = 1), Delta = 1, tau0 = 2^53:
+   tau1 = 2^53 + 1, halfway between 2^53 and 2^53 + 2: 2^53 (even);
+   tau2 = 2^53 + 2 exactly. */
+START_TEST (straight_exact_time)
+{
+  const double l0[2] = { 0.25, 1 }, d[2] = { 1, 1 }, e[2] = { 1, 2 },
+    h[2] = { 0, 1 }, peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  ck_assert_int_eq (chaplygin_certified_orbit_new_exact
+                    (l0, d, 1, e, h, 0.0, 0x1p53, peg, CHAPLYGIN_WANT_ALL,
+                     &o), 0);
+  chaplygin_discrete_state st;
+  chaplygin_discrete_event ev;
+  chaplygin_certified_bounds b;
+  ck_assert_int_eq (chaplygin_certified_orbit_step (o, &st, &ev, &b), 0);
+  ck_assert (st.tau == 0x1p53 && ev.dtau == 1.0 && st.theta == 0.0);
+  ck_assert (b.tau[0] == 0x1p53 && b.tau[1] == 0x1p53 + 2);
+  ck_assert (st.peg[0] == 1.0 && st.peg[1] == 0.0 && st.V == 1.0);
+  ck_assert_int_eq (chaplygin_certified_orbit_step (o, &st, &ev, &b), 0);
+  ck_assert (st.tau == 0x1p53 + 2 && b.tau[0] == st.tau
+             && b.tau[1] == st.tau);
+  chaplygin_certified_orbit_free (o);
+}
+END_TEST
+
+/* chaplygin_discrete_step with CHAPLYGIN_CERTIFIED: the orbit's first
+   step; fields not requested copied from the input; within the closed
+   form's few ulps (a consistency check of two routes). */
+START_TEST (step_method)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, -0.5, 1.0) == 0);
+  const double q[4] = { 0.0, 0.7, 0.4, 0.8 };
+  chaplygin_discrete_state in, a, b;
+  chaplygin_discrete_event ea, eb;
+  ck_assert (chaplygin_discrete_state_from_phase (&sys, q, 1.5, NULL, &in)
+             == 0);
+  in.peg[0] = 3.0;
+  chaplygin_options opt = CHAPLYGIN_OPTIONS_DEFAULT;
+  opt.method = CHAPLYGIN_CERTIFIED;
+  ck_assert (chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_TAU, &opt,
+                                      &b, &eb) == 0);
+  ck_assert (b.theta == in.theta && b.peg[0] == 3.0);
+  ck_assert (chaplygin_discrete_step (&sys, &in, CHAPLYGIN_WANT_ALL, NULL,
+                                      &a, &ea) == 0);
+  ck_assert (tu_close (b.tau, a.tau, 8 * DBL_EPSILON));
+  ck_assert (tu_close (b.E, a.E, 8 * DBL_EPSILON));
+  ck_assert (tu_close (eb.dtau, ea.dtau, 8 * DBL_EPSILON));
+  chaplygin_discrete_state c;
+  chaplygin_certified_orbit *o;
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, CHAPLYGIN_WANT_ALL,
+                                            &o) == 0);
+  ck_assert (chaplygin_certified_orbit_step (o, &c, NULL, NULL) == 0);
+  ck_assert (c.tau == b.tau && c.E == b.E && c.H == b.H && c.V == b.V);
+  chaplygin_certified_orbit_free (o);
+  int avail = -1;
+  ck_assert (chaplygin_method_available (CHAPLYGIN_CERTIFIED, &avail) == 0
+             && avail == 1);
+  ck_assert (chaplygin_method_available (9, &avail) == CHAPLYGIN_EINVAL);
+}
+END_TEST
+
+/* The cap: with 64 bits the exact state of the first collision does not
+   fit, and the step says so (the orbit unchanged); raised, it steps. */
+START_TEST (cap)
+{
+  const double l0[2] = { 1, 3 }, d[2] = { 2, 7 }, e[2] = { 5, 11 },
+    h[2] = { -3, 13 }, peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  chaplygin_discrete_state st = { 0 };
+  ck_assert (chaplygin_certified_orbit_new_exact (l0, d, 1, e, h, 0, 0, peg,
+                                                  CHAPLYGIN_WANT_ALL, &o)
+             == 0);
+  ck_assert (chaplygin_certified_orbit_cap (o, 64) == 0);
+  ck_assert (chaplygin_certified_orbit_step (o, &st, NULL, NULL) == 0);
+  int s;
+  unsigned long n = 0;
+  while ((s = chaplygin_certified_orbit_step (o, &st, NULL, NULL)) == 0)
+    n++;
+  ck_assert_int_eq (s, CHAPLYGIN_ECAP);
+  unsigned long done;
+  ck_assert (chaplygin_certified_orbit_collisions (o, &done) == 0
+             && done == n + 1);
+  ck_assert (chaplygin_certified_orbit_cap (o, 1UL << 20) == 0);
+  ck_assert (chaplygin_certified_orbit_step (o, &st, NULL, NULL) == 0);
+  ck_assert (chaplygin_certified_orbit_cap (o, 63) == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_cap (NULL, 100) == CHAPLYGIN_EINVAL);
+  chaplygin_certified_orbit_free (o);
+}
+END_TEST
+
+/* Invalid input: the statuses of chaplygin_discrete_step. */
+START_TEST (errors)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, 0.5, 1.0) == 0);
+  chaplygin_discrete_state in = { 1, 1.0, 0.5, 0, 0, { 0, 0 }, 0 }, out;
+  chaplygin_certified_orbit *o = (chaplygin_certified_orbit *) &sys;
+  ck_assert (chaplygin_certified_orbit_new (NULL, &in, 0, &o)
+             == CHAPLYGIN_EINVAL && o == NULL);
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, 8, &o)
+             == CHAPLYGIN_EINVAL);
+  in.dir = 0;
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, 0, &o)
+             == CHAPLYGIN_EINVAL);
+  in.dir = 1;
+  in.theta = NAN;
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, 0, &o)
+             == CHAPLYGIN_EDOM);
+  in.theta = 0;
+  in.E = 0;
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, 0, &o)
+             == CHAPLYGIN_ESTATE);
+  /* (V+)^2 = 0 exactly: 2E (1 + 1^2) = H^2 with E = 1, H = 2 at L0 = 1 */
+  chaplygin_discrete sys1;
+  ck_assert (chaplygin_discrete_init (&sys1, 1.0, 1.0) == 0);
+  in.E = 1.0;
+  in.H = 2.0;
+  ck_assert (chaplygin_certified_orbit_new (&sys1, &in, 0, &o)
+             == CHAPLYGIN_ESTATE);
+  in.H = 0.5;
+  in.E = 1.0;
+  in.V = -1.0;                  /* the wrong sign */
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, 0, &o)
+             == CHAPLYGIN_ESTATE);
+  in.V = 0.1;                   /* far from E and H's V+ */
+  ck_assert (chaplygin_certified_orbit_new (&sys, &in, 0, &o)
+             == CHAPLYGIN_ESTATE);
+  in.V = 0.0;
+  chaplygin_options opt = CHAPLYGIN_OPTIONS_DEFAULT;
+  opt.method = CHAPLYGIN_CERTIFIED;
+  ck_assert (chaplygin_discrete_step (&sys, &in, 0, &opt, NULL, NULL)
+             == CHAPLYGIN_EINVAL);
+  const double r[2] = { 1, 0 }, ok[2] = { 1, 1 }, neg[2] = { -1, 1 },
+    peg[2] = { 0, 0 };
+  ck_assert (chaplygin_certified_orbit_new_exact (r, ok, 1, ok, ok, 0, 0, peg,
+                                                  0, &o) == CHAPLYGIN_EDOM);
+  ck_assert (chaplygin_certified_orbit_new_exact (ok, neg, 1, ok, ok, 0, 0,
+                                                  peg, 0, &o)
+             == CHAPLYGIN_EDOM);
+  ck_assert (chaplygin_certified_orbit_new_exact (ok, ok, 2, ok, ok, 0, 0,
+                                                  peg, 0, &o)
+             == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_step (NULL, &out, NULL, NULL)
+             == CHAPLYGIN_EINVAL);
+  unsigned long n;
+  ck_assert (chaplygin_certified_orbit_collisions (NULL, &n)
+             == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_free (NULL) == CHAPLYGIN_SUCCESS);
+  ck_assert_str_eq (chaplygin_strerror (CHAPLYGIN_ECAP),
+                    "the certified method would need more than its "
+                    "precision or size cap to prove the result");
+}
+END_TEST
+
+int
+main (void)
+{
+  Suite *s = suite_create ("certified");
+  tu_add (s, "random_orbits", random_orbits);
+  tu_add (s, "long_orbit", long_orbit);
+  tu_add (s, "rational_inputs", rational_inputs);
+  tu_add (s, "tie_in_energy", tie_in_energy);
+  tu_add (s, "tie_in_turning_point", tie_in_turning_point);
+  tu_add (s, "exact_boundaries", exact_boundaries);
+  tu_add (s, "straight_exact_time", straight_exact_time);
+  tu_add (s, "step_method", step_method);
+  tu_add (s, "cap", cap);
+  tu_add (s, "errors", errors);
+  int r = tu_run (s);
+  flint_cleanup ();
+  return r;
+}
