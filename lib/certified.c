@@ -48,7 +48,7 @@
 #include "certified.h"
 
 /* the first working precision (bits), and the default cap */
-enum { PREC_START = 128, CAP_DEFAULT = 1 << 20, CAP_MIN = 64 };
+enum { PREC_START = 80, CAP_DEFAULT = 1 << 20, CAP_MIN = 64 };
 #define CAP_MAX (1UL << 30)
 
 struct chaplygin_certified_orbit
@@ -385,8 +385,9 @@ orbit_advance (chaplygin_certified_orbit *o)
   arb_init (dth);
   arb_init (dta);
   (void) plan_step (o, o->dir, o->E, o->H, &p);
-  sums_after (o, &p, o->E, o->H, o->theta, o->tau, o->prec, o->theta,
-              o->tau, o->peg[0], o->peg[1], dth, dta);
+  if (o->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU))
+    sums_after (o, &p, o->E, o->H, o->theta, o->tau, o->prec, o->theta,
+                o->tau, o->peg[0], o->peg[1], dth, dta);
   if (o->tau_exact)
     fmpq_add (o->tau_q, o->tau_q, o->dtau_q);
   fmpq_swap (o->E, p.E1);
@@ -627,13 +628,53 @@ chaplygin_certified_orbit_free (chaplygin_certified_orbit *o)
 
 /* ---- the certified step's outputs ------------------------------------- */
 
-/* The step's results, rounded. */
+/* The step's results, rounded, and what the orbit takes on success. */
 typedef struct
 {
   chaplygin_discrete_state st;
   chaplygin_discrete_event ev;
   chaplygin_certified_bounds b;
+  step_plan p;                  /* the decisions, E' and H' */
+  arb_t theta, tau, peg[2];     /* the sums after the step */
 } step_out;
+
+static void
+out_init (step_out *r)
+{
+  plan_init (&r->p);
+  arb_init (r->theta);
+  arb_init (r->tau);
+  arb_init (r->peg[0]);
+  arb_init (r->peg[1]);
+}
+
+static void
+out_clear (step_out *r)
+{
+  plan_clear (&r->p);
+  arb_clear (r->theta);
+  arb_clear (r->tau);
+  arb_clear (r->peg[0]);
+  arb_clear (r->peg[1]);
+}
+
+/* Take the step R into O (its sums and exact state): what orbit_advance
+   computes, already computed. */
+static void
+orbit_commit (chaplygin_certified_orbit *o, step_out *r)
+{
+  arb_swap (o->theta, r->theta);
+  arb_swap (o->tau, r->tau);
+  arb_swap (o->peg[0], r->peg[0]);
+  arb_swap (o->peg[1], r->peg[1]);
+  if (o->tau_exact)
+    fmpq_add (o->tau_q, o->tau_q, o->dtau_q);
+  fmpq_swap (o->E, r->p.E1);
+  fmpq_swap (o->H, r->p.H1);
+  if (r->p.reversal)
+    o->dir = -o->dir;
+  o->n++;
+}
 
 /* V- (sign S) and, on a reversal, Dc: the square roots of exact rationals,
    exact where those are squares, else balls at PREC. */
@@ -710,93 +751,74 @@ take (const arb_t b, double *x, double out[2], int *rc)
     *rc = r;
 }
 
-/* Try the step of O at its precision: ROUND_OK with *R filled, ROUND_UNDECIDED,
-   ROUND_RANGE; *ESPIN set where the motion ends in the spinning state. */
+/* Try the step of O at its precision into *R (initialised by out_init):
+   ROUND_OK with *R filled, ROUND_UNDECIDED, ROUND_RANGE; *ESPIN set where
+   the motion ends in the spinning state. */
 static int
 try_step (const chaplygin_certified_orbit *o, step_out *r, int *espin)
 {
   const slong prec = o->prec;
-  step_plan p;
-  plan_init (&p);
-  *espin = plan_step (o, o->dir, o->E, o->H, &p) == CHAPLYGIN_ESPIN;
+  step_plan *p = &r->p;
+  *espin = plan_step (o, o->dir, o->E, o->H, p) == CHAPLYGIN_ESPIN;
   if (*espin)
-    {
-      plan_clear (&p);
-      return ROUND_OK;
-    }
+    return ROUND_OK;
   int rc = ROUND_OK;
-  /* E, H exactly */
-  if (round_q (p.E1, &r->st.E, r->b.E) != CHAPLYGIN_SUCCESS
-      || round_q (p.H1, &r->st.H, r->b.H) != CHAPLYGIN_SUCCESS)
-    rc = ROUND_RANGE;
-  r->st.dir = p.reversal ? -o->dir : o->dir;
-  r->ev.reversal = p.reversal;
-  if (rc == ROUND_OK
-      && (round_q (o->D[p.leave], &r->ev.Dminus, NULL) != CHAPLYGIN_SUCCESS
-          || round_q (o->D[p.arrive], &r->ev.Dplus, NULL)
-          != CHAPLYGIN_SUCCESS))
-    rc = ROUND_RANGE;
-  if (rc == ROUND_OK)
-    {
-      int a = round_algebraic (o, &p, prec, r);
-      if (a > rc)
-        rc = a;
-    }
+  /* E, H and the ends exactly */
+  if (round_q (p->E1, &r->st.E, r->b.E) != CHAPLYGIN_SUCCESS
+      || round_q (p->H1, &r->st.H, r->b.H) != CHAPLYGIN_SUCCESS
+      || round_q (o->D[p->leave], &r->ev.Dminus, NULL) != CHAPLYGIN_SUCCESS
+      || round_q (o->D[p->arrive], &r->ev.Dplus, NULL) != CHAPLYGIN_SUCCESS)
+    return ROUND_RANGE;
+  r->st.dir = p->reversal ? -o->dir : o->dir;
+  r->ev.reversal = p->reversal;
+  rc = round_algebraic (o, p, prec, r);
   r->st.V = r->ev.Vminus;
   /* the sums */
-  arb_t th, ta, p0, p1, dth, dta;
-  arb_init (th);
-  arb_init (ta);
-  arb_init (p0);
-  arb_init (p1);
-  arb_init (dth);
-  arb_init (dta);
-  arb_set (p0, o->peg[0]);
-  arb_set (p1, o->peg[1]);
+  arb_set (r->theta, o->theta);
+  arb_set (r->tau, o->tau);
+  arb_set (r->peg[0], o->peg[0]);
+  arb_set (r->peg[1], o->peg[1]);
   r->st.theta = r->st.tau = 0.0;
   r->st.peg[0] = r->st.peg[1] = 0.0;
   r->ev.dtheta = r->ev.dtau = 0.0;
-  if (rc == ROUND_OK && (o->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU)))
+  if (rc != ROUND_OK
+      || !(o->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU)))
+    return rc;
+  arb_t dth, dta;
+  arb_init (dth);
+  arb_init (dta);
+  sums_after (o, p, o->E, o->H, o->theta, o->tau, prec, r->theta, r->tau,
+              r->peg[0], r->peg[1], dth, dta);
+  if (o->request & CHAPLYGIN_WANT_THETA)
     {
-      sums_after (o, &p, o->E, o->H, o->theta, o->tau, prec, th, ta, p0,
-                  p1, dth, dta);
-      if (o->request & CHAPLYGIN_WANT_THETA)
+      take (r->theta, &r->st.theta, r->b.theta, &rc);
+      take (dth, &r->ev.dtheta, NULL, &rc);
+    }
+  if (o->request & CHAPLYGIN_WANT_TAU)
+    {
+      if (o->tau_exact)
         {
-          take (th, &r->st.theta, r->b.theta, &rc);
-          take (dth, &r->ev.dtheta, NULL, &rc);
+          fmpq_t t;
+          fmpq_init (t);
+          fmpq_add (t, o->tau_q, o->dtau_q);
+          if (round_q (t, &r->st.tau, r->b.tau) != CHAPLYGIN_SUCCESS
+              || round_q (o->dtau_q, &r->ev.dtau, NULL) != CHAPLYGIN_SUCCESS)
+            rc = ROUND_RANGE;
+          fmpq_clear (t);
         }
-      if (o->request & CHAPLYGIN_WANT_TAU)
+      else
         {
-          if (o->tau_exact)
-            {
-              fmpq_t t;
-              fmpq_init (t);
-              fmpq_add (t, o->tau_q, o->dtau_q);
-              if (round_q (t, &r->st.tau, r->b.tau) != CHAPLYGIN_SUCCESS
-                  || round_q (o->dtau_q, &r->ev.dtau, NULL)
-                  != CHAPLYGIN_SUCCESS)
-                rc = ROUND_RANGE;
-              fmpq_clear (t);
-            }
-          else
-            {
-              take (ta, &r->st.tau, r->b.tau, &rc);
-              take (dta, &r->ev.dtau, NULL, &rc);
-            }
-        }
-      if (o->request & CHAPLYGIN_WANT_PEG)
-        {
-          take (p0, &r->st.peg[0], r->b.peg_x, &rc);
-          take (p1, &r->st.peg[1], r->b.peg_y, &rc);
+          take (r->tau, &r->st.tau, r->b.tau, &rc);
+          take (dta, &r->ev.dtau, NULL, &rc);
         }
     }
-  arb_clear (th);
-  arb_clear (ta);
-  arb_clear (p0);
-  arb_clear (p1);
+  if (o->request & CHAPLYGIN_WANT_PEG)
+    {
+      take (r->peg[0], &r->st.peg[0], r->b.peg_x, &rc);
+      take (r->peg[1], &r->st.peg[1], r->b.peg_y, &rc);
+    }
   arb_clear (dth);
   arb_clear (dta);
-  plan_clear (&p);
   return rc;
 }
 
@@ -812,22 +834,33 @@ chaplygin_certified_orbit_step (chaplygin_certified_orbit *o,
   if ((unsigned long) (q_bits (o->E) + q_bits (o->H)) > o->cap)
     return CHAPLYGIN_ECAP;
   step_out r;
-  int espin;
+  int espin, status = CHAPLYGIN_SUCCESS;
+  out_init (&r);
   for (;;)
     {
       const int rc = try_step (o, &r, &espin);
       if (espin)
-        return CHAPLYGIN_ESPIN;
-      if (rc == ROUND_RANGE)
-        return CHAPLYGIN_ERANGE;
-      if (rc == ROUND_OK)
-        break;
-      /* Ziv: twice the precision, the orbit replayed from its start */
-      if ((unsigned long) o->prec * 2 > o->cap)
-        return CHAPLYGIN_ECAP;
-      orbit_replay (o, o->prec * 2);
+        status = CHAPLYGIN_ESPIN;
+      else if (rc == ROUND_RANGE)
+        status = CHAPLYGIN_ERANGE;
+      else if (rc == ROUND_UNDECIDED)
+        {
+          /* Ziv: twice the precision, the orbit replayed from its start */
+          if ((unsigned long) o->prec * 2 <= o->cap)
+            {
+              orbit_replay (o, o->prec * 2);
+              continue;
+            }
+          status = CHAPLYGIN_ECAP;
+        }
+      break;
     }
-  orbit_advance (o);
+  if (status != CHAPLYGIN_SUCCESS)
+    {
+      out_clear (&r);
+      return status;
+    }
+  orbit_commit (o, &r);
   *out = r.st;
   if (ev)
     *ev = r.ev;
@@ -856,6 +889,7 @@ chaplygin_certified_orbit_step (chaplygin_certified_orbit *o,
           bounds->peg_y[1] = r.b.peg_y[1];
         }
     }
+  out_clear (&r);
   return CHAPLYGIN_SUCCESS;
 }
 

@@ -1315,13 +1315,12 @@ typedef struct chaplygin_certified_orbit chaplygin_certified_orbit;
    chaplygin_certified_orbit_free); on a failure it is set to null.
 
    Domain: as chaplygin_discrete_step's: @sys initialised by
-   chaplygin_discrete_init (its @L0 and @Delta are the exact parameters);
+   chaplygin_discrete_init (its `L0` and `Delta` are the exact parameters);
    $E > 0$ and $(V^+)^2 = 2E - H^2/(1 + l_0^2) > 0$, decided exactly.
 
    Errors: CHAPLYGIN_EINVAL (a null pointer, `dir`, unknown request bits, or a
    build without Arb), CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE, CHAPLYGIN_ENOMEM.
 
-   @orbit: (out)
  */
 int chaplygin_certified_orbit_new (const chaplygin_discrete *sys,
                                    const chaplygin_discrete_state *start,
@@ -1340,7 +1339,6 @@ int chaplygin_certified_orbit_new (const chaplygin_discrete *sys,
    build without Arb), CHAPLYGIN_EDOM (non-finite, a zero denominator,
    $Delta <= 0$), CHAPLYGIN_ESTATE, CHAPLYGIN_ENOMEM.
 
-   @orbit: (out)
  */
 int chaplygin_certified_orbit_new_exact (const double L0[2],
                                          const double Delta[2], int dir,
@@ -1355,7 +1353,7 @@ int chaplygin_certified_orbit_new_exact (const double L0[2],
    holds several thousand collisions of any orbit; a step that would need more
    returns CHAPLYGIN_ECAP.
 
-   Domain: $64 <= @max_bits <= 2^30$.
+   Domain: 64 <= @max_bits <= $2^30$.
 
    Errors: CHAPLYGIN_EINVAL.
  */
