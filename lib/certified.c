@@ -31,6 +31,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <arb.h>
 #include <flint/fmpq.h>
@@ -150,7 +151,7 @@ q_bits (const fmpq_t q)
 
 /* ---- rounding --------------------------------------------------------- */
 
-enum { ROUND_OK = 0, ROUND_UNDECIDED = 1, ROUND_RANGE = 2 };
+enum { ROUND_OK = 0, ROUND_UNDECIDED = 1, ROUND_RANGE = 2, ROUND_CAP = 3 };
 
 /* *X = the nearest double to every point of B (ROUND_OK); ROUND_RANGE where all of
    B rounds beyond DBL_MAX; ROUND_UNDECIDED otherwise. */
@@ -551,6 +552,51 @@ chaplygin_certified_orbit_new (const chaplygin_discrete *sys,
 }
 
 int
+chaplygin_certified_orbit_new_phase (const chaplygin_discrete *sys,
+                                     const double qplus[4], double tau,
+                                     const double peg[2], unsigned request,
+                                     chaplygin_certified_orbit **orbit)
+{
+  if (orbit)
+    *orbit = NULL;
+  if (!sys || !qplus || !peg || !orbit || !request_ok (request))
+    return CHAPLYGIN_EINVAL;
+  for (int i = 0; i < 4; i++)
+    if (!isfinite (qplus[i]))
+      return CHAPLYGIN_EDOM;
+  if (!isfinite (sys->L0) || !isfinite (sys->Delta) || !(sys->Delta > 0.0)
+      || !isfinite (tau) || !isfinite (peg[0]) || !isfinite (peg[1]))
+    return CHAPLYGIN_EDOM;
+  const double V = qplus[CHAPLYGIN_V], D = qplus[CHAPLYGIN_D];
+  if (V == 0.0 || D != (V > 0.0 ? 0.0 : sys->Delta))
+    return CHAPLYGIN_ESTATE;
+  fmpq_t L0, Delta, E, H, n, t;
+  fmpq *v[] = { L0, Delta, E, H, n, t };
+  for (int i = 0; i < 6; i++)
+    fmpq_init (v[i]);
+  q_of_double (L0, sys->L0);
+  q_of_double (Delta, sys->Delta);
+  /* n = 1 + l0^2; H = n Omega; E = V^2/2 + H Omega/2 */
+  fmpq_set (n, L0);
+  if (V < 0.0)
+    fmpq_add (n, n, Delta);
+  fmpq_mul (n, n, n);
+  fmpq_add_ui (n, n, 1);
+  q_of_double (t, qplus[CHAPLYGIN_OMEGA]);
+  fmpq_mul (H, n, t);
+  fmpq_mul (E, H, t);
+  q_of_double (t, V);
+  fmpq_addmul (E, t, t);
+  fmpq_div_2exp (E, E, 1);
+  const int status = orbit_make (L0, Delta, V > 0.0 ? 1 : -1, E, H,
+                                 qplus[CHAPLYGIN_THETA], tau, peg, request,
+                                 orbit);
+  for (int i = 0; i < 6; i++)
+    fmpq_clear (v[i]);
+  return status;
+}
+
+int
 chaplygin_certified_orbit_new_exact (const double L0[2],
                                      const double Delta[2], int dir,
                                      const double E[2], const double H[2],
@@ -588,6 +634,8 @@ chaplygin_certified_orbit_cap (chaplygin_certified_orbit *orbit,
   if (!orbit || max_bits < CAP_MIN || max_bits > CAP_MAX)
     return CHAPLYGIN_EINVAL;
   orbit->cap = max_bits;
+  if ((unsigned long) orbit->prec > max_bits)
+    orbit->prec = (slong) max_bits;     /* valid balls, only wider */
   return CHAPLYGIN_SUCCESS;
 }
 
@@ -624,6 +672,24 @@ chaplygin_certified_orbit_free (chaplygin_certified_orbit *o)
   fmpq_clear (o->tau_q);
   free (o);
   return CHAPLYGIN_SUCCESS;
+}
+
+/* The requested members of the bounds B into OUT. */
+static void
+copy_bounds (unsigned request, const chaplygin_certified_bounds *b,
+             chaplygin_certified_bounds *out)
+{
+  memcpy (out->E, b->E, sizeof b->E);
+  memcpy (out->H, b->H, sizeof b->H);
+  if (request & CHAPLYGIN_WANT_THETA)
+    memcpy (out->theta, b->theta, sizeof b->theta);
+  if (request & CHAPLYGIN_WANT_TAU)
+    memcpy (out->tau, b->tau, sizeof b->tau);
+  if (request & CHAPLYGIN_WANT_PEG)
+    {
+      memcpy (out->peg_x, b->peg_x, sizeof b->peg_x);
+      memcpy (out->peg_y, b->peg_y, sizeof b->peg_y);
+    }
 }
 
 /* ---- the certified step's outputs ------------------------------------- */
@@ -676,67 +742,75 @@ orbit_commit (chaplygin_certified_orbit *o, step_out *r)
   o->n++;
 }
 
-/* V- (sign S) and, on a reversal, Dc: the square roots of exact rationals,
-   exact where those are squares, else balls at PREC. */
+/* *X = SIGN sqrt(R) - SHIFT rounded (R >= 0 exact; SHIFT may be null):
+   exactly where R is the square of a rational, else by balls from PREC
+   bits, doubled up to CAP (no replay: R is exact).  A status. */
 static int
-round_algebraic (const chaplygin_certified_orbit *o, const step_plan *p,
-                 slong prec, step_out *r)
+round_root (const fmpq_t r, int sign, const fmpq *shift, slong prec,
+            unsigned long cap, double *x)
 {
-  fmpq_t v2, s;
-  arb_t b;
-  fmpq_init (v2);
+  fmpq_t s;
   fmpq_init (s);
-  arb_init (b);
-  int rc = ROUND_OK;
-  const int sign = p->reversal ? -o->dir : o->dir;
-  v2_at (v2, o->E, o->H, o->l[p->leave]);
-  if (q_sqrt_exact (s, v2))
+  int status = CHAPLYGIN_ECAP;
+  if (q_sqrt_exact (s, r))
     {
       if (sign < 0)
         fmpq_neg (s, s);
-      rc = round_q (s, &r->ev.Vminus, NULL) == CHAPLYGIN_SUCCESS
-        ? ROUND_OK : ROUND_RANGE;
+      if (shift)
+        fmpq_sub (s, s, shift);
+      status = round_q (s, x, NULL);
     }
   else
     {
-      arb_set_fmpq (b, v2, prec);
-      arb_sqrt (b, b, prec);
-      if (sign < 0)
-        arb_neg (b, b);
-      rc = round_ball (b, &r->ev.Vminus);
-    }
-  r->ev.Dc = 0.0;
-  if (rc == ROUND_OK && p->reversal)
-    {
-      /* Dc = side sqrt(-q) - L0, on the side of the start */
-      const int side = fmpq_sgn (o->l[p->start]);
-      fmpq_neg (v2, p->q);
-      if (q_sqrt_exact (s, v2))
+      arb_t b, t;
+      arb_init (b);
+      arb_init (t);
+      for (; (unsigned long) prec <= cap; prec *= 2)
         {
-          if (side < 0)
-            fmpq_neg (s, s);
-          fmpq_sub (s, s, o->L0);
-          rc = round_q (s, &r->ev.Dc, NULL) == CHAPLYGIN_SUCCESS
-            ? ROUND_OK : ROUND_RANGE;
-        }
-      else
-        {
-          arb_t L;
-          arb_init (L);
-          arb_set_fmpq (b, v2, prec);
+          arb_set_fmpq (b, r, prec);
           arb_sqrt (b, b, prec);
-          if (side < 0)
+          if (sign < 0)
             arb_neg (b, b);
-          arb_set_fmpq (L, o->L0, prec);
-          arb_sub (b, b, L, prec);
-          rc = round_ball (b, &r->ev.Dc);
-          arb_clear (L);
+          if (shift)
+            {
+              arb_set_fmpq (t, shift, prec);
+              arb_sub (b, b, t, prec);
+            }
+          const int rr = round_ball (b, x);
+          if (rr != ROUND_UNDECIDED)
+            {
+              status = rr == ROUND_OK ? CHAPLYGIN_SUCCESS : CHAPLYGIN_ERANGE;
+              break;
+            }
         }
+      arb_clear (b);
+      arb_clear (t);
     }
-  fmpq_clear (v2);
   fmpq_clear (s);
-  arb_clear (b);
-  return rc;
+  return status;
+}
+
+/* The event's V- (the sign of the new dir) and, on a reversal, its
+   turning point Dc = side sqrt(-q) - L0 (side: the start's sign of l).
+   A status. */
+static int
+round_algebraic (const chaplygin_certified_orbit *o, const step_plan *p,
+                 step_out *r)
+{
+  fmpq_t t;
+  fmpq_init (t);
+  const int sign = p->reversal ? -o->dir : o->dir;
+  v2_at (t, o->E, o->H, o->l[p->leave]);
+  int status = round_root (t, sign, NULL, o->prec, o->cap, &r->ev.Vminus);
+  r->ev.Dc = 0.0;
+  if (status == CHAPLYGIN_SUCCESS && p->reversal)
+    {
+      fmpq_neg (t, p->q);
+      status = round_root (t, fmpq_sgn (o->l[p->start]), o->L0, o->prec,
+                           o->cap, &r->ev.Dc);
+    }
+  fmpq_clear (t);
+  return status;
 }
 
 /* Round ball B into *X and its bounds OUT (may be null); accumulate the
@@ -771,7 +845,9 @@ try_step (const chaplygin_certified_orbit *o, step_out *r, int *espin)
     return ROUND_RANGE;
   r->st.dir = p->reversal ? -o->dir : o->dir;
   r->ev.reversal = p->reversal;
-  rc = round_algebraic (o, p, prec, r);
+  const int status = round_algebraic (o, p, r);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status == CHAPLYGIN_ERANGE ? ROUND_RANGE : ROUND_CAP;
   r->st.V = r->ev.Vminus;
   /* the sums */
   arb_set (r->theta, o->theta);
@@ -843,6 +919,8 @@ chaplygin_certified_orbit_step (chaplygin_certified_orbit *o,
         status = CHAPLYGIN_ESPIN;
       else if (rc == ROUND_RANGE)
         status = CHAPLYGIN_ERANGE;
+      else if (rc == ROUND_CAP)
+        status = CHAPLYGIN_ECAP;
       else if (rc == ROUND_UNDECIDED)
         {
           /* Ziv: twice the precision, the orbit replayed from its start */
@@ -865,31 +943,55 @@ chaplygin_certified_orbit_step (chaplygin_certified_orbit *o,
   if (ev)
     *ev = r.ev;
   if (bounds)
-    {
-      unsigned want = o->request;
-      bounds->E[0] = r.b.E[0];
-      bounds->E[1] = r.b.E[1];
-      bounds->H[0] = r.b.H[0];
-      bounds->H[1] = r.b.H[1];
-      if (want & CHAPLYGIN_WANT_THETA)
-        {
-          bounds->theta[0] = r.b.theta[0];
-          bounds->theta[1] = r.b.theta[1];
-        }
-      if (want & CHAPLYGIN_WANT_TAU)
-        {
-          bounds->tau[0] = r.b.tau[0];
-          bounds->tau[1] = r.b.tau[1];
-        }
-      if (want & CHAPLYGIN_WANT_PEG)
-        {
-          bounds->peg_x[0] = r.b.peg_x[0];
-          bounds->peg_x[1] = r.b.peg_x[1];
-          bounds->peg_y[0] = r.b.peg_y[0];
-          bounds->peg_y[1] = r.b.peg_y[1];
-        }
-    }
+    copy_bounds (o->request, &r.b, bounds);
   out_clear (&r);
+  return CHAPLYGIN_SUCCESS;
+}
+
+int
+chaplygin_certified_orbit_state (const chaplygin_certified_orbit *o,
+                                 chaplygin_discrete_state *out,
+                                 chaplygin_certified_bounds *bounds)
+{
+  if (!o || !out)
+    return CHAPLYGIN_EINVAL;
+  chaplygin_discrete_state st = { 0 };
+  chaplygin_certified_bounds b;
+  int rc = ROUND_OK;
+  st.dir = o->dir;
+  if (round_q (o->E, &st.E, b.E) != CHAPLYGIN_SUCCESS
+      || round_q (o->H, &st.H, b.H) != CHAPLYGIN_SUCCESS)
+    return CHAPLYGIN_ERANGE;
+  fmpq_t v2;
+  fmpq_init (v2);
+  v2_at (v2, o->E, o->H, o->l[o->dir > 0 ? 0 : 1]);
+  int status = round_root (v2, o->dir, NULL, o->prec, o->cap, &st.V);
+  fmpq_clear (v2);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status;
+  /* the balls decided these roundings when the last step was taken */
+  if (o->request & CHAPLYGIN_WANT_THETA)
+    take (o->theta, &st.theta, b.theta, &rc);
+  if (o->request & CHAPLYGIN_WANT_TAU)
+    {
+      if (o->tau_exact)
+        {
+          if (round_q (o->tau_q, &st.tau, b.tau) != CHAPLYGIN_SUCCESS)
+            rc = ROUND_RANGE;
+        }
+      else
+        take (o->tau, &st.tau, b.tau, &rc);
+    }
+  if (o->request & CHAPLYGIN_WANT_PEG)
+    {
+      take (o->peg[0], &st.peg[0], b.peg_x, &rc);
+      take (o->peg[1], &st.peg[1], b.peg_y, &rc);
+    }
+  if (rc != ROUND_OK)
+    return rc == ROUND_RANGE ? CHAPLYGIN_ERANGE : CHAPLYGIN_ECAP;
+  *out = st;
+  if (bounds)
+    copy_bounds (o->request, &b, bounds);
   return CHAPLYGIN_SUCCESS;
 }
 

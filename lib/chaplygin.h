@@ -1347,6 +1347,26 @@ int chaplygin_certified_orbit_new_exact (const double L0[2],
                                          const double peg[2], unsigned request,
                                          chaplygin_certified_orbit **orbit);
 
+/** As chaplygin_certified_orbit_new, from the post-collision phase state
+   @qplus $= (D^+, V^+, theta^+, Omega^+)$ taken as exact: $E$ (3.3) and $H$
+   (3.4) are formed from it exactly,
+     E = V^2/2 + (1 + l0^2) Omega^2/2,   H = (1 + l0^2) Omega,
+   $l_0 = L_0 + D^+$, where chaplygin_discrete_state_from_phase rounds them.
+   @tau and @peg start the time and the peg.
+
+   Domain: finite arguments; $D^+$ exactly 0 for $V^+ > 0$ and `Delta` for
+   $V^+ < 0$.
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer, unknown request bits, a build
+   without Arb), CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE ($V^+ = 0$, or $D^+$ not the
+   end $V^+$ implies), CHAPLYGIN_ENOMEM.
+ */
+int chaplygin_certified_orbit_new_phase (const chaplygin_discrete *sys,
+                                         const double qplus[4], double tau,
+                                         const double peg[2],
+                                         unsigned request,
+                                         chaplygin_certified_orbit **orbit);
+
 /** Set the caps of @orbit: @max_bits bounds both the working precision of its
    balls and the size in bits of its exact energy and momentum (numerator
    plus denominator).  The default, 1048576 (@pxref{Certified method}),
@@ -1386,6 +1406,21 @@ int chaplygin_certified_orbit_step (chaplygin_certified_orbit *orbit,
                                     chaplygin_discrete_state *out,
                                     chaplygin_discrete_event *ev,
                                     chaplygin_certified_bounds *bounds);
+
+/** The state of @orbit after the collisions it has certified (the start
+   before the first), rounded as chaplygin_certified_orbit_step rounds it:
+   $E$, $H$, `dir`, the heading, time and peg as the orbit's request says
+   (else 0), and `V` = $V^+$ from the exact $E$ and $H$; @bounds (may be null)
+   as for chaplygin_certified_orbit_step.
+
+   Errors: CHAPLYGIN_EINVAL (null @orbit or @out), CHAPLYGIN_ERANGE,
+   CHAPLYGIN_ECAP.
+
+   @bounds: (optional=True)
+ */
+int chaplygin_certified_orbit_state (const chaplygin_certified_orbit *orbit,
+                                     chaplygin_discrete_state *out,
+                                     chaplygin_certified_bounds *bounds);
 
 /** Set `*@n` to the number of collisions @orbit has certified.
 

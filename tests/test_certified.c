@@ -656,6 +656,97 @@ START_TEST (step_method)
 }
 END_TEST
 
+/* chaplygin_certified_orbit_new_phase forms E and H from the phase state
+   exactly: where they are doubles (V = 3/4, Omega = 1/2 at l0 = 1/2:
+   H = 5/8, E = 7/16) its orbit is the one started from them, bit for bit;
+   its domain errors. */
+START_TEST (phase_start)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, 0.5, 1.25) == 0);
+  const double q[4] = { 0.0, 0.75, 0.1, 0.5 }, peg[2] = { 1, 2 };
+  chaplygin_certified_orbit *a, *b;
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0.5, peg,
+                                                  CHAPLYGIN_WANT_ALL, &a)
+             == 0);
+  const double l0[2] = { 0.5, 1 }, d[2] = { 1.25, 1 }, e[2] = { 7, 16 },
+    h[2] = { 5, 8 };
+  ck_assert (chaplygin_certified_orbit_new_exact (l0, d, 1, e, h, 0.1, 0.5,
+                                                  peg, CHAPLYGIN_WANT_ALL, &b)
+             == 0);
+  for (int k = 0; k < 5; k++)
+    {
+      chaplygin_discrete_state sa, sb;
+      ck_assert (chaplygin_certified_orbit_step (a, &sa, NULL, NULL) == 0);
+      ck_assert (chaplygin_certified_orbit_step (b, &sb, NULL, NULL) == 0);
+      ck_assert (sa.E == sb.E && sa.H == sb.H && sa.theta == sb.theta
+                 && sa.tau == sb.tau && sa.peg[0] == sb.peg[0]
+                 && sa.peg[1] == sb.peg[1] && sa.dir == sb.dir);
+    }
+  /* the state accessor: the last step's state */
+  chaplygin_discrete_state sa, sb;
+  chaplygin_certified_bounds ba;
+  ck_assert (chaplygin_certified_orbit_step (a, &sa, NULL, NULL) == 0);
+  ck_assert (chaplygin_certified_orbit_state (a, &sb, &ba) == 0);
+  ck_assert (sa.E == sb.E && sa.H == sb.H && sa.theta == sb.theta
+             && sa.tau == sb.tau && sa.peg[1] == sb.peg[1] && sa.V == sb.V
+             && sa.dir == sb.dir);
+  ck_assert (ba.E[0] <= sb.E && sb.E <= ba.E[1]);
+  chaplygin_certified_orbit_free (a);
+  chaplygin_certified_orbit_free (b);
+  /* a start whose E is not a double: V = 1/10, Omega = 1/3 (doubles) at
+     l0 = L0 + Delta = 1.75 (V < 0): the state accessor gives E and H
+     nearest to E = V^2/2 + (1 + l0^2) Omega^2/2, H = (1 + l0^2) Omega
+     formed here in exact rationals, and V+ = V itself */
+  const double qs[4] = { 1.25, -0.1, 0, 1.0 / 3.0 };
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, qs, 0, peg, 0, &a)
+             == 0);
+  ck_assert (chaplygin_certified_orbit_state (a, &sa, NULL) == 0);
+  {
+    fmpq_t n, om, v, E, H;
+    arf_t t;
+    fmpq_init (n);
+    fmpq_init (om);
+    fmpq_init (v);
+    fmpq_init (E);
+    fmpq_init (H);
+    arf_init (t);
+    fmpq_set_si (n, 7, 4);
+    fmpq_mul (n, n, n);
+    fmpq_add_ui (n, n, 1);
+    arf_set_d (t, 1.0 / 3.0);
+    arf_get_fmpq (om, t);
+    arf_set_d (t, -0.1);
+    arf_get_fmpq (v, t);
+    fmpq_mul (H, n, om);
+    fmpq_mul (E, om, om);
+    fmpq_mul (E, E, n);
+    fmpq_addmul (E, v, v);
+    fmpq_div_2exp (E, E, 1);
+    check_q (E, sa.E, NULL, "E0", 0);
+    check_q (H, sa.H, NULL, "H0", 0);
+    fmpq_clear (n);
+    fmpq_clear (om);
+    fmpq_clear (v);
+    fmpq_clear (E);
+    fmpq_clear (H);
+    arf_clear (t);
+  }
+  ck_assert (sa.V == -0.1 && sa.dir == -1);
+  chaplygin_certified_orbit_free (a);
+  const double wrong_end[4] = { 1.25, 0.75, 0, 0.5 }, still[4] = { 0, 0, 0,
+    0.5 }, nan[4] = { 0, NAN, 0, 1 };
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, wrong_end, 0, peg, 0,
+                                                  &a) == CHAPLYGIN_ESTATE);
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, still, 0, peg, 0, &a)
+             == CHAPLYGIN_ESTATE);
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, nan, 0, peg, 0, &a)
+             == CHAPLYGIN_EDOM && a == NULL);
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg, 16, &a)
+             == CHAPLYGIN_EINVAL);
+}
+END_TEST
+
 /* The cap: with 64 bits the exact state of the first collision does not
    fit, and the step says so (the orbit unchanged); raised, it steps. */
 START_TEST (cap)
@@ -761,6 +852,7 @@ main (void)
   tu_add (s, "exact_boundaries", exact_boundaries);
   tu_add (s, "straight_exact_time", straight_exact_time);
   tu_add (s, "step_method", step_method);
+  tu_add (s, "phase_start", phase_start);
   tu_add (s, "cap", cap);
   tu_add (s, "errors", errors);
   int r = tu_run (s);

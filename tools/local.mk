@@ -49,10 +49,11 @@ CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
 	tools/fuzz-replay.sh \
 	tools/test-scenes.sh tools/test-eq.sh tools/test-manpage.sh \
 	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
-	tools/test-scaled.sh tools/test-output.sh tools/test-plot-scenes.sh
+	tools/test-scaled.sh tools/test-output.sh tools/test-plot-scenes.sh \
+	tools/test-certified.sh
 TESTS += $(CLI_TESTS)
 EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
-	tools/test-scaled.sh \
+	tools/test-scaled.sh tools/test-certified.sh \
 	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
 	tools/test-output.sh tools/test-plot-scenes.sh tools/fuzz-replay.sh tools/test-scenes.sh tools/test-eq.sh \
 	tools/test-manpage.sh tools/installcheck-examples.sh tools/fuzz-corpus tools/fuzz-scene.dict \

@@ -20,6 +20,10 @@ method_line (FILE *out, const chaplygin_scene *sc, int compare)
     fputs ("# method: formulas (no integration)\n", out);
   else if (compare || chaplygin_scene_model (sc) != CHAPLYGIN_SCENE_DISCRETE)
     fputs ("# method: closed-form (the only method of this model)\n", out);
+  else if (strcmp (method, "certified") == 0)
+    fputs ("# method: certified (every number the nearest double to the "
+           "exact value of the model from the scene's exact start; "
+           "tolerance not used)\n", out);
   else if (strcmp (method, "closed-form") == 0
            || chaplygin_scene_number (sc, "tolerance", &tolerance) != 0)
     fputs ("# method: closed-form (tolerance not used)\n", out);

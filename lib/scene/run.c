@@ -316,6 +316,8 @@ typedef struct
   double stop_tau;              /* [run] stop_tau (NAN: none) */
   int m;                        /* the velocity scaling: the run is in units
                                    with V, Omega times 2^m (0: none) */
+  chaplygin_certified_orbit *orbit;     /* method certified: the exact
+                                           orbit (else null) */
 } skate;
 
 /* Where a segment starts: the post-collision state and its phase (in the
@@ -335,6 +337,30 @@ skate_omega (const skate *k, double H, double D, double *Omega)
   return chaplygin_discrete_omega (k->L0, D, H, Omega);
 }
 
+/* The next collision of the certified orbit (IN is its current state);
+   the fields not requested are IN's. */
+static int
+certified_step (const skate *k, const chaplygin_discrete_state *in,
+                unsigned request, chaplygin_discrete_state *out,
+                chaplygin_discrete_event *ev)
+{
+  chaplygin_discrete_state next;
+  int status = chaplygin_certified_orbit_step (k->orbit, &next, ev, NULL);
+  if (status != CHAPLYGIN_SUCCESS)
+    return status;
+  if (!(request & CHAPLYGIN_WANT_THETA))
+    next.theta = in->theta;
+  if (!(request & CHAPLYGIN_WANT_TAU))
+    next.tau = in->tau;
+  if (!(request & CHAPLYGIN_WANT_PEG))
+    {
+      next.peg[0] = in->peg[0];
+      next.peg[1] = in->peg[1];
+    }
+  *out = next;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* One step of the return map (B.3)/(B.4) or (B.15), counted. */
 static int
 skate_step (const skate *k, const chaplygin_discrete_state *in,
@@ -348,6 +374,8 @@ skate_step (const skate *k, const chaplygin_discrete_state *in,
     k->rep->heading_evals++;
   if (k->massless)
     return chaplygin_massless_step (k->L0, in, request, out, ev);
+  if (k->orbit)
+    return certified_step (k, in, request, out, ev);
   return chaplygin_discrete_step (&k->sys, in, request, &k->opt, out, ev);
 }
 
@@ -530,6 +558,29 @@ skate_settings (skate *k, const scene *sc, chaplygin_scene_report *rep)
     k->request |= CHAPLYGIN_WANT_TAU;
 }
 
+/* Method certified: K's orbit from the scaled phase state Q taken exactly,
+   and *START's state its rounding (E and H the nearest to the exact ones,
+   where chaplygin_discrete_scaled_state rounds their formulas).  OK or
+   EMODEL. */
+static int
+certified_start (skate *k, const double q[4], segment_start *start)
+{
+  int status = chaplygin_certified_orbit_new_phase (&k->sys, q,
+                                                    start->st.tau,
+                                                    start->st.peg, k->request,
+                                                    &k->orbit);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_certified_orbit_state (k->orbit, &start->st, NULL);
+  if (status == CHAPLYGIN_SUCCESS)
+    return CHAPLYGIN_SCENE_OK;
+  chaplygin_certified_orbit_free (k->orbit);
+  k->orbit = NULL;
+  k->rep->library_status = status;
+  return report_fail (k->rep, CHAPLYGIN_SCENE_EMODEL, "%s: [run] method = "
+                      "certified: the start: %s", k->path,
+                      chaplygin_strerror (status));
+}
+
 /* Set up K for the scene SC and the initial post-collision state *START
    (in the units of K's velocity scaling).  Returns OK or EMODEL. */
 static int
@@ -584,6 +635,8 @@ skate_init (skate *k, const scene *sc, chaplygin_scene_report *rep,
   start->D0 = q[CHAPLYGIN_D];
   start->V0 = q[CHAPLYGIN_V];
   start->Omega0 = q[CHAPLYGIN_OMEGA];
+  if (!k->massless && k->opt.method == CHAPLYGIN_CERTIFIED)
+    return certified_start (k, q, start);
   return CHAPLYGIN_SCENE_OK;
 }
 
@@ -827,24 +880,22 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
 
 /* The discrete or massless scene SC; an early end (a stop condition, the
    row limit) said in the report. */
+/* The run of the skate K (set up by skate_init) from CUR. */
 static int
-skate_run (const scene *sc, sink *s)
+skate_run_from (const skate *k, const scene *sc, sink *s,
+                segment_start *cur)
 {
-  skate k;
-  segment_start cur;
   long end_n = 0;
   char why[WHY_MAX] = "";
   chaplygin_scene_report *rep = s->rep;
-  int rc = skate_init (&k, sc, rep, &cur);
-  if (rc != CHAPLYGIN_SCENE_OK)
-    return rc;
-  s->m = k.m;                   /* rows in the physical units */
+  int rc;
+  s->m = k->m;                   /* rows in the physical units */
   if (sink_begin (s) != 0)
     return CHAPLYGIN_SCENE_ESTOPPED;
   if (sc->samples > 0)
-    rc = skate_run_dense (&k, sc, &cur, s, &end_n, why);
+    rc = skate_run_dense (k, sc, cur, s, &end_n, why);
   else
-    rc = skate_run_collisions (&k, &cur, s, &end_n, why);
+    rc = skate_run_collisions (k, cur, s, &end_n, why);
   if (rc < 0 && s->full && !s->stopped)
     {
       snprintf (why, sizeof why, "max_rows: the limit of %ld rows is "
@@ -854,7 +905,7 @@ skate_run (const scene *sc, sink *s)
     }
   if (rc < 0)
     return report_fail (rep, CHAPLYGIN_SCENE_ESTOPPED, "%s: stopped by the "
-                        "caller", k.path);
+                        "caller", k->path);
   if (rc != CHAPLYGIN_SCENE_OK)
     return rc;
   /* end_n: the collision of the last row (per collision) or segment
@@ -863,7 +914,7 @@ skate_run (const scene *sc, sink *s)
     {
       rep->early = 1;
       snprintf (rep->note, sizeof rep->note, "%s: stopped at collision %ld "
-                "of %ld: %s", k.path, end_n, sc->collisions, why);
+                "of %ld: %s", k->path, end_n, sc->collisions, why);
       snprintf (rep->end, sizeof rep->end, "stopped at collision %ld of %ld: "
                 "%s", end_n, sc->collisions, why);
     }
@@ -871,6 +922,19 @@ skate_run (const scene *sc, sink *s)
     snprintf (rep->end, sizeof rep->end, "complete: collision %ld of %ld",
               end_n, sc->collisions);
   return CHAPLYGIN_SCENE_OK;
+}
+
+static int
+skate_run (const scene *sc, sink *s)
+{
+  skate k;
+  segment_start cur;
+  int rc = skate_init (&k, sc, s->rep, &cur);
+  if (rc != CHAPLYGIN_SCENE_OK)
+    return rc;
+  rc = skate_run_from (&k, sc, s, &cur);
+  chaplygin_certified_orbit_free (k.orbit);
+  return rc;
 }
 
 /* ------------------------------------------------------------------ */

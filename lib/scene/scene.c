@@ -117,7 +117,7 @@ static const char *const section_keys[SEC_COUNT] = {
 
 static const char *const model_names[] = { "discrete", "smooth", "massless" };
 static const char *const method_names[] =
-  { "closed-form", "quadrature", "ode" };
+  { "closed-form", "quadrature", "ode", "certified" };
 static const char *const kind_names[] =
   { "none", "sigma4", "stability", "basins" };
 static const char *const yes_no[] = { "no", "yes" };
@@ -259,7 +259,8 @@ static const key_spec keys[K_COUNT] = {
   [K_OUTPUTS] = { SEC_RUN, "outputs", V_OUTPUTS, F (outputs), NOWORDS, 0, 0,
                   0, { O, O, O }, { NULL, NULL, NULL }, NOT_SWEPT },
   [K_METHOD] = { SEC_RUN, "method", V_WORD, F (method),
-                 WORDS (method_names, 0, "closed-form, quadrature, ode"), 0,
+                 WORDS (method_names, 0,
+                        "closed-form, quadrature, ode, certified"), 0,
                  0, 0, { O, O, O }, { NULL, NULL, NULL }, NOT_SWEPT },
   [K_TOLERANCE] = { SEC_RUN, "tolerance", V_INTERVAL, F (tolerance), NULL,
                     0, 0, "(1e-15 <= tolerance < 1)", 1e-15, 1.0, 1,
@@ -346,9 +347,11 @@ key_use (const scene *sc, int k, const char **why)
         rule = sc->compare ? R : N;
       if (rule == T)
         {
-          rule = sc->method == CHAPLYGIN_CLOSED_FORM ? N : O;
-          special = "not used by method closed-form (only by quadrature and "
-            "ode)";
+          rule = sc->method == CHAPLYGIN_CLOSED_FORM
+            || sc->method == CHAPLYGIN_CERTIFIED ? N : O;
+          special = sc->method == CHAPLYGIN_CERTIFIED
+            ? "not used by method certified (only by quadrature and ode)"
+            : "not used by method closed-form (only by quadrature and ode)";
         }
       *why = rule == R ? (ks->use[i] == C ? "required by compare = smooth"
                           : model_required[i]) : rule == O ? "" : special;
@@ -1027,6 +1030,29 @@ last_of_pair (const parse_ctx *c, int k, int a, int b)
 }
 
 /* The checks of key K (given, at its line) that need the whole scene. */
+/* method = certified: what this build and the certified method cover (a
+   discrete run with per-collision rows; stop_H and stop_tau read its
+   certified states). */
+static void
+check_certified (parse_ctx *c, int k, long line)
+{
+  const scene *sc = &c->sc;
+  int available = 0;
+  (void) chaplygin_method_available (CHAPLYGIN_CERTIFIED, &available);
+  if (!available)
+    fail_key (c, k, line, "value 'certified': this build has no certified "
+              "method (the library was configured without Arb)");
+  else if (sc->sweep != SWEEP_NONE)
+    fail_key (c, k, line, "value 'certified': sweeps are not certified "
+              "(only runs of model discrete are)");
+  else if (sc->samples > 0)
+    fail_key (c, k, line, "value 'certified': dense output (samples) is "
+              "not certified (the run gives one row per collision)");
+  else if (sc->stop_fate)
+    fail_key (c, k, line, "value 'certified': stop_fate is not certified "
+              "(stop_H and stop_tau are)");
+}
+
 static void
 check_key (parse_ctx *c, int k)
 {
@@ -1045,6 +1071,8 @@ check_key (parse_ctx *c, int k)
            && sc->model != SCENE_DISCRETE)
     fail_key (c, k, line, "value '" RAW_FMT "': model %s has only "
               "closed-form", RAW (c, k), model_names[sc->model]);
+  else if (k == K_METHOD && sc->method == CHAPLYGIN_CERTIFIED)
+    check_certified (c, k, line);
   else if (k == K_OUTPUTS && (sc->outputs & SCENE_OUT_PEG)
            && sc->model == SCENE_SMOOTH)
     fail_key (c, k, line, "'peg' is not an output of model smooth");

@@ -1,0 +1,140 @@
+#!/bin/sh
+# test-certified.sh -- TAP tests of "chaplygin run" with method = certified:
+# E and H of every row against the exact model computed here in Python's
+# exact fractions (float(Fraction) is correctly rounded: a separate route
+# from the library's FLINT rationals), the other columns against the
+# closed form, the provenance, early stops, and the scenes it refuses.
+# In a build without Arb the scene is refused with a message that says so,
+# and the rest is skipped.
+# Run by `make check', or: top_builddir=. top_srcdir=. sh tools/test-certified.sh
+# POSIX sh (dash).
+
+set -u
+
+top_builddir=${top_builddir:-.}
+prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
+
+. "${top_srcdir:-.}/tools/tap-lib.sh"
+tap_start test-certified 8
+
+# scene NAME EXTRA-RUN-LINES: Figure 3's line (L0 = -1/2, Delta = 1) from
+# V = 0.3, Omega = 0.8 (a reversal, then forward motion), 30 collisions.
+scene () {
+  {
+    printf '[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n'
+    printf '[initial]\nV = 0.3\nOmega = 0.8\n[run]\ncollisions = 30\n'
+    printf 'outputs = E, H, theta, tau, peg\n%s\n' "$2"
+  } >"$tmp/$1.ini"
+}
+
+scene cert 'method = certified'
+scene closed ''
+run run "$tmp/cert.ini"
+if test "$rc" -ne 0 && grep "no certified method" "$tmp/err" >/dev/null; then
+  result 0 "a build without Arb refuses method = certified, saying why"
+  i=2
+  while test $i -le 8; do
+    echo "ok $i # SKIP no certified method in this build"
+    i=$((i + 1))
+  done
+  exit 0
+fi
+cp "$tmp/out" "$tmp/cert.csv"
+cp "$tmp/raw" "$tmp/cert.raw"
+ok=1
+test "$rc" -eq 0 && test "$(wc -l <"$tmp/cert.csv")" -eq 32 && ok=0
+result "$ok" "method = certified runs: 31 rows and a header"
+
+ok=1
+grep '^# method: certified' "$tmp/cert.raw" >/dev/null && ok=0
+result "$ok" "the provenance names the certified method"
+
+# E and H of every row: the exact map (3.7) from the exact start, the
+# reversal decided by the minimum of V^2 over the leg
+if command -v python3 >/dev/null 2>&1; then
+  ok=0
+  python3 - "$tmp/cert.csv" >"$tmp/py" 2>&1 <<'EOF' || ok=1
+import csv, sys
+from fractions import Fraction as F
+rows = list(csv.DictReader(open(sys.argv[1])))
+L0, Delta = F(-0.5), F(1)
+ends = [L0, L0 + Delta]
+V, Om = F(0.3), F(0.8)
+n0 = 1 + ends[0] ** 2
+E, H, d = V * V / 2 + n0 * Om * Om / 2, n0 * Om, 1
+bad = 0
+for r in rows:
+    k = int(r['n'])
+    if k > 0:
+        s = 0 if d > 0 else 1
+        la, lb = ends[s], ends[1 - s]
+        lmin2 = 0 if la * lb <= 0 else min(la * la, lb * lb)
+        rev = 2 * E * (1 + lmin2) - H * H <= 0
+        b, bp = (la, lb) if rev else (lb, la)
+        C1 = -Delta ** 2 / (2 * (1 + b * b) ** 2 * (1 + bp * bp))
+        C2 = (1 + b * bp) / (1 + b * b)
+        E, H = E + C1 * H * H, C2 * H
+        d = -d if rev else d
+        if int(r['reversal']) != int(rev):
+            print('row %d: reversal %s, exact %d' % (k, r['reversal'], rev))
+            bad += 1
+    for name, x in (('E', E), ('H', H)):
+        if float(r[name]) != float(x):
+            print('row %d: %s = %r, nearest %r' % (k, name, float(r[name]),
+                                                 float(x)))
+            bad += 1
+sys.exit(1 if bad else 0)
+EOF
+  sed 's/^/# /' "$tmp/py"
+  result "$ok" "E and H of every row are the nearest doubles to the exact map's"
+else
+  count=$((count + 1))
+  echo "ok $count # SKIP no python3"
+fi
+
+# the other columns: the closed form's within its few ulps (1e-14
+# relative, or absolute below 1: theta and the peg pass through 0)
+run run "$tmp/closed.ini"
+ok=1
+test "$rc" -eq 0 && awk -F, '
+  function abs(x) { return x < 0 ? -x : x }
+  NR == FNR { for (i = 1; i <= NF; i++) a[FNR, i] = $i; next }
+  { for (i = 1; i <= NF; i++) {
+      s = abs(a[FNR, i]) > 1 ? abs(a[FNR, i]) : 1
+      if (abs(a[FNR, i] - $i) > 1e-14 * s) { print FNR, i, a[FNR, i], $i; bad = 1 } } }
+  END { exit bad }' "$tmp/cert.csv" "$tmp/out" >&2 && ok=0
+result "$ok" "every column within 1e-14 of the closed form's"
+
+scene stop 'method = certified
+stop_tau = 10'
+run run "$tmp/stop.ini"
+ok=1
+test "$rc" -eq 0 && grep 'stop_tau' "$tmp/raw" >/dev/null && ok=0
+result "$ok" "stop_tau ends a certified run early"
+
+scene dense 'method = certified
+samples = 10'
+run run "$tmp/dense.ini"
+ok=1
+test "$rc" -eq 2 && grep "dense output (samples) is not certified" "$tmp/err" >/dev/null && ok=0
+result "$ok" "samples with method = certified: exit 2, not certified"
+
+scene fate 'method = certified
+stop_fate = yes'
+run run "$tmp/fate.ini"
+ok=1
+test "$rc" -eq 2 && grep "stop_fate is not certified" "$tmp/err" >/dev/null && ok=0
+result "$ok" "stop_fate with method = certified: exit 2, not certified"
+
+scene tol 'method = certified
+tolerance = 1e-9'
+run run "$tmp/tol.ini"
+ok=1
+test "$rc" -eq 2 && grep "not used by method certified" "$tmp/err" >/dev/null && ok=0
+result "$ok" "tolerance with method = certified: exit 2, not used"
+
+if test "$count" -ne "$plan"; then
+  echo "# ran $count tests, planned $plan" >&2
+  exit 1
+fi
+exit 0
