@@ -933,9 +933,12 @@ step_general (const chaplygin_discrete *sys,
               chaplygin_discrete_event *ev)
 {
 #if HAVE_ARB
-  /* exact decisions and balls (certified.c); tol and precision unused */
+  /* exact decisions and balls (certified.c); tol and precision unused
+     (a precision of neither kind is refused, as for the others) */
   if (opt && opt->method == CHAPLYGIN_CERTIFIED)
-    return chp_certified_step (sys, in, request, out, ev);
+    return opt->precision == CHAPLYGIN_PREC_DOUBLE
+      || opt->precision == CHAPLYGIN_PREC_SINGLE
+      ? chp_certified_step (sys, in, request, out, ev) : CHAPLYGIN_EINVAL;
 #endif
   return step_core (sys, in, request, opt, out, ev);
 }

@@ -761,7 +761,9 @@ START_TEST (test_step_errors)
       { CHAPLYGIN_QUADRATURE, 1e-10, CHAPLYGIN_PREC_DOUBLE } };
     const chaplygin_options no[] = {
       { CHAPLYGIN_CLOSED_FORM, 1e-13, (chaplygin_precision) 2 },
-      { (chaplygin_method) 3, 1e-13, CHAPLYGIN_PREC_DOUBLE },
+      { (chaplygin_method) 4, 1e-13, CHAPLYGIN_PREC_DOUBLE },
+      { (chaplygin_method) -1, 1e-13, CHAPLYGIN_PREC_DOUBLE },
+      { CHAPLYGIN_CERTIFIED, 1e-13, (chaplygin_precision) 2 },
       { CHAPLYGIN_QUADRATURE, 1.0, CHAPLYGIN_PREC_DOUBLE },
       { CHAPLYGIN_QUADRATURE, 1e-10, (chaplygin_precision) -1 },
       { CHAPLYGIN_ODE, 1e-16, CHAPLYGIN_PREC_DOUBLE } };

@@ -274,7 +274,7 @@ status_name (long long status)
 {
   static const char *const names[] = { "SUCCESS", "EINVAL", "EDOM",
                                        "ESTATE", "ESPIN", "ERANGE",
-                                       "ENOCONV", "ENOMEM" };
+                                       "ENOCONV", "ENOMEM", "ECAP" };
   if (status >= 0 && (size_t) status < sizeof names / sizeof names[0])
     return names[status];
   return NULL;
