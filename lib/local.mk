@@ -49,8 +49,10 @@ lib_libchaplygin_core_la_SOURCES += \
 	lib/cert-leg.h \
 	lib/cert-leg.c \
 	lib/certified.c
+else
+lib_libchaplygin_core_la_SOURCES += lib/certified-none.c
 endif
-EXTRA_DIST += lib/certified.h
+EXTRA_DIST += lib/certified.h lib/certified-none.c
 lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(FP_CFLAGS) \
 	$(CODEGEN_CFLAGS) $(GSL_CFLAGS)
 lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(ARB_LIBS) $(CODE_COVERAGE_LIBS)
