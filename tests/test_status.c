@@ -116,6 +116,51 @@ START_TEST (test_ratio_helpers)
 }
 END_TEST
 
+/* chaplygin_method_available: the three methods always, the certified
+   one where configure found Arb; without it, the certified functions
+   refuse with CHAPLYGIN_EINVAL and set no orbit. */
+START_TEST (test_method_available)
+{
+  int a = -1;
+  for (int m = 0; m <= 2; m++)
+    ck_assert (chaplygin_method_available (m, &a) == 0 && a == 1);
+  ck_assert (chaplygin_method_available (CHAPLYGIN_CERTIFIED, &a) == 0
+             && a == HAVE_ARB);
+  ck_assert (chaplygin_method_available (4, &a) == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_method_available (-1, &a) == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_method_available (0, NULL) == CHAPLYGIN_EINVAL);
+#if !HAVE_ARB
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, 0.5, 1.0) == 0);
+  chaplygin_discrete_state st = { 1, 1.0, 0.5, 0, 0, { 0, 0 }, 0 };
+  chaplygin_certified_orbit *o = (chaplygin_certified_orbit *) &sys;
+  const double r[2] = { 1, 1 }, q[4] = { 0, 1, 0, 0.5 }, peg[2] = { 0, 0 };
+  unsigned long n;
+  ck_assert (chaplygin_certified_orbit_new (&sys, &st, 0, &o)
+             == CHAPLYGIN_EINVAL && !o);
+  o = (chaplygin_certified_orbit *) &sys;
+  ck_assert (chaplygin_certified_orbit_new_exact (r, r, 1, r, r, 0, 0, peg,
+                                                  0, &o) == CHAPLYGIN_EINVAL
+             && !o);
+  o = (chaplygin_certified_orbit *) &sys;
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg, 0, &o)
+             == CHAPLYGIN_EINVAL && !o);
+  ck_assert (chaplygin_certified_orbit_cap (NULL, 100) == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_step (NULL, &st, NULL, NULL)
+             == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_state (NULL, &st, NULL)
+             == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_collisions (NULL, &n)
+             == CHAPLYGIN_EINVAL);
+  ck_assert (chaplygin_certified_orbit_free (NULL) == CHAPLYGIN_SUCCESS);
+  chaplygin_options opt = CHAPLYGIN_OPTIONS_DEFAULT;
+  opt.method = CHAPLYGIN_CERTIFIED;
+  ck_assert (chaplygin_discrete_step (&sys, &st, 0, &opt, &st, NULL)
+             == CHAPLYGIN_EINVAL);
+#endif
+}
+END_TEST
+
 int
 main (void)
 {
@@ -123,6 +168,7 @@ main (void)
   TCase *tc = tcase_create ("status");
   tcase_add_test (tc, test_strerror);
   tcase_add_test (tc, test_options);
+  tcase_add_test (tc, test_method_available);
   suite_add_tcase (s, tc);
   TCase *th = tcase_create ("helpers");
   tcase_add_test (th, test_one_plus_L0_L0D);
