@@ -26,7 +26,9 @@
 #include "cert-round.h"
 #include "chaplygin.h"
 
-enum { RP = 300 };              /* the reference route's precision */
+/* the reference route's precision: 300 bits; more for the far slots,
+   where l = L0 + D must hold D beside L0 */
+static slong RP = 300;
 
 /* ---- the reference route ---------------------------------------------- */
 
@@ -38,10 +40,12 @@ typedef struct
   arb_t la, lt;                 /* leg start and turning point (rev) */
 } integrand;
 
-/* f(D) on a straight leg: l = L0 + D; heading |H|/sqrt((1+l^2) g), time
-   sqrt(1+l^2)/sqrt(g), g = 2E (1 + l^2) - H^2; on a reversal leg the
-   variable is w, l = lt + (la - lt) w^2 and the factors of w cancel:
-   |dl|/sqrt(g) = 2 |la - lt| dw/sqrt(2E (la - lt)(l + lt)). */
+/* The integrand: on a leg without a turning point nearby (q >= 0) in D,
+   l = L0 + D: heading |H|/sqrt((1+l^2) g), time sqrt(1+l^2)/sqrt(g),
+   g = 2E (1 + l^2) - H^2.  For q < 0 (WSUB) in w, l = s (lt + w^2) with
+   lt = sqrt(-q) the turning point, s the side: |dl|/sqrt(g) =
+   2 dw/sqrt(2E (2 lt + w^2)), with no singularity at the turning point
+   nor beside it (a slow start). */
 static int
 f_leg (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
 {
@@ -63,22 +67,14 @@ f_leg (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
     }
   else
     {
-      arb_t d;
-      arb_init (d);
-      arb_sub (d, p->la, p->lt, prec);
       acb_sqr (l, z, prec);
-      acb_mul_arb (l, l, d, prec);
-      acb_add_arb (l, l, p->lt, prec);
+      acb_add_arb (l, l, p->lt, prec);          /* |l| = lt + w^2 */
       acb_sqr (n, l, prec);
       acb_add_ui (n, n, 1, prec);
-      acb_add_arb (g, l, p->lt, prec);
-      acb_mul_arb (g, g, d, prec);
+      acb_add_arb (g, l, p->lt, prec);          /* 2 lt + w^2 */
       acb_mul_arb (g, g, p->twoE, prec);
       acb_rsqrt_analytic (g, g, an, prec);
-      arb_abs (d, d);
-      arb_mul_2exp_si (d, d, 1);
-      acb_mul_arb (g, g, d, prec);
-      arb_clear (d);
+      acb_mul_2exp_si (g, g, 1);
     }
   acb_sqrt_analytic (t, n, an, prec);
   if (p->kind == 0)
@@ -94,6 +90,27 @@ f_leg (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
   acb_clear (g);
   acb_clear (t);
   return 0;
+}
+
+/* W = sqrt(|X| - lt) for the exact X with X^2 >= M = lt^2, as
+   sqrt((X^2 - M)/(|X| + lt)): no cancellation beside the turning point. */
+static void
+w_of (arb_t w, const fmpq_t X, const fmpq_t M, const arb_t lt)
+{
+  fmpq_t d;
+  arb_t a;
+  fmpq_init (d);
+  arb_init (a);
+  fmpq_mul (d, X, X);
+  fmpq_sub (d, d, M);
+  arb_set_fmpq (w, d, RP);
+  arb_set_fmpq (a, X, RP);
+  arb_abs (a, a);
+  arb_add (a, a, lt, RP);
+  arb_div (w, w, a, RP);
+  arb_sqrt (w, w, RP);
+  fmpq_clear (d);
+  arb_clear (a);
 }
 
 /* Integral of P's integrand from A to B (real) into R. */
@@ -226,40 +243,46 @@ ref_step (ref_orbit *r, int *rev, int *spin, arb_t dth, arb_t dta,
   arb_set_fmpq (p.H2, t, RP);
   arb_set_fmpq (p.absH, r->H, RP);
   arb_abs (p.absH, p.absH);
-  p.rev = *rev;
+  /* q < 0: the w-substitution from the turning point lt = sqrt(m) */
+  fmpq_t m;
+  fmpq_init (m);
+  fmpq_div (m, t, r->E);
+  fmpq_div_2exp (m, m, 1);
+  fmpq_sub_ui (m, m, 1);                /* m = H^2/(2E) - 1 = -q */
+  p.rev = fmpq_sgn (m) > 0;
   arb_t A, B;
   arb_init (A);
   arb_init (B);
-  if (!*rev)
+  if (!p.rev)
     {
       arb_zero (A);
       arb_set_fmpq (B, r->Delta, RP);
-      p.kind = 0;
-      integrate (dth, &p, A, B);
-      p.kind = 1;
-      integrate (dta, &p, A, B);
     }
   else
     {
-      /* lt = sgn(la) sqrt(H^2/(2E) - 1) */
-      fmpq_div (t, t, r->E);
-      fmpq_div_2exp (t, t, 1);
-      fmpq_sub_ui (t, t, 1);
-      arb_set_fmpq (p.lt, t, RP);
+      arb_set_fmpq (p.lt, m, RP);
       arb_sqrt (p.lt, p.lt, RP);
+      w_of (B, la, m, p.lt);
+      if (*rev)
+        arb_zero (A);
+      else
+        w_of (A, lb, m, p.lt);
+      /* Dc = s lt - L0 */
+      arb_set (dc, p.lt);
       if (fmpq_sgn (la) < 0)
-        arb_neg (p.lt, p.lt);
-      arb_set_fmpq (p.la, la, RP);
-      arb_sub (dc, p.lt, p.L0, RP);
-      arb_zero (A);
-      arb_one (B);
-      p.kind = 0;
-      integrate (dth, &p, A, B);
-      p.kind = 1;
-      integrate (dta, &p, A, B);
+        arb_neg (dc, dc);
+      arb_sub (dc, dc, p.L0, RP);
+    }
+  p.kind = 0;
+  integrate (dth, &p, A, B);
+  p.kind = 1;
+  integrate (dta, &p, A, B);
+  if (*rev)
+    {
       arb_mul_2exp_si (dth, dth, 1);
       arb_mul_2exp_si (dta, dta, 1);
     }
+  fmpq_clear (m);
   if (fmpq_sgn (r->H) < 0)
     arb_neg (dth, dth);
   arb_add (r->theta, r->theta, dth, RP);
@@ -345,9 +368,13 @@ check_ball (const arb_t b, double x, const double *bounds, const char *what,
       arb_init (lo);
       ck_assert_msg (bounds[0] <= x && x <= bounds[1], "%s bounds", what);
       arb_set_d (lo, bounds[0]);
-      ck_assert_msg (arb_le (lo, b), "%s: lower bound inside", what);
+      /* not certainly beyond the value (the reference ball may be
+         wider than the distance from the value to its bound) */
+      ck_assert_msg (!arb_gt (lo, b), "%s: lower bound above", what);
       arb_set_d (lo, bounds[1]);
-      ck_assert_msg (arb_ge (lo, b), "%s: upper bound inside", what);
+      ck_assert_msg (!arb_lt (lo, b), "%s: upper bound below", what);
+      ck_assert (bounds[0] == x || nextafter (bounds[0], INFINITY) == x);
+      ck_assert (bounds[1] == x || nextafter (bounds[1], -INFINITY) == x);
       arb_clear (lo);
     }
 }
@@ -382,6 +409,9 @@ check_q (const fmpq_t q, double x, const double *bounds, const char *what,
 /* Run N certified collisions of the exact start against the reference;
    returns the number of reversals seen. */
 static int
+compare_steps (chaplygin_certified_orbit *o, ref_orbit *rp, int n);
+
+static int
 compare_orbit (const double L0[2], const double Delta[2], int dir,
                const double E[2], const double H[2], double theta,
                double tau, int n)
@@ -393,6 +423,63 @@ compare_orbit (const double L0[2], const double Delta[2], int dir,
                      CHAPLYGIN_WANT_ALL, &o), CHAPLYGIN_SUCCESS);
   ref_orbit r;
   ref_init (&r, L0, Delta, dir, E, H, theta, tau);
+  const int rev = compare_steps (o, &r, n);
+  ref_clear (&r);
+  chaplygin_certified_orbit_free (o);
+  return rev;
+}
+
+/* As compare_orbit, from the phase state (D+, V, theta, Omega) of the
+   system (L0, Delta), taken exactly: E and H formed here in rationals. */
+static int
+compare_orbit_phase (double L0, double Delta, double V, double theta,
+                     double Omega, int n)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, L0, Delta) == 0);
+  const double q[4] = { V > 0 ? 0.0 : Delta, V, theta, Omega },
+    peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg,
+                                                  CHAPLYGIN_WANT_ALL, &o)
+             == 0);
+  const double l0[2] = { L0, 1 }, d[2] = { Delta, 1 }, one[2] = { 1, 1 };
+  ref_orbit r;
+  ref_init (&r, l0, d, V > 0 ? 1 : -1, one, one, theta, 0.0);
+  fmpq_t n0, om, v;
+  arf_t t;
+  fmpq_init (n0);
+  fmpq_init (om);
+  fmpq_init (v);
+  arf_init (t);
+  fmpq_set (n0, r.L0);
+  if (V < 0)
+    fmpq_add (n0, n0, r.Delta);
+  fmpq_mul (n0, n0, n0);
+  fmpq_add_ui (n0, n0, 1);
+  arf_set_d (t, Omega);
+  arf_get_fmpq (om, t);
+  arf_set_d (t, V);
+  arf_get_fmpq (v, t);
+  fmpq_mul (r.H, n0, om);
+  fmpq_mul (r.E, r.H, om);
+  fmpq_addmul (r.E, v, v);
+  fmpq_div_2exp (r.E, r.E, 1);
+  fmpq_clear (n0);
+  fmpq_clear (om);
+  fmpq_clear (v);
+  arf_clear (t);
+  const int rev = compare_steps (o, &r, n);
+  ref_clear (&r);
+  chaplygin_certified_orbit_free (o);
+  return rev;
+}
+
+/* N certified steps of O against the reference R: the reversals seen. */
+static int
+compare_steps (chaplygin_certified_orbit *o, ref_orbit *rp, int n)
+{
+  ref_orbit r = *rp;
   arb_t dth, dta, dc;
   fmpq_t vm2;
   arb_init (dth);
@@ -445,8 +532,7 @@ compare_orbit (const double L0[2], const double Delta[2], int dir,
   arb_clear (dta);
   arb_clear (dc);
   fmpq_clear (vm2);
-  ref_clear (&r);
-  chaplygin_certified_orbit_free (o);
+  *rp = r;
   return reversals;
 }
 
@@ -496,6 +582,54 @@ START_TEST (long_orbit)
   const double l0[2] = { -0.5, 1 }, d[2] = { 1, 1 }, e[2] = { st.E, 1 },
     h[2] = { st.H, 1 };
   ck_assert_int_gt (compare_orbit (l0, d, 1, e, h, 0.0, 0.0, 40), 0);
+}
+END_TEST
+
+/* Far slots, slow starts, tiny and huge parameters: certified like any
+   other state (the reference at 900 bits, to hold D beside L0 = 1e40 in
+   l = L0 + D and the cancellation of the heading's primitives).  A
+   reversal a hair from the start of a far slot (V+ = -1, Omega+ = 1 at
+   L0 = 1e40, the case the closed form once got wrong); a subnormal V+; a
+   slot of 1e-300.  Then the outputs the doubles cannot hold: E below the
+   subnormals rounds to 0 (its nearest double), E beyond DBL_MAX is
+   CHAPLYGIN_ERANGE. */
+START_TEST (extreme_states)
+{
+  RP = 900;
+  chaplygin_discrete sys;
+  chaplygin_discrete_state st;
+  const double starts[][4] = {
+    { 1e40, 1.0, -1.0, 1.0 },           /* L0, Delta, V, Omega */
+    { -1e30, 3.0, 0.5, 1e-29 },
+    { 0.5, 1.0, 4e-320, 1.0 },
+    { 0.5, 1e-300, 1.0, 1.0 },
+  };
+  for (size_t i = 0; i < sizeof starts / sizeof starts[0]; i++)
+    {
+      const double *c = starts[i];
+      compare_orbit_phase (c[0], c[1], c[2], 0.25, c[3], 2);
+    }
+  RP = 300;
+  /* E' below the subnormals: V = 1e-200, Omega = 1e-200 at l0 = 1/2 */
+  ck_assert (chaplygin_discrete_init (&sys, 0.5, 1.0) == 0);
+  const double qt[4] = { 0.0, 1e-200, 0.0, 1e-200 }, peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, qt, 0, peg, 7, &o)
+             == 0);
+  ck_assert (chaplygin_certified_orbit_step (o, &st, NULL, NULL) == 0);
+  ck_assert (st.E == 0.0 && st.H != 0.0 && st.tau > 1e199);
+  chaplygin_certified_orbit_free (o);
+  /* E beyond DBL_MAX: V = 1e200 */
+  const double qb[4] = { 0.0, 1e200, 0.0, 1e200 };
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, qb, 0, peg, 0, &o)
+             == 0);
+  ck_assert (chaplygin_certified_orbit_state (o, &st, NULL)
+             == CHAPLYGIN_ERANGE);
+  ck_assert (chaplygin_certified_orbit_step (o, &st, NULL, NULL)
+             == CHAPLYGIN_ERANGE);
+  unsigned long n = 9;
+  ck_assert (chaplygin_certified_orbit_collisions (o, &n) == 0 && n == 0);
+  chaplygin_certified_orbit_free (o);
 }
 END_TEST
 
@@ -847,6 +981,7 @@ main (void)
   tu_add (s, "random_orbits", random_orbits);
   tu_add (s, "long_orbit", long_orbit);
   tu_add (s, "rational_inputs", rational_inputs);
+  tu_add (s, "extreme_states", extreme_states);
   tu_add (s, "tie_in_energy", tie_in_energy);
   tu_add (s, "tie_in_turning_point", tie_in_turning_point);
   tu_add (s, "exact_boundaries", exact_boundaries);
