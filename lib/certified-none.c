@@ -109,3 +109,17 @@ chaplygin_certified_orbit_free (chaplygin_certified_orbit *orbit)
   (void) orbit;
   return CHAPLYGIN_SUCCESS;
 }
+
+int
+chaplygin_certified_orbit_fate (chaplygin_certified_orbit *orbit,
+                                unsigned long max_collisions,
+                                unsigned long *reversal_at,
+                                size_t reversal_cap, chaplygin_fate *fate)
+{
+  (void) orbit;
+  (void) max_collisions;
+  (void) reversal_at;
+  (void) reversal_cap;
+  (void) fate;
+  return CHAPLYGIN_EINVAL;
+}

@@ -245,6 +245,34 @@ plan_clear (step_plan *p)
   fmpq_clear (p->H1);
 }
 
+/* The (3.7) coefficients C1, C2 of the collision at which the peg leaves
+   the end LEAVE: b = l[leave], b' the other end,
+   C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)), C2 = (1 + b b')/(1 + b^2). */
+static void
+coefficients (const chaplygin_certified_orbit *o, int leave, fmpq_t C1,
+              fmpq_t C2)
+{
+  const fmpq *b = o->l[leave], *bp = o->l[1 - leave];
+  fmpq_t n, t;
+  fmpq_init (n);
+  fmpq_init (t);
+  fmpq_mul (n, b, b);
+  fmpq_add_ui (n, n, 1);        /* 1 + b^2 */
+  fmpq_mul (C2, b, bp);
+  fmpq_add_ui (C2, C2, 1);
+  fmpq_div (C2, C2, n);
+  fmpq_mul (t, bp, bp);
+  fmpq_add_ui (t, t, 1);
+  fmpq_mul (t, t, n);
+  fmpq_mul (t, t, n);
+  fmpq_mul_2exp (t, t, 1);      /* 2 (1 + b^2)^2 (1 + b'^2) */
+  fmpq_mul (C1, o->Delta, o->Delta);
+  fmpq_div (C1, C1, t);
+  fmpq_neg (C1, C1);
+  fmpq_clear (n);
+  fmpq_clear (t);
+}
+
 /* Plan the step of O from (DIR, E, H): CHAPLYGIN_SUCCESS or ESPIN. */
 static int
 plan_step (const chaplygin_certified_orbit *o, int dir, const fmpq_t E,
@@ -279,23 +307,12 @@ plan_step (const chaplygin_certified_orbit *o, int dir, const fmpq_t E,
     }
   p->leave = p->reversal ? s : f;
   p->arrive = 1 - p->leave;
-  /* (3.7) at the end the peg leaves: b = l[leave], b' = l[arrive] */
-  const fmpq *b = o->l[p->leave], *bp = o->l[p->arrive];
-  fmpq_mul (t, b, b);
-  fmpq_add_ui (t, t, 1);        /* 1 + b^2 */
-  fmpq_mul (u, b, bp);
-  fmpq_add_ui (u, u, 1);        /* 1 + b b' */
-  fmpq_div (u, u, t);           /* C2 */
+  /* (3.7) at the end the peg leaves */
+  coefficients (o, p->leave, t, u);
   fmpq_mul (p->H1, H, u);
-  fmpq_mul (u, bp, bp);
-  fmpq_add_ui (u, u, 1);
-  fmpq_mul (u, u, t);
-  fmpq_mul (u, u, t);
-  fmpq_mul_2exp (u, u, 1);      /* 2 (1 + b^2)^2 (1 + b'^2) */
-  fmpq_mul (t, o->Delta, H);
-  fmpq_mul (t, t, t);
-  fmpq_div (t, t, u);           /* -C1 H^2 */
-  fmpq_sub (p->E1, E, t);
+  fmpq_mul (t, t, H);
+  fmpq_mul (t, t, H);           /* C1 H^2 */
+  fmpq_add (p->E1, E, t);
   fmpq_clear (t);
   fmpq_clear (u);
   return CHAPLYGIN_SUCCESS;
@@ -993,6 +1010,134 @@ chaplygin_certified_orbit_state (const chaplygin_certified_orbit *o,
   if (bounds)
     copy_bounds (o->request, &b, bounds);
   return CHAPLYGIN_SUCCESS;
+}
+
+/* ---- fates ------------------------------------------------------------ */
+
+/* Whether the fate of O's current state is certain (Section 3.1.3):
+   returns the kind (FORWARD, BACKWARD, SPIN) with the exact (B.10) energy in
+   EF for a straight-line fate, or UNDECIDED. */
+static int
+fate_now (const chaplygin_certified_orbit *o, fmpq_t Ef)
+{
+  if (fmpq_is_zero (o->H))
+    {
+      fmpq_set (Ef, o->E);
+      return o->dir;
+    }
+  const int s = o->dir > 0 ? 0 : 1;
+  const fmpq *l0 = o->l[s], *l1 = o->l[1 - s];
+  fmpq_t g, t, C1, C2;
+  fmpq_init (g);
+  fmpq_init (t);
+  fmpq_init (C1);
+  fmpq_init (C2);
+  /* the least V^2 on the segment, at its point of least |l| */
+  const int crosses = fmpq_sgn (l0) * fmpq_sgn (l1) <= 0;
+  fmpq_zero (t);
+  if (!crosses)
+    {
+      /* the end nearer 0 (both on one side) */
+      const int nearer0 = (fmpq_sgn (l0) > 0) == (fmpq_cmp (l0, l1) < 0);
+      fmpq_set (t, nearer0 ? l0 : l1);
+    }
+  g_at (g, o->E, o->H, t);
+  int kind = CHAPLYGIN_FATE_UNDECIDED;
+  if (fmpq_is_zero (g) && crosses)
+    kind = CHAPLYGIN_FATE_SPIN;
+  else if (fmpq_sgn (g) > 0)
+    {
+      /* |C2| < 1: dir l1 > 0 and 2 + l1 (l0 + l1) > 0 */
+      fmpq_add (t, l0, l1);
+      fmpq_mul (t, t, l1);
+      fmpq_add_ui (t, t, 2);
+      if (o->dir * fmpq_sgn (l1) > 0 && fmpq_sgn (t) > 0)
+        {
+          /* (B.10): Ef = E + C1 H^2/(1 - C2^2), the far end's C1, C2 */
+          coefficients (o, 1 - s, C1, C2);
+          fmpq_mul (C2, C2, C2);
+          fmpq_one (t);
+          fmpq_sub (t, t, C2);
+          fmpq_mul (Ef, o->H, o->H);
+          fmpq_mul (Ef, Ef, C1);
+          fmpq_div (Ef, Ef, t);
+          fmpq_add (Ef, Ef, o->E);
+          if (fmpq_sgn (Ef) > 0)
+            kind = o->dir;
+        }
+    }
+  fmpq_clear (g);
+  fmpq_clear (t);
+  fmpq_clear (C1);
+  fmpq_clear (C2);
+  return kind;
+}
+
+int
+chaplygin_certified_orbit_fate (chaplygin_certified_orbit *o,
+                                unsigned long max_collisions,
+                                unsigned long *reversal_at,
+                                size_t reversal_cap, chaplygin_fate *fate)
+{
+  if (!o || !fate)
+    return CHAPLYGIN_EINVAL;
+  unsigned long n = 0, nrev = 0, last = 0;
+  fmpq_t Ef;
+  fmpq_init (Ef);
+  int kind, status = CHAPLYGIN_SUCCESS;
+  for (;;)
+    {
+      kind = fate_now (o, Ef);
+      if (kind != CHAPLYGIN_FATE_UNDECIDED || n == max_collisions)
+        break;
+      if ((unsigned long) (q_bits (o->E) + q_bits (o->H)) > o->cap)
+        {
+          status = CHAPLYGIN_ECAP;
+          break;
+        }
+      const int dir = o->dir;
+      orbit_advance (o);
+      n++;
+      if (o->dir != dir)
+        {
+          if (reversal_at && nrev < reversal_cap)
+            reversal_at[nrev] = n;
+          nrev++;
+          last = n;
+        }
+    }
+  chaplygin_fate r;
+  r.kind = kind;
+  r.collisions = n;
+  r.reversals = nrev;
+  r.last_reversal = last;
+  r.E_final = r.V_final = 0.0;
+  if (status == CHAPLYGIN_SUCCESS)
+    {
+      if (kind == CHAPLYGIN_FATE_FORWARD || kind == CHAPLYGIN_FATE_BACKWARD)
+        {
+          /* V_final = dir sqrt(2 Ef) */
+          status = round_q (Ef, &r.E_final, NULL);
+          fmpq_mul_2exp (Ef, Ef, 1);
+          if (status == CHAPLYGIN_SUCCESS)
+            status = round_root (Ef, kind, NULL, o->prec, o->cap,
+                                 &r.V_final);
+        }
+      else if (kind == CHAPLYGIN_FATE_UNDECIDED)
+        {
+          chaplygin_discrete_state st;
+          status = round_q (o->E, &r.E_final, NULL);
+          if (status == CHAPLYGIN_SUCCESS)
+            status = chaplygin_certified_orbit_state (o, &st, NULL);
+          r.V_final = st.V;
+        }
+      else
+        status = round_q (o->E, &r.E_final, NULL);
+    }
+  fmpq_clear (Ef);
+  if (status == CHAPLYGIN_SUCCESS)
+    *fate = r;
+  return status;
 }
 
 /* ---- chaplygin_discrete_step's certified method ----------------------- */

@@ -2545,6 +2545,37 @@ int chaplygin_discrete_basin_boundaries (const chaplygin_discrete *sys,
                                          double *V_boundary, size_t cap,
                                          size_t *count);
 
+/** Section 3.1.3 and (B.10), certified: the fate of @orbit from its current
+   state, as chaplygin_discrete_fate defines it, every decision exact.  The
+   orbit is advanced (by chaplygin_certified_orbit_step's map, following what
+   its request says) until the fate is certain, at most @max_collisions
+   times:
+   - no further reversal can occur ($|C_2| < 1$ for the collision at the far
+     end, $E_(final) > 0$, and $V^2 > 0$ on the whole next segment, each the
+     sign of an exact rational): `kind` is the direction of travel,
+     $E_(final) = E + C_1 H^2/(1 - C_2^2)$ (B.10) and $V_(final) = dir
+     sqrt(2 E_(final))$, both the nearest doubles to the exact values;
+   - $V^2 = 0$ exactly at $l = 0$ on the next segment: CHAPLYGIN_FATE_SPIN;
+   - otherwise CHAPLYGIN_FATE_UNDECIDED after @max_collisions collisions,
+     with $E$ and $V^+$ of the orbit's state then (rounded).
+   @noindent
+   `collisions`, `reversals` and `last_reversal` count from the orbit's state
+   at the call; @reversal_at (may be null) receives the first @reversal_cap
+   collision numbers that end a reversing segment.  On success the orbit is
+   left at the state where the fate became certain.
+
+   Errors: CHAPLYGIN_EINVAL (null @orbit or @fate), CHAPLYGIN_ERANGE (a result
+   beyond the doubles), CHAPLYGIN_ECAP (the orbit's cap reached: `*@fate` is
+   not written, and the orbit is left after the collisions it made).
+
+   @reversal_at: (optional=True)
+ */
+int chaplygin_certified_orbit_fate (chaplygin_certified_orbit *orbit,
+                                    unsigned long max_collisions,
+                                    unsigned long *reversal_at,
+                                    size_t reversal_cap,
+                                    chaplygin_fate *fate);
+
 /** @section Massless limit
    @brief Appendix B.3: (B.15)--(B.17), rho = 0.
    @cindex massless skate

@@ -881,6 +881,183 @@ START_TEST (phase_start)
 }
 END_TEST
 
+/* The certified fate (Section 3.1.3, (B.10)) along Figure 3's line
+   (L0 = -1/2, Delta = 1, Omega+ = 4/5, V+ from 0.02 to 1.2): the kind,
+   the collisions and the reversals equal chaplygin_discrete_fate_phase's
+   (the double route) at every point, E_final within its documented few
+   ulps (16 eps: the points iterate at most a few dozen collisions); and
+   E_final is the nearest double to (B.10) written as (H^2/2)(r - r*),
+   r = 2E/H^2, r* = 2 C1/(C2^2 - 1), from the exact state after the
+   collisions, recomputed here by the reference route's map. */
+START_TEST (fates)
+{
+  chaplygin_discrete sys;
+  ck_assert (chaplygin_discrete_init (&sys, -0.5, 1.0) == 0);
+  int kinds[3] = { 0, 0, 0 };
+  for (int i = 0; i < 120; i++)
+    {
+      const double V = 0.02 + 0.01 * i;
+      const double q[4] = { 0.0, V, 0.0, 0.8 }, peg[2] = { 0, 0 };
+      chaplygin_fate a, b;
+      unsigned long ra[8], rb[8];
+      ck_assert (chaplygin_discrete_fate_phase (&sys, q, 1000, ra, 8, &a)
+                 == 0);
+      chaplygin_certified_orbit *o;
+      ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg, 0, &o)
+                 == 0);
+      ck_assert (chaplygin_certified_orbit_fate (o, 1000, rb, 8, &b) == 0);
+      ck_assert_int_eq (a.kind, b.kind);
+      ck_assert_int_eq (a.collisions, b.collisions);
+      ck_assert_int_eq (a.reversals, b.reversals);
+      ck_assert_int_eq (a.last_reversal, b.last_reversal);
+      for (unsigned long k = 0; k < a.reversals && k < 8; k++)
+        ck_assert_int_eq (ra[k], rb[k]);
+      ck_assert_msg (tu_close (b.E_final, a.E_final, 16 * DBL_EPSILON),
+                     "V+ = %g: E_final %.17g, doubles %.17g", V, b.E_final,
+                     a.E_final);
+      kinds[b.kind + 1]++;
+      if (b.kind == CHAPLYGIN_FATE_FORWARD
+          || b.kind == CHAPLYGIN_FATE_BACKWARD)
+        {
+          /* the exact state after the collisions, by the reference map */
+          const double l0[2] = { -0.5, 1 }, d[2] = { 1, 1 }, one[2] = { 1,
+            1 };
+          ref_orbit r;
+          ref_init (&r, l0, d, 1, one, one, 0, 0);
+          fmpq_t n0, t, C1, C2, rr, rs;
+          arf_t x;
+          fmpq *v[] = { n0, t, C1, C2, rr, rs };
+          for (int j = 0; j < 6; j++)
+            fmpq_init (v[j]);
+          arf_init (x);
+          fmpq_set_si (n0, 5, 4);       /* 1 + L0^2 */
+          arf_set_d (x, 0.8);
+          arf_get_fmpq (t, x);
+          fmpq_mul (r.H, n0, t);
+          fmpq_mul (r.E, r.H, t);
+          arf_set_d (x, V);
+          arf_get_fmpq (t, x);
+          fmpq_addmul (r.E, t, t);
+          fmpq_div_2exp (r.E, r.E, 1);
+          RP = 64;              /* the integrals are not looked at */
+          for (unsigned long k = 0; k < b.collisions; k++)
+            {
+              int rev, spin;
+              arb_t p1, p2, p3;
+              fmpq_t w;
+              arb_init (p1);
+              arb_init (p2);
+              arb_init (p3);
+              fmpq_init (w);
+              ref_step (&r, &rev, &spin, p1, p2, w, p3);
+              arb_clear (p1);
+              arb_clear (p2);
+              arb_clear (p3);
+              fmpq_clear (w);
+            }
+          RP = 300;
+          /* the far end's coefficients: b = L0 + Delta (dir > 0) or L0 */
+          fmpq_set_si (t, r.dir > 0 ? 1 : -1, 2);       /* b */
+          fmpq_mul (n0, t, t);
+          fmpq_add_ui (n0, n0, 1);                      /* 1 + b^2 */
+          fmpq_set_si (C2, -1, 4);
+          fmpq_add_ui (C2, C2, 1);
+          fmpq_div (C2, C2, n0);        /* (1 + b b')/(1 + b^2), bb' = -1/4 */
+          fmpq_mul (C1, n0, n0);
+          fmpq_mul (C1, C1, n0);        /* 1 + b'^2 = 1 + b^2 here */
+          fmpq_mul_2exp (C1, C1, 1);
+          fmpq_inv (C1, C1);
+          fmpq_neg (C1, C1);
+          /* r* = 2 C1/(C2^2 - 1), r = 2E/H^2, Ef = (H^2/2)(r - r*) */
+          fmpq_mul (rs, C2, C2);
+          fmpq_sub_ui (rs, rs, 1);
+          fmpq_div (rs, C1, rs);
+          fmpq_mul_2exp (rs, rs, 1);
+          fmpq_mul (t, r.H, r.H);
+          fmpq_div (rr, r.E, t);
+          fmpq_mul_2exp (rr, rr, 1);
+          fmpq_sub (rr, rr, rs);
+          fmpq_mul (rr, rr, t);
+          fmpq_div_2exp (rr, rr, 1);
+          check_q (rr, b.E_final, NULL, "E_final", (int) b.collisions);
+          ck_assert (b.V_final == b.kind * sqrt (2 * b.E_final)
+                     || fabs (b.V_final - b.kind * sqrt (2 * b.E_final))
+                     <= 2 * DBL_EPSILON * fabs (b.V_final));
+          for (int j = 0; j < 6; j++)
+            fmpq_clear (v[j]);
+          arf_clear (x);
+          ref_clear (&r);
+        }
+      unsigned long done;
+      ck_assert (chaplygin_certified_orbit_collisions (o, &done) == 0
+                 && done == b.collisions);
+      chaplygin_certified_orbit_free (o);
+    }
+  /* both straight-line fates occur on this line */
+  ck_assert (kinds[0] > 10 && kinds[2] > 10);
+  /* a slot ahead of the mass centre (L0 = 3/10, Delta = 4/5: |C2| >= 1
+     backwards, so a backward motion is never certain: every start ends
+     forward, the backward ones after a reversal): the same decisions as
+     the double route */
+  chaplygin_discrete sys2;
+  ck_assert (chaplygin_discrete_init (&sys2, 0.3, 0.8) == 0);
+  int decided = 0, reversed = 0;
+  for (int i = -60; i <= 60; i++)
+    {
+      if (i == 0)
+        continue;
+      const double V = 0.02 * i;
+      const double q[4] = { V > 0 ? 0.0 : 0.8, V, 0.0, 0.5 },
+        peg0[2] = { 0, 0 };
+      chaplygin_fate a, b;
+      ck_assert (chaplygin_discrete_fate_phase (&sys2, q, 60, NULL, 0, &a)
+                 == 0);
+      chaplygin_certified_orbit *o2;
+      ck_assert (chaplygin_certified_orbit_new_phase (&sys2, q, 0, peg0, 0,
+                                                      &o2) == 0);
+      ck_assert (chaplygin_certified_orbit_fate (o2, 60, NULL, 0, &b) == 0);
+      ck_assert_int_eq (a.kind, b.kind);
+      ck_assert_int_eq (a.collisions, b.collisions);
+      ck_assert_int_eq (a.reversals, b.reversals);
+      ck_assert (b.kind != CHAPLYGIN_FATE_BACKWARD);
+      decided += b.kind == CHAPLYGIN_FATE_FORWARD;
+      reversed += b.reversals > 0;
+      chaplygin_certified_orbit_free (o2);
+    }
+  ck_assert (decided == 120 && reversed >= 60);
+  /* the spinning state: 2E = H^2 on a path through l = 0 */
+  const double lm[2] = { -1, 2 }, one[2] = { 1, 1 }, e2[2] = { 2, 1 },
+    h2[2] = { 2, 1 }, peg[2] = { 0, 0 };
+  chaplygin_certified_orbit *o;
+  chaplygin_fate f;
+  ck_assert (chaplygin_certified_orbit_new_exact (lm, one, 1, e2, h2, 0, 0,
+                                                  peg, 0, &o) == 0);
+  ck_assert (chaplygin_certified_orbit_fate (o, 10, NULL, 0, &f) == 0);
+  ck_assert (f.kind == CHAPLYGIN_FATE_SPIN && f.collisions == 0
+             && f.E_final == 2.0 && f.V_final == 0.0);
+  chaplygin_certified_orbit_free (o);
+  /* undecided after 0 collisions; a straight motion (H = 0) at once */
+  const double q[4] = { 0.0, 0.3, 0.0, 0.8 }, qs[4] = { 0.0, 0.3, 0.0, 0.0 };
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg, 0, &o)
+             == 0);
+  ck_assert (chaplygin_certified_orbit_fate (o, 0, NULL, 0, &f) == 0);
+  ck_assert (f.kind == CHAPLYGIN_FATE_UNDECIDED && f.collisions == 0
+             && f.V_final == 0.3);
+  ck_assert (chaplygin_certified_orbit_cap (o, 64) == 0);
+  ck_assert (chaplygin_certified_orbit_fate (o, 100, NULL, 0, &f)
+             == CHAPLYGIN_ECAP);
+  ck_assert (chaplygin_certified_orbit_fate (NULL, 1, NULL, 0, &f)
+             == CHAPLYGIN_EINVAL);
+  chaplygin_certified_orbit_free (o);
+  ck_assert (chaplygin_certified_orbit_new_phase (&sys, qs, 0, peg, 0, &o)
+             == 0);
+  ck_assert (chaplygin_certified_orbit_fate (o, 10, NULL, 0, &f) == 0);
+  ck_assert (f.kind == CHAPLYGIN_FATE_FORWARD && f.collisions == 0
+             && f.E_final == 0.045 && f.V_final == 0.3);
+  chaplygin_certified_orbit_free (o);
+}
+END_TEST
+
 /* The cap: with 64 bits the exact state of the first collision does not
    fit, and the step says so (the orbit unchanged); raised, it steps. */
 START_TEST (cap)
@@ -988,6 +1165,7 @@ main (void)
   tu_add (s, "straight_exact_time", straight_exact_time);
   tu_add (s, "step_method", step_method);
   tu_add (s, "phase_start", phase_start);
+  tu_add (s, "fates", fates);
   tu_add (s, "cap", cap);
   tu_add (s, "errors", errors);
   int r = tu_run (s);
