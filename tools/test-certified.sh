@@ -119,12 +119,19 @@ ok=1
 test "$rc" -eq 2 && grep "dense output (samples) is not certified" "$tmp/err" >/dev/null && ok=0
 result "$ok" "samples with method = certified: exit 2, not certified"
 
+# stop_fate: decided on the orbit's exact state, at the collision where
+# the double route decides it too (away from a boundary), E_final the
+# nearest double to (B.10)
 scene fate 'method = certified
 stop_fate = yes'
+scene fatecf 'stop_fate = yes'
 run run "$tmp/fate.ini"
+cp "$tmp/raw" "$tmp/fate.raw"
+run run "$tmp/fatecf.ini"
 ok=1
-test "$rc" -eq 2 && grep "stop_fate is not certified" "$tmp/err" >/dev/null && ok=0
-result "$ok" "stop_fate with method = certified: exit 2, not certified"
+test "$rc" -eq 0 && grep 'stopped at collision 1 of 30: stop_fate: the fate is certain: backward' "$tmp/fate.raw" >/dev/null \
+  && test "$(grep -c '^[0-9]' "$tmp/fate.raw")" -eq "$(grep -c '^[0-9]' "$tmp/raw")" && ok=0
+result "$ok" "stop_fate with method = certified stops where the fate is certain"
 
 scene tol 'method = certified
 tolerance = 1e-9'

@@ -473,7 +473,10 @@ stop_reached (const skate *k, const chaplygin_discrete_state *st, char *why,
   if (k->stop_fate)
     {
       chaplygin_fate f;
-      *status = chaplygin_discrete_fate (&k->sys, st, 0, NULL, 0, &f);
+      /* certified: the orbit's exact state decides (max 0: not advanced) */
+      *status = k->orbit
+        ? chaplygin_certified_orbit_fate (k->orbit, 0, NULL, 0, &f)
+        : chaplygin_discrete_fate (&k->sys, st, 0, NULL, 0, &f);
       if (*status != CHAPLYGIN_SUCCESS)
         return -1;
       if (f.kind != CHAPLYGIN_FATE_UNDECIDED)

@@ -1032,7 +1032,7 @@ last_of_pair (const parse_ctx *c, int k, int a, int b)
 /* The checks of key K (given, at its line) that need the whole scene. */
 /* method = certified: what this build and the certified method cover (a
    discrete run with per-collision rows; stop_H and stop_tau read its
-   certified states). */
+   certified states, stop_fate decides on its exact state). */
 static void
 check_certified (parse_ctx *c, int k, long line)
 {
@@ -1048,9 +1048,6 @@ check_certified (parse_ctx *c, int k, long line)
   else if (sc->samples > 0)
     fail_key (c, k, line, "value 'certified': dense output (samples) is "
               "not certified (the run gives one row per collision)");
-  else if (sc->stop_fate)
-    fail_key (c, k, line, "value 'certified': stop_fate is not certified "
-              "(stop_H and stop_tau are)");
 }
 
 static void
