@@ -730,7 +730,8 @@ START_TEST (sweep_keys)
   expect_error (BASINS "[scene]\ncompare = smooth\n", 16, "[scene] compare",
                 "not used by a basins sweep");
   expect_error (BASINS "[run]\nmethod = ode\n", 16, "[run] method",
-                "not used by a basins sweep");
+                "a basins sweep iterates the (E, H) map, with no integral: "
+                "method closed-form (the default) or certified");
   expect_error (SWEEP_HEAD "kind = basins\nx_min = -2\nx_max = 3\nnx = 5\n"
                 "[parameters]\nL0 = 1\nDelta = 0.25\n[run]\ncollisions = 1\n",
                 0, "[initial] Omega", "missing (required by a basins sweep)");
@@ -877,8 +878,8 @@ START_TEST (writing)
   write_back (DISCRETE "[scene]\ntitle =; a = b ; c\n", "title =; a = b\n");
   write_back (MASSLESS "method = closed-form\n", "model = massless");
   write_back (SIGMA4, "[run]\nmax_rows = 10000000\n[sweep]\nkind = sigma4\n");
-  write_back (BASINS, "[run]\ncollisions = 1000\nmax_rows = 10000000\n"
-              "[sweep]\nkind = basins\n");
+  write_back (BASINS, "[run]\ncollisions = 1000\nmethod = closed-form\n"
+              "max_rows = 10000000\n[sweep]\nkind = basins\n");
   /* a method other than closed-form: its tolerance, by default the
      library's (CHAPLYGIN_OPTIONS_DEFAULT: 1e-13) */
   write_back (DISCRETE "method = quadrature\n", "tolerance = 1e-13\n");

@@ -13,7 +13,10 @@ method_line (FILE *out, const chaplygin_scene *sc, int compare)
   double tolerance = 0.0;
   (void) chaplygin_scene_text (sc, "kind", kind, sizeof kind);
   (void) chaplygin_scene_text (sc, "method", method, sizeof method);
-  if (strcmp (kind, "basins") == 0)
+  if (strcmp (kind, "basins") == 0 && strcmp (method, "certified") == 0)
+    fputs ("# method: certified: the exact return map on (E, H), every "
+           "fate decided exactly (chaplygin_certified_orbit_fate)\n", out);
+  else if (strcmp (kind, "basins") == 0)
     fputs ("# method: the return map on (V+^2, H) "
            "(chaplygin_discrete_fate_phase)\n", out);
   else if (kind[0])

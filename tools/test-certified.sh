@@ -15,7 +15,7 @@ top_builddir=${top_builddir:-.}
 prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-certified 8
+tap_start test-certified 10
 
 # scene NAME EXTRA-RUN-LINES: Figure 3's line (L0 = -1/2, Delta = 1) from
 # V = 0.3, Omega = 0.8 (a reversal, then forward motion), 30 collisions.
@@ -33,7 +33,7 @@ run run "$tmp/cert.ini"
 if test "$rc" -ne 0 && grep "no certified method" "$tmp/err" >/dev/null; then
   result 0 "a build without Arb refuses method = certified, saying why"
   i=2
-  while test $i -le 8; do
+  while test $i -le 10; do
     echo "ok $i # SKIP no certified method in this build"
     i=$((i + 1))
   done
@@ -139,6 +139,49 @@ run run "$tmp/tol.ini"
 ok=1
 test "$rc" -eq 2 && grep "not used by method certified" "$tmp/err" >/dev/null && ok=0
 result "$ok" "tolerance with method = certified: exit 2, not used"
+
+# a basins sweep (Figure 3's line, V+ from 1e-6 to 0.6): every fate and
+# reversal count against (B.13)'s boundaries (3/5)^n/sqrt(5) (erratum
+# E15), compared exactly in fractions: V+ in the n-th interval reverses
+# n times and ends (-1)^n
+{
+  printf '[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n'
+  printf '[initial]\nOmega = 0.8\n[run]\ncollisions = 1000000\nmethod = certified\n'
+  printf '[sweep]\nkind = basins\nx_min = 1e-6\nx_max = 0.6\nnx = 3000\n'
+} >"$tmp/basins.ini"
+run sweep "$tmp/basins.ini"
+if command -v python3 >/dev/null 2>&1; then
+  ok=1
+  test "$rc" -eq 0 && grep '^# method: certified' "$tmp/raw" >/dev/null \
+    && python3 - "$tmp/out" >"$tmp/py" 2>&1 <<'EOF' && ok=0
+import csv, sys
+from fractions import Fraction as F
+rows = list(csv.DictReader(open(sys.argv[1])))
+bad = 0
+for r in rows:
+    V = F(float(r['V0']))
+    n = 0
+    while V * V < F(9, 25) ** n / 5:
+        n += 1
+    if (r['status'], int(r['fate']), int(r['reversals'])) \
+            != ('SUCCESS', 1 if n % 2 == 0 else -1, n):
+        print('V+ = %r: %s, expected fate %d after %d reversals'
+              % (float(V), r, 1 if n % 2 == 0 else -1, n))
+        bad += 1
+sys.exit(1 if bad or len(rows) != 3000 else 0)
+EOF
+  sed 's/^/# /' "$tmp/py"
+  result "$ok" "a certified basins sweep: every fate on (B.13)'s exact intervals"
+else
+  count=$((count + 1))
+  echo "ok $count # SKIP no python3"
+fi
+
+sed 's/^method = certified$/method = ode/' "$tmp/basins.ini" >"$tmp/bode.ini"
+run sweep "$tmp/bode.ini"
+ok=1
+test "$rc" -eq 2 && grep "method closed-form (the default) or certified" "$tmp/err" >/dev/null && ok=0
+result "$ok" "a basins sweep with method = ode: exit 2, saying which methods apply"
 
 if test "$count" -ne "$plan"; then
   echo "# ran $count tests, planned $plan" >&2

@@ -181,6 +181,26 @@ stability_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
     }
 }
 
+/* Method certified: the fate of the post-collision state (D+, V, 0,
+   Omega) taken exactly, by a certified orbit (exact arithmetic: no
+   velocity scaling; a final energy beyond the doubles is ERANGE).  A
+   status. */
+static int
+certified_fate (const sweep_plan *plan, double V, chaplygin_fate *fate)
+{
+  const scene *sc = plan->sc;
+  const double q[4] = { V > 0.0 ? 0.0 : plan->sys.Delta, V, 0.0, sc->Omega },
+    peg[2] = { 0.0, 0.0 };
+  chaplygin_certified_orbit *o;
+  int status = chaplygin_certified_orbit_new_phase (&plan->sys, q, 0.0, peg,
+                                                    0, &o);
+  if (status == CHAPLYGIN_SUCCESS)
+    status = chaplygin_certified_orbit_fate (o, (unsigned long)
+                                             sc->collisions, NULL, 0, fate);
+  chaplygin_certified_orbit_free (o);
+  return status;
+}
+
 /* The row of basins point K into ROW: the library's
    chaplygin_discrete_basins for the point (a tiny or huge V+, Omega+ runs
    in the units of its velocity scaling, and E_final, V_final are delivered
@@ -192,9 +212,12 @@ basins_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
   double V = grid_value (sc->x_min, sc->x_max, plan->nx, k);
   int status, m = 0;
   chaplygin_fate fate;
-  (void) chaplygin_discrete_basins (&plan->sys, sc->Omega, V, V, 1,
-                                    (unsigned long) sc->collisions, &fate,
-                                    &status, &m);
+  if (sc->method == CHAPLYGIN_CERTIFIED)
+    status = certified_fate (plan, V, &fate);
+  else
+    (void) chaplygin_discrete_basins (&plan->sys, sc->Omega, V, V, 1,
+                                      (unsigned long) sc->collisions, &fate,
+                                      &status, &m);
   put_int (&row[0], (long long) k);
   put_real (&row[1], V);
   for (int i = 2; i < 7; i++)

@@ -261,7 +261,8 @@ static const key_spec keys[K_COUNT] = {
   [K_METHOD] = { SEC_RUN, "method", V_WORD, F (method),
                  WORDS (method_names, 0,
                         "closed-form, quadrature, ode, certified"), 0,
-                 0, 0, { O, O, O }, { NULL, NULL, NULL }, NOT_SWEPT },
+                 0, 0, { O, O, O }, { NULL, NULL, NULL }, { N, N, O },
+                 { NULL, NULL, NULL } },
   [K_TOLERANCE] = { SEC_RUN, "tolerance", V_INTERVAL, F (tolerance), NULL,
                     0, 0, "(1e-15 <= tolerance < 1)", 1e-15, 1.0, 1,
                     { T, T, T }, { NULL, NULL, NULL }, NOT_SWEPT },
@@ -1031,8 +1032,9 @@ last_of_pair (const parse_ctx *c, int k, int a, int b)
 
 /* The checks of key K (given, at its line) that need the whole scene. */
 /* method = certified: what this build and the certified method cover (a
-   discrete run with per-collision rows; stop_H and stop_tau read its
-   certified states, stop_fate decides on its exact state). */
+   discrete run with per-collision rows, where stop_H and stop_tau read its
+   certified states and stop_fate decides on its exact state; a basins
+   sweep, whose fates it decides exactly). */
 static void
 check_certified (parse_ctx *c, int k, long line)
 {
@@ -1042,9 +1044,6 @@ check_certified (parse_ctx *c, int k, long line)
   if (!available)
     fail_key (c, k, line, "value 'certified': this build has no certified "
               "method (the library was configured without Arb)");
-  else if (sc->sweep != SWEEP_NONE)
-    fail_key (c, k, line, "value 'certified': sweeps are not certified "
-              "(only runs of model discrete are)");
   else if (sc->samples > 0)
     fail_key (c, k, line, "value 'certified': dense output (samples) is "
               "not certified (the run gives one row per collision)");
@@ -1070,6 +1069,11 @@ check_key (parse_ctx *c, int k)
               "closed-form", RAW (c, k), model_names[sc->model]);
   else if (k == K_METHOD && sc->method == CHAPLYGIN_CERTIFIED)
     check_certified (c, k, line);
+  else if (k == K_METHOD && sc->sweep == SWEEP_BASINS
+           && sc->method != CHAPLYGIN_CLOSED_FORM)
+    fail_key (c, k, line, "value '" RAW_FMT "': a basins sweep iterates "
+              "the (E, H) map, with no integral: method closed-form (the "
+              "default) or certified", RAW (c, k));
   else if (k == K_OUTPUTS && (sc->outputs & SCENE_OUT_PEG)
            && sc->model == SCENE_SMOOTH)
     fail_key (c, k, line, "'peg' is not an output of model smooth");
