@@ -59,6 +59,7 @@ struct chaplygin_certified_orbit
   fmpq_t L0, Delta;
   fmpq_t l[2];                  /* L0 + D at the ends: L0, L0 + Delta */
   fmpq_t D[2];                  /* the ends: 0, Delta */
+  fmpq_t C1[2], C2[2];          /* (3.7) for the peg leaving end i */
   /* the exact start, for replays */
   int dir0;
   fmpq_t E0, H0;
@@ -246,7 +247,7 @@ plan_clear (step_plan *p)
 }
 
 /* The (3.7) coefficients C1, C2 of the collision at which the peg leaves
-   the end LEAVE: b = l[leave], b' the other end,
+   the end LEAVE (computed once per orbit): b = l[leave], b' the other end,
    C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)), C2 = (1 + b b')/(1 + b^2). */
 static void
 coefficients (const chaplygin_certified_orbit *o, int leave, fmpq_t C1,
@@ -308,10 +309,9 @@ plan_step (const chaplygin_certified_orbit *o, int dir, const fmpq_t E,
   p->leave = p->reversal ? s : f;
   p->arrive = 1 - p->leave;
   /* (3.7) at the end the peg leaves */
-  coefficients (o, p->leave, t, u);
-  fmpq_mul (p->H1, H, u);
-  fmpq_mul (t, t, H);
-  fmpq_mul (t, t, H);           /* C1 H^2 */
+  fmpq_mul (p->H1, H, o->C2[p->leave]);
+  fmpq_mul (t, H, H);
+  fmpq_mul (t, t, o->C1[p->leave]);     /* C1 H^2 */
   fmpq_add (p->E1, E, t);
   fmpq_clear (t);
   fmpq_clear (u);
@@ -461,6 +461,12 @@ orbit_make (const fmpq_t L0, const fmpq_t Delta, int dir, const fmpq_t E,
   fmpq_set (o->l[0], L0);
   fmpq_add (o->l[1], L0, Delta);
   fmpq_set (o->D[1], Delta);
+  for (int i = 0; i < 2; i++)
+    {
+      fmpq_init (o->C1[i]);
+      fmpq_init (o->C2[i]);
+      coefficients (o, i, o->C1[i], o->C2[i]);
+    }
   o->dir0 = dir;
   fmpq_init (o->E0);
   fmpq_init (o->H0);
@@ -677,6 +683,8 @@ chaplygin_certified_orbit_free (chaplygin_certified_orbit *o)
     {
       fmpq_clear (o->l[i]);
       fmpq_clear (o->D[i]);
+      fmpq_clear (o->C1[i]);
+      fmpq_clear (o->C2[i]);
       arb_clear (o->peg[i]);
     }
   fmpq_clear (o->E0);
@@ -717,13 +725,19 @@ typedef struct
   chaplygin_discrete_state st;
   chaplygin_discrete_event ev;
   chaplygin_certified_bounds b;
+  int want_bounds;              /* fill b (else leave it) */
   step_plan p;                  /* the decisions, E' and H' */
   arb_t theta, tau, peg[2];     /* the sums after the step */
 } step_out;
 
+/* The bounds member M of R where they are wanted, else null (the
+   enclosure is then not formed). */
+#define BND(r, m) ((r)->want_bounds ? (r)->b.m : NULL)
+
 static void
-out_init (step_out *r)
+out_init (step_out *r, int want_bounds)
 {
+  r->want_bounds = want_bounds;
   plan_init (&r->p);
   arb_init (r->theta);
   arb_init (r->tau);
@@ -855,8 +869,8 @@ try_step (const chaplygin_certified_orbit *o, step_out *r, int *espin)
     return ROUND_OK;
   int rc = ROUND_OK;
   /* E, H and the ends exactly */
-  if (round_q (p->E1, &r->st.E, r->b.E) != CHAPLYGIN_SUCCESS
-      || round_q (p->H1, &r->st.H, r->b.H) != CHAPLYGIN_SUCCESS
+  if (round_q (p->E1, &r->st.E, BND (r, E)) != CHAPLYGIN_SUCCESS
+      || round_q (p->H1, &r->st.H, BND (r, H)) != CHAPLYGIN_SUCCESS
       || round_q (o->D[p->leave], &r->ev.Dminus, NULL) != CHAPLYGIN_SUCCESS
       || round_q (o->D[p->arrive], &r->ev.Dplus, NULL) != CHAPLYGIN_SUCCESS)
     return ROUND_RANGE;
@@ -884,7 +898,7 @@ try_step (const chaplygin_certified_orbit *o, step_out *r, int *espin)
               r->peg[0], r->peg[1], dth, dta);
   if (o->request & CHAPLYGIN_WANT_THETA)
     {
-      take (r->theta, &r->st.theta, r->b.theta, &rc);
+      take (r->theta, &r->st.theta, BND (r, theta), &rc);
       take (dth, &r->ev.dtheta, NULL, &rc);
     }
   if (o->request & CHAPLYGIN_WANT_TAU)
@@ -894,21 +908,21 @@ try_step (const chaplygin_certified_orbit *o, step_out *r, int *espin)
           fmpq_t t;
           fmpq_init (t);
           fmpq_add (t, o->tau_q, o->dtau_q);
-          if (round_q (t, &r->st.tau, r->b.tau) != CHAPLYGIN_SUCCESS
+          if (round_q (t, &r->st.tau, BND (r, tau)) != CHAPLYGIN_SUCCESS
               || round_q (o->dtau_q, &r->ev.dtau, NULL) != CHAPLYGIN_SUCCESS)
             rc = ROUND_RANGE;
           fmpq_clear (t);
         }
       else
         {
-          take (r->tau, &r->st.tau, r->b.tau, &rc);
+          take (r->tau, &r->st.tau, BND (r, tau), &rc);
           take (dta, &r->ev.dtau, NULL, &rc);
         }
     }
   if (o->request & CHAPLYGIN_WANT_PEG)
     {
-      take (r->peg[0], &r->st.peg[0], r->b.peg_x, &rc);
-      take (r->peg[1], &r->st.peg[1], r->b.peg_y, &rc);
+      take (r->peg[0], &r->st.peg[0], BND (r, peg_x), &rc);
+      take (r->peg[1], &r->st.peg[1], BND (r, peg_y), &rc);
     }
   arb_clear (dth);
   arb_clear (dta);
@@ -928,7 +942,7 @@ chaplygin_certified_orbit_step (chaplygin_certified_orbit *o,
     return CHAPLYGIN_ECAP;
   step_out r;
   int espin, status = CHAPLYGIN_SUCCESS;
-  out_init (&r);
+  out_init (&r, bounds != NULL);
   for (;;)
     {
       const int rc = try_step (o, &r, &espin);
@@ -1054,8 +1068,8 @@ fate_now (const chaplygin_certified_orbit *o, fmpq_t Ef)
       if (o->dir * fmpq_sgn (l1) > 0 && fmpq_sgn (t) > 0)
         {
           /* (B.10): Ef = E + C1 H^2/(1 - C2^2), the far end's C1, C2 */
-          coefficients (o, 1 - s, C1, C2);
-          fmpq_mul (C2, C2, C2);
+          fmpq_set (C1, o->C1[1 - s]);
+          fmpq_mul (C2, o->C2[1 - s], o->C2[1 - s]);
           fmpq_one (t);
           fmpq_sub (t, t, C2);
           fmpq_mul (Ef, o->H, o->H);
