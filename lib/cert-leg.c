@@ -37,10 +37,12 @@
 
 #include "cert-leg.h"
 
-/* R_F and R_D of real balls: the real part of Arb's complex functions
-   (their values are real for these positive arguments). */
+/* R_F (X, Y, Z) or, with RD, R_D (X, Y, Z) = R_J (X, Y, Z, Z) of real balls:
+   the real part of Arb's complex functions (their values are real for
+   these positive arguments). */
 static void
-rf (arb_t r, const arb_t x, const arb_t y, const arb_t z, slong prec)
+carlson (arb_t r, int RD, const arb_t x, const arb_t y, const arb_t z,
+         slong prec)
 {
   acb_t a, b, c, w;
   acb_init (a);
@@ -50,7 +52,10 @@ rf (arb_t r, const arb_t x, const arb_t y, const arb_t z, slong prec)
   acb_set_arb (a, x);
   acb_set_arb (b, y);
   acb_set_arb (c, z);
-  acb_elliptic_rf (w, a, b, c, 0, prec);
+  if (RD)
+    acb_elliptic_rj (w, a, b, c, c, 0, prec);
+  else
+    acb_elliptic_rf (w, a, b, c, 0, prec);
   arb_set (r, acb_realref (w));
   acb_clear (a);
   acb_clear (b);
@@ -58,24 +63,8 @@ rf (arb_t r, const arb_t x, const arb_t y, const arb_t z, slong prec)
   acb_clear (w);
 }
 
-static void
-rd (arb_t r, const arb_t x, const arb_t y, const arb_t z, slong prec)
-{
-  acb_t a, b, c, w;
-  acb_init (a);
-  acb_init (b);
-  acb_init (c);
-  acb_init (w);
-  acb_set_arb (a, x);
-  acb_set_arb (b, y);
-  acb_set_arb (c, z);
-  acb_elliptic_rj (w, a, b, c, c, 0, prec);
-  arb_set (r, acb_realref (w));
-  acb_clear (a);
-  acb_clear (b);
-  acb_clear (c);
-  acb_clear (w);
-}
+#define rf(r, x, y, z, prec) carlson (r, 0, x, y, z, prec)
+#define rd(r, x, y, z, prec) carlson (r, 1, x, y, z, prec)
 
 /* The primitives for q > 0 at x (P1, P2 = P1 + the t^2 part). */
 static void

@@ -337,30 +337,6 @@ skate_omega (const skate *k, double H, double D, double *Omega)
   return chaplygin_discrete_omega (k->L0, D, H, Omega);
 }
 
-/* The next collision of the certified orbit (IN is its current state);
-   the fields not requested are IN's. */
-static int
-certified_step (const skate *k, const chaplygin_discrete_state *in,
-                unsigned request, chaplygin_discrete_state *out,
-                chaplygin_discrete_event *ev)
-{
-  chaplygin_discrete_state next;
-  int status = chaplygin_certified_orbit_step (k->orbit, &next, ev, NULL);
-  if (status != CHAPLYGIN_SUCCESS)
-    return status;
-  if (!(request & CHAPLYGIN_WANT_THETA))
-    next.theta = in->theta;
-  if (!(request & CHAPLYGIN_WANT_TAU))
-    next.tau = in->tau;
-  if (!(request & CHAPLYGIN_WANT_PEG))
-    {
-      next.peg[0] = in->peg[0];
-      next.peg[1] = in->peg[1];
-    }
-  *out = next;
-  return CHAPLYGIN_SUCCESS;
-}
-
 /* One step of the return map (B.3)/(B.4) or (B.15), counted. */
 static int
 skate_step (const skate *k, const chaplygin_discrete_state *in,
@@ -374,8 +350,10 @@ skate_step (const skate *k, const chaplygin_discrete_state *in,
     k->rep->heading_evals++;
   if (k->massless)
     return chaplygin_massless_step (k->L0, in, request, out, ev);
+  /* certified: the orbit's next collision (it follows k->request; the
+     fields not requested are 0, and the run reads none of them) */
   if (k->orbit)
-    return certified_step (k, in, request, out, ev);
+    return chaplygin_certified_orbit_step (k->orbit, out, ev, NULL);
   return chaplygin_discrete_step (&k->sys, in, request, &k->opt, out, ev);
 }
 
