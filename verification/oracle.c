@@ -2983,12 +2983,16 @@ write_table (const char *path, int level)
    and any other program that wants them.  IN has one post-collision state
    a line, "L0 Delta dir E H" (C99 hex floats, or any strtod syntax); OUT
    gets one line each:
-     ok REV E'hi E'lo H'hi H'lo DTHhi DTHlo DTAhi DTAlo KTH KTA
+     ok REV E'hi E'lo H'hi H'lo DTHhi DTHlo DTAhi DTAlo KTH KTA CE CH CTH CTA
    the next E, H and the heading and time increments of the return map
    (B.3)/(B.4) as double-double pairs (hi the nearest double, lo the
    nearest double to the rest: about 106 correct bits, the reference
    itself carrying at least MIN_BITS), REV 1 for a reversal, KTH and KTA
-   the condition numbers of the increments with respect to E and H; or
+   the condition numbers of the increments with respect to E and H, and
+   the same four quantities correctly rounded (the double nearest to the
+   exact value, ties to even: the double both ends of the oracle's ball
+   round to, ball_nearest), or "-" where the ball does not decide the
+   rounding (the benchmark's reference for the certified method); or
      spin    for 2E = H^2 reaching l = 0 (CHAPLYGIN_ESPIN),
      bad     for a state that cannot move (V+^2 <= 0),
      fail    if the oracle did not reach its accuracy.
@@ -3074,7 +3078,17 @@ refs_mode (const char *in_path, const char *out_path)
       print_dd (out, r.H);
       print_dd (out, r.dth);
       print_dd (out, r.dta);
-      fprintf (out, " %.3g %.3g\n", kth, kta);
+      fprintf (out, " %.3g %.3g", kth, kta);
+      const arb_struct *cr[4] = { r.E, r.H, r.dth, r.dta };
+      for (int j = 0; j < 4; j++)
+        {
+          double x;
+          if (ball_nearest (cr[j], &x))
+            fprintf (out, " %a", x);
+          else
+            fprintf (out, " -");
+        }
+      fprintf (out, "\n");
     }
   sref_clear (&r), sref_clear (&r1);
   arb_clear (Ea), arb_clear (Ha), arb_clear (t);
