@@ -31,7 +31,11 @@
          closed-form  heading and time too, Carlson integrals at double and
                       single precision;
          quadrature   at relative tolerances 1e-3 .. 1e-15;
-         ode          at relative tolerances 1e-3 .. 1e-13.
+         ode          at relative tolerances 1e-3 .. 1e-13;
+         certified    CHAPLYGIN_CERTIFIED (where the library has it):
+                      heading and time ("theta+tau"), and E and H alone
+                      ("E+H"), one call of chaplygin_discrete_step per
+                      collision, each from the doubles of the one before.
        Errors: a first pass steps once from every state (the oracle's
        inputs) and its outputs are measured.  Timing: every row iterates
        the same scenes as orbits, each step starting from the output of
@@ -53,7 +57,14 @@
        the heading and time increments (rows that compute them); a step
        that fails with a status is counted in `failures', never dropped
        silently, and a reversal decision other than the oracle's is counted
-       in `reversal_mismatches'.  Output: a table and the targets of the
+       in `reversal_mismatches'.  Every row's outputs are also compared
+       with their correctly rounded values (the oracle's fields CE CH CTH
+       CTA: the double both ends of its ball round to), in ulps: 0 is what
+       the certified method promises, and is measured, not assumed; values
+       whose ball does not decide are counted, not compared.  Whether a
+       certified call raised its working precision is not visible through
+       the public API (lib/certified.c keeps it in the orbit), so the
+       fraction of such calls is not measured.  Output: a table and the targets of the
        issue on stdout, the CSV, and optionally a Texinfo fragment of the
        manual (doc/bench-table.texi).  */
 #include <config.h>
@@ -173,6 +184,11 @@ typedef struct
   int rev;
   double E[2], H[2], th[2], ta[2];
   double kth, kta;
+  /* the correctly rounded E', H', heading and time increments (the double
+     both ends of the oracle's ball round to), where cr_ok says the ball
+     decides that rounding */
+  double cr[4];
+  int cr_ok[4];
 } ref_t;
 
 typedef struct
@@ -223,6 +239,31 @@ count_states (FILE *f)
   return n;
 }
 
+/* The four correctly rounded values at the end of an "ok" line of the
+   oracle's answer (hex floats, or "-" where its ball does not decide);
+   0, or 1 on a malformed end. */
+static int
+read_cr (const char *p, ref_t *r)
+{
+  for (int j = 0; j < 4; j++)
+    {
+      char word[64];
+      int n = 0;
+      if (sscanf (p, "%63s%n", word, &n) != 1)
+        return 1;
+      p += n;
+      r->cr_ok[j] = strcmp (word, "-") != 0;
+      if (r->cr_ok[j])
+        {
+          char *end;
+          r->cr[j] = strtod (word, &end);
+          if (*end)
+            return 1;
+        }
+    }
+  return 0;
+}
+
 static int
 read_input (const char *states, const char *refs, bench *b)
 {
@@ -268,9 +309,11 @@ read_input (const char *states, const char *refs, bench *b)
             b->n_fail++;
           continue;
         }
-      if (sscanf (lr, "ok %d %lf %lf %lf %lf %lf %lf %lf %lf %lf %lf", &r.rev,
-                  &r.E[0], &r.E[1], &r.H[0], &r.H[1], &r.th[0], &r.th[1],
-                  &r.ta[0], &r.ta[1], &r.kth, &r.kta) != 11)
+      int at = 0;
+      if (sscanf (lr, "ok %d %lf %lf %lf %lf %lf %lf %lf %lf %lf %lf%n",
+                  &r.rev, &r.E[0], &r.E[1], &r.H[0], &r.H[1], &r.th[0],
+                  &r.th[1], &r.ta[0], &r.ta[1], &r.kth, &r.kta, &at) != 11
+          || read_cr (lr + at, &r))
         {
           fprintf (stderr, "work-precision: %s: malformed line for state "
                    "%zu\n", refs, b->lines);
@@ -316,6 +359,7 @@ typedef enum
   ROW_BASELINE,
   ROW_EH,
   ROW_EHN,                      /* chaplygin_discrete_step_eh_n */
+  ROW_EHO,                      /* E and H only with the row's options */
   ROW_FULL,
   ROW_SCIPY                     /* measured by bench/scipy-ivp.py */
 } row_kind;
@@ -507,6 +551,31 @@ pass_ehn (bench *b, const chaplygin_options *opt)
   pass_eh_by (b, 1);
 }
 
+/* One step from every state, E and H only, with the row's options (the
+   certified method's E and H row). */
+static void __attribute__ ((noinline))
+pass_eho (bench *b, const chaplygin_options *opt)
+{
+  for (size_t i = 0; i < b->n; i++)
+    {
+      chaplygin_discrete_state o;
+      int rc = chaplygin_discrete_step (b->sys[i], &b->st[i], 0, opt, &o,
+                                        NULL);
+      if (rc)
+        o.E = o.H = NAN, o.dir = 0;
+      b->E1[i] = o.E;
+      b->H1[i] = o.H;
+      b->dir1[i] = o.dir;
+      b->rc[i] = rc;
+    }
+}
+
+static void __attribute__ ((noinline))
+chain_eho (bench *b, const chaplygin_options *opt)
+{
+  orbit_step (b, opt, 0, 0);
+}
+
 static void __attribute__ ((noinline))
 pass_full (bench *b, const chaplygin_options *opt)
 {
@@ -548,6 +617,11 @@ typedef struct
   size_t over16;                /* theta/tau errors above 16 eps */
   size_t failures, mismatches;
   size_t ext_states;            /* ROW_SCIPY: the states it timed */
+  /* distance in ulps from the correctly rounded value (the oracle's) of
+     the outputs measured: the largest, the values compared, those the
+     oracle's ball does not decide (not compared) */
+  double max_ulps;
+  size_t cr_n, cr_undecided;
 } row_t;
 
 #define MAX_ROWS 48
@@ -653,6 +727,16 @@ make_rows (row_t *rows, bench *b)
       r->opt.method = CHAPLYGIN_ODE;
       r->opt.tol = to[j];
     }
+  /* the certified method, where the library has it: heading and time as
+     the other methods' rows, and E and H alone */
+  int avail = 0;
+  if (chaplygin_method_available (CHAPLYGIN_CERTIFIED, &avail) == 0 && avail)
+    {
+      add_row (rows, &n, "certified", "theta+tau", ROW_FULL, b)->opt.method
+        = CHAPLYGIN_CERTIFIED;
+      add_row (rows, &n, "certified", "E+H", ROW_EHO, b)->opt.method
+        = CHAPLYGIN_CERTIFIED;
+    }
   return n;
 }
 
@@ -671,6 +755,39 @@ make_diag_rows (row_t *rows, int n, bench *b)
 /* ------------------------------------------------------------------ */
 /* Errors and timing                                                   */
 /* ------------------------------------------------------------------ */
+
+/* The distance in ulps between two finite doubles (the number of doubles
+   from one to the other, +0 and -0 the same), or infinity. */
+static double
+ulps_between (double a, double b)
+{
+  if (a == b)
+    return 0.0;
+  if (!isfinite (a) || !isfinite (b))
+    return INFINITY;
+  long long ia, ib;
+  memcpy (&ia, &a, sizeof ia);
+  memcpy (&ib, &b, sizeof ib);
+  ia = ia < 0 ? -(ia & 0x7fffffffffffffffLL) : ia;
+  ib = ib < 0 ? -(ib & 0x7fffffffffffffffLL) : ib;
+  /* in integers: the bit patterns converted to double would round alike */
+  const __int128 d = (__int128) ia - ib;
+  return (double) (d < 0 ? -d : d);
+}
+
+/* Output X of quantity J (0 E', 1 H', 2 heading, 3 time increment)
+   against the correctly rounded reference of F, into R's ulp figures. */
+static void
+cr_add (row_t *r, const ref_t *f, int j, double x)
+{
+  if (!f->cr_ok[j])
+    {
+      r->cr_undecided++;
+      return;
+    }
+  r->cr_n++;
+  r->max_ulps = fmax (r->max_ulps, ulps_between (x, f->cr[j]));
+}
 
 /* |x - (hi + lo)|/|hi + lo|; x - hi is exact near hi (Sterbenz). */
 static double
@@ -703,6 +820,8 @@ measure_errors (const bench *b, row_t *r, double *scratch)
   size_t m = 0;
   r->max_err = r->max_eh = r->max_tt = r->max_tt_eps = r->max_kappa_eps = 0;
   r->kappa_at_max = 0;
+  r->max_ulps = 0;
+  r->cr_n = r->cr_undecided = 0;
   for (size_t i = 0; i < b->n; i++)
     {
       const ref_t *f = &b->ref[i];
@@ -715,8 +834,12 @@ measure_errors (const bench *b, row_t *r, double *scratch)
         r->mismatches++;
       double e = fmax (rel_err (b->E1[i], f->E), rel_err (b->H1[i], f->H));
       r->max_eh = fmax (r->max_eh, e);
+      cr_add (r, f, 0, b->E1[i]);
+      cr_add (r, f, 1, b->H1[i]);
       if (r->kind == ROW_FULL)
         {
+          cr_add (r, f, 2, b->th[i]);
+          cr_add (r, f, 3, b->ta[i]);
           double eth = rel_err (b->th[i], f->th);
           double eta = rel_err (b->ta[i], f->ta);
           double ett = fmax (eth, eta);
@@ -754,7 +877,8 @@ static pass_fn
 pass_of (const row_t *r)
 {
   return r->kind == ROW_BASELINE ? pass_baseline
-    : r->kind == ROW_EH ? pass_eh : r->kind == ROW_EHN ? pass_ehn : pass_full;
+    : r->kind == ROW_EH ? pass_eh : r->kind == ROW_EHN ? pass_ehn
+    : r->kind == ROW_EHO ? pass_eho : pass_full;
 }
 
 /* What is timed: the orbits of the scenes, or (diagnostic rows) the
@@ -769,7 +893,7 @@ timed_pass_of (const row_t *r)
       : r->kind == ROW_EH ? long_eh : long_ehn;
   return r->kind == ROW_BASELINE ? chain_baseline
     : r->kind == ROW_EH ? chain_eh : r->kind == ROW_EHN ? chain_ehn
-    : chain_full;
+    : r->kind == ROW_EHO ? chain_eho : chain_full;
 }
 
 /* The warm-up pass, whose outputs are the ones measured, then the number
@@ -859,6 +983,8 @@ typedef struct
   const row_t *ehn;             /* eh-only in n steps per call */
   const row_t *lbase, *leh, *lehn;      /* diagnostic rows: long orbits */
   const row_t *scipy;           /* SciPy's DOP853 at rtol 1e-12, or NULL */
+  const row_t *cert, *certeh;   /* the certified method: heading and time;
+                                   E and H only (NULL without it) */
 } targets_t;
 
 static targets_t
@@ -889,6 +1015,10 @@ find_targets (const row_t *rows, int n)
       t.eh = &rows[i];
     else if (rows[i].kind == ROW_EHN)
       t.ehn = &rows[i];
+    else if (rows[i].kind == ROW_EHO)
+      t.certeh = &rows[i];
+    else if (!strcmp (rows[i].method, "certified"))
+      t.cert = &rows[i];
     else if (rows[i].kind == ROW_SCIPY)
       {
         if (!strcmp (rows[i].setting, "1e-12"))
@@ -909,6 +1039,22 @@ find_targets (const row_t *rows, int n)
         t.ode = r;
     }
   return t;
+}
+
+/* The ratios of A's repetitions to B's, round by round (the rows are
+   timed in rounds, so that a round's disturbance weighs on both): their
+   minimum, median and maximum. */
+static void
+round_ratios (const row_t *a, const row_t *b, double *qmin, double *qmed,
+              double *qmax)
+{
+  double q[REPS];
+  const long n = a->reps < b->reps ? a->reps : b->reps;
+  for (long k = 0; k < n; k++)
+    q[k] = a->ns[k] / b->ns[k];
+  *qmed = median (q, (size_t) n);
+  *qmin = n ? q[0] : (double) NAN;
+  *qmax = n ? q[n - 1] : (double) NAN;
 }
 
 static void
@@ -987,6 +1133,46 @@ print_targets (FILE *f, const targets_t *t, int texi)
              item, t->cf->max_tt_eps, t->cf->kappa_at_max, t->cf->over16,
              t->cf->max_kappa_eps, le,
              t->cf->max_kappa_eps <= 2.5 ? "met" : "NOT met");
+  if (t->cf && t->cert)
+    {
+      /* the library's certified method has no fast path yet: its whole
+         time is the Arb route's */
+      const double q = t->cert->ns_min / t->cf->ns_min;
+      const double qm = t->cert->ns_med / t->cf->ns_med;
+      double rmin, rmed, rmax;
+      round_ratios (t->cert, t->cf, &rmin, &rmed, &rmax);
+      fprintf (f, "%scertified, heading and time, against closed-form "
+               "(double): %.4g ns / %.3g ns = %.0f (minima), %.4g ns / %.3g "
+               "ns = %.0f (medians); round by round %.0f to %.0f, median %.0f "
+               "(target %s 20 with a fast path: NOT met, there is no fast "
+               "path yet; the Arb route alone %s 500: %s)\n",
+               item, t->cert->ns_min, t->cf->ns_min, q, t->cert->ns_med,
+               t->cf->ns_med, qm, rmin, rmax, rmed, le, le,
+               q <= 500 && qm <= 500 ? "met" : "NOT met");
+    }
+  if (t->certeh && t->eh && t->cf)
+    fprintf (f, "%scertified, E and H only: %.4g ns, against eh-only %.3g "
+             "ns = %.0f, against closed-form (double, heading and time) "
+             "= %.0f (minima; medians %.0f and %.0f)\n", item,
+             t->certeh->ns_min, t->eh->ns_min,
+             t->certeh->ns_min / t->eh->ns_min,
+             t->certeh->ns_min / t->cf->ns_min,
+             t->certeh->ns_med / t->eh->ns_med,
+             t->certeh->ns_med / t->cf->ns_med);
+  if (t->cert && t->certeh)
+    fprintf (f, "%scertified: max %.3g ulps from the oracle's correctly "
+             "rounded value (heading and time row: %zu values of E', H' and "
+             "the increments; E and H row: %zu; not decided by the oracle's "
+             "ball, not compared: %zu and %zu) (target 0: %s); the fraction "
+             "of calls that raised the precision is not observable through "
+             "the public API\n", item,
+             fmax (t->cert->max_ulps, t->certeh->max_ulps), t->cert->cr_n,
+             t->certeh->cr_n, t->cert->cr_undecided,
+             t->certeh->cr_undecided,
+             t->cert->max_ulps == 0 && t->certeh->max_ulps == 0
+             && t->cert->cr_n > 0 && t->certeh->cr_n > 0
+             && t->cert->failures == 0 && t->certeh->failures == 0
+             ? "met" : "NOT met");
 }
 
 static int
@@ -998,7 +1184,8 @@ write_csv (const char *path, const row_t *rows, int n)
   fprintf (f, "method,setting,ns_per_collision,max_rel_error,median_rel_error,"
            "max_rel_error_eh,max_rel_error_theta_tau,max_err_over_kappa_eps,"
            "ns_median,ratio_to_baseline,failures,reversal_mismatches,"
-           "states_timed,collisions_timed,repetitions,timing\n");
+           "states_timed,collisions_timed,repetitions,timing,"
+           "max_ulps_correctly_rounded,values_ulps,values_undecided\n");
   for (int i = 0; i < n; i++)
     {
       const row_t *r = &rows[i];
@@ -1015,9 +1202,14 @@ write_csv (const char *path, const row_t *rows, int n)
       else
         fprintf (f, "-,-,");
       const size_t states = r->kind == ROW_SCIPY ? r->ext_states : r->b->n;
-      fprintf (f, "%.4g,%.3g,%zu,%zu,%zu,%ld,%ld,min of %ld\n", r->ns_med,
+      fprintf (f, "%.4g,%.3g,%zu,%zu,%zu,%ld,%ld,min of %ld,", r->ns_med,
                r->ns_min / rows[0].ns_min, r->failures, r->mismatches,
                states, r->passes * (long) states, r->reps, r->reps);
+      if (r->kind == ROW_SCIPY)
+        fprintf (f, "-,-,-\n");
+      else
+        fprintf (f, "%.4g,%zu,%zu\n", r->max_ulps, r->cr_n,
+                 r->cr_undecided);
     }
   int bad = ferror (f);
   return fclose (f) != 0 || bad ? 2 : 0;
@@ -1069,12 +1261,12 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
              "%zu spinning, %zu invalid, %zu inaccurate)", b->lines - b->n,
              b->n_spin, b->n_bad, b->n_fail);
   fprintf (f, ".\n\n");
-  fprintf (f, "@multitable {scipy-dop853} {double} {ns/coll.} {median} "
+  fprintf (f, "@multitable {scipy-dop853} {theta+tau} {ns/coll.} {median} "
            "{15600} {max.@: error} {median error} {err./(kappa eps)} "
-           "{fail.}\n");
+           "{3.02e+12} {fail.}\n");
   fprintf (f, "@headitem method @tab setting @tab ns/coll. @tab median "
            "@tab ratio @tab max.@: error @tab median error "
-           "@tab err./(kappa eps) @tab fail.\n");
+           "@tab err./(kappa eps) @tab ulps @tab fail.\n");
   for (int i = 0; i < n; i++)
     {
       const row_t *r = &rows[i];
@@ -1091,6 +1283,10 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
         fprintf (f, "%.3g", r->max_kappa_eps);
       else
         fprintf (f, "-");
+      if (r->kind == ROW_SCIPY)
+        fprintf (f, " @tab -");
+      else
+        fprintf (f, " @tab %.3g", r->max_ulps);
       fprintf (f, " @tab %zu\n", r->failures);
     }
   fprintf (f, "@end multitable\n\n");
@@ -1100,18 +1296,24 @@ write_texi (const char *path, const bench *b, const row_t *rows, int n,
            "repetitions; ratio: to the baseline's minimum; max.@: and median "
            "error: over the states, of the largest relative error of a "
            "step's outputs; err./(kappa eps): the largest heading or time "
-           "error in units of @math{eps max(1, kappa)}; fail.: steps that "
+           "error in units of @math{eps max(1, kappa)}; ulps: the largest "
+           "distance in ulps of a step's outputs from their correctly "
+           "rounded values, the oracle's (0 is correct rounding; %zu of the "
+           "%zu values of the certified heading and time row not decided by "
+           "the oracle's ball and not compared); fail.: steps that "
            "returned an error status.  Collisions per repetition (passes over "
-           "all the scenes' collisions):", rows[0].reps);
+           "all the scenes' collisions):", rows[0].reps,
+           t->cert ? t->cert->cr_undecided : (size_t) 0,
+           t->cert ? t->cert->cr_n + t->cert->cr_undecided : (size_t) 0);
   const row_t *sp = NULL;
   for (int i = 0, first = 1; i < n; i++)
     if (rows[i].kind == ROW_SCIPY)
       sp = sp ? sp : &rows[i];
     else if (!rows[i].diag)
       {
+        const int set = rows[i].kind == ROW_FULL || rows[i].kind == ROW_EHO;
         fprintf (f, "%s %s%s%s %ld", first ? "" : ",", rows[i].method,
-                 rows[i].kind == ROW_FULL ? " " : "",
-                 rows[i].kind == ROW_FULL ? rows[i].setting : "",
+                 set ? " " : "", set ? rows[i].setting : "",
                  rows[i].passes * (long) rows[i].b->n);
         first = 0;
       }
@@ -1164,10 +1366,10 @@ print_table (const bench *b, const row_t *rows, int n)
   printf ("%zu states (%zu reversing) of %zu lines; not answered by the "
           "oracle: %zu spin, %zu bad, %zu fail\n", b->n, b->n_rev, b->lines,
           b->n_spin, b->n_bad, b->n_fail);
-  printf ("%-11s %-7s %9s %9s %7s %9s %9s %9s %9s %10s %5s %5s %s\n",
+  printf ("%-11s %-9s %9s %9s %7s %9s %9s %9s %9s %10s %5s %5s %5s %s\n",
           "method", "setting", "ns(min)", "ns(med)", "ratio", "max_err",
-          "med_err", "max_eh", "max_th/ta", "err/(k eps)", "fail", "rev!",
-          "reps x collisions");
+          "med_err", "max_eh", "max_th/ta", "err/(k eps)", "ulps", "fail",
+          "rev!", "reps x collisions");
   for (int i = 0; i < n; i++)
     {
       const row_t *r = &rows[i];
@@ -1178,7 +1380,7 @@ print_table (const bench *b, const row_t *rows, int n)
         printf ("diagnostic rows (not in the CSV): orbits of %d collisions "
                 "from each scene's first state (timing only; errors: one "
                 "step from each state)\n", LONG_ORBIT);
-      printf ("%-11s %-7s %9.4g %9.4g %7.3g %9.2e %9.2e ",
+      printf ("%-11s %-9s %9.4g %9.4g %7.3g %9.2e %9.2e ",
               r->kind == ROW_SCIPY ? "scipy" : r->method, r->setting,
               r->ns_min, r->ns_med, r->ns_min / rows[0].ns_min, r->max_err,
               r->med_err);
@@ -1190,6 +1392,10 @@ print_table (const bench *b, const row_t *rows, int n)
         printf ("%9.2e %10.3g ", r->max_tt, r->max_kappa_eps);
       else
         printf ("%9s %10s ", "-", "-");
+      if (r->kind == ROW_SCIPY)
+        printf ("%5s ", "-");
+      else
+        printf ("%5.3g ", r->max_ulps);
       printf ("%5zu %5zu %ld x %ld%s\n", r->failures, r->mismatches, r->reps,
               r->kind == ROW_SCIPY ? (long) r->ext_states
               : r->passes * (r->diag == 2 ? (long) r->b->nscenes * LONG_ORBIT

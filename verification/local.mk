@@ -49,7 +49,7 @@ endif
 EXTRA_PROGRAMS = verification/oracle
 verification_oracle_SOURCES = verification/oracle.c verification/tap.h
 verification_oracle_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
-verification_oracle_LDADD = $(VERIFICATION_LDADD) $(ARB_LIBS)
+verification_oracle_LDADD = $(VERIFICATION_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 
 accuracy-tables: verification/oracle
 	CHAPLYGIN_VERIFY_LEVEL=2 ./verification/oracle --table $(srcdir)/doc/accuracy.texi

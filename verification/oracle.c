@@ -97,6 +97,17 @@
    items (automake's XFAIL; one that passes fails the program) while they
    remained; all are fixed, and the chapter's "Known failures" lists them
    with what remains documented (the ODE method's declines).
+   The certified method (CHAPLYGIN_CERTIFIED, issue 28) is checked without
+   a tolerance on every step above (the orbits' steps from the closed
+   form's own input states, and the slow starts from the state that
+   chaplygin_discrete_state_from_phase makes of them, the oracle then
+   evaluating that state's doubles E and H exactly): wherever the oracle's
+   ball of a quantity decides its rounding to the nearest double (both
+   ends of the ball round alike, by MPFR), the library's E', H', theta',
+   tau' and the event's dtheta, dtau, V- and Dc must be that double (0
+   ulps), its statuses (CHAPLYGIN_ESPIN, CHAPLYGIN_ESTATE where (V+)^2 <= 0
+   exactly) and reversal flags the oracle's; balls that do not decide are
+   counted and reported, not compared (see cert_step).
    The errors are reported in ulps, |lib - ref|/ulp(ref), max and mean per
    quantity and data set; with --table FILE the program also writes them
    as the Texinfo chapter "Accuracy tables" (doc/accuracy.texi).  Level 1
@@ -120,6 +131,7 @@
 #include <acb_calc.h>
 #include <acb_elliptic.h>
 #include <arb.h>
+#include <mpfr.h>
 
 #include "chaplygin.h"
 #include "tap.h"
@@ -1798,6 +1810,223 @@ sum_ref (arb_t y, double x, const arb_t dx, double kappa_dx)
   return k;
 }
 
+/* ------------------------------------------------------------------ */
+/* The certified method against the oracle's own rounding              */
+/* ------------------------------------------------------------------ */
+
+/* chaplygin_discrete_step with CHAPLYGIN_CERTIFIED (issue 28) returns
+   each of its outputs as the double nearest (ties to even) to the exact
+   value of the model for its exact input doubles.  Its check here needs
+   no tolerance: wherever the oracle's ball for a quantity decides that
+   rounding (both ends of the ball round to the same double), the
+   library's double must be that double, 0 ulps.  Where the ball does not
+   decide (a value within the ball's radius, about 2^-128 relative, of a
+   midpoint between doubles: in practice an exact tie whose ball is not
+   exact) the case is counted and reported, not compared, and nothing is
+   widened.  Compared on every step the oracle evaluates: the orbits of
+   run_steps (each step from the closed form's own input state, whose
+   doubles are the certified method's exact input) and the slow starts of
+   run_slow (from the state of chaplygin_discrete_state_from_phase, whose
+   E and H the oracle takes as given here, exactly: the certified method's
+   input is that state, not the phase state the other rows refer to).  The
+   statuses must be the oracle's: CHAPLYGIN_ESPIN where it finds the
+   spinning state, CHAPLYGIN_ESTATE where the state's (V+)^2 <= 0 exactly,
+   success everywhere else; the reversal flag and the new direction its
+   exact decision. */
+enum
+{ CQ_E, CQ_H, CQ_THETA, CQ_TAU, CQ_DTH, CQ_DTA, CQ_VM, CQ_DC, NCQ };
+
+static const char *const cqname[NCQ] = {
+  "E'", "H'", "theta'", "tau'", "event dtheta", "event dtau",
+  "event V-", "event Dc"
+};
+
+typedef struct
+{
+  long n, undecided, wrong;     /* compared; not decided by the oracle;
+                                   not the oracle's rounding */
+  double max_ulps;
+} cstat_t;
+
+static cstat_t cst[NCQ][NS];
+static int use_cert;            /* the library has CHAPLYGIN_CERTIFIED */
+static long n_cert_calls, n_cert_steps, n_cert_steps_set[NS];
+static long n_cert_spin, n_cert_refused, n_cert_status_bad, n_cert_flag_bad;
+static long n_cert_printed;
+static double t_cert;           /* seconds spent in the certified calls */
+
+static const chaplygin_options opt_cert =
+  { CHAPLYGIN_CERTIFIED, 1e-13, CHAPLYGIN_PREC_DOUBLE };
+
+/* The double nearest to X (ties to even, subnormals and overflow
+   included): X converted exactly to MPFR, then mpfr_get_d, which rounds
+   correctly.  An independent route from the library's chp_cert_round. */
+static double
+arf_nearest (const arf_t x)
+{
+  mpfr_t m;
+  const slong bits = arf_bits (x);
+  mpfr_init2 (m, bits < MPFR_PREC_MIN ? MPFR_PREC_MIN : bits);
+  arf_get_mpfr (m, x, MPFR_RNDN);       /* exact: enough bits */
+  const double d = mpfr_get_d (m, MPFR_RNDN);
+  mpfr_clear (m);
+  return d;
+}
+
+/* 1 and *X if both ends of the ball B round to the same double *X (a
+   zero's sign aside: a ball of radius below 2^-1075 about 0 rounds to
+   +-0, both 0); 0 if B does not decide its rounding. */
+static int
+ball_nearest (const arb_t b, double *x)
+{
+  if (!arb_is_finite (b))
+    return 0;
+  arf_t lo, hi, r;
+  arf_init (lo), arf_init (hi), arf_init (r);
+  arf_set_mag (r, arb_radref (b));
+  arf_sub (lo, arb_midref (b), r, ARF_PREC_EXACT, ARF_RND_DOWN);
+  arf_add (hi, arb_midref (b), r, ARF_PREC_EXACT, ARF_RND_DOWN);
+  const double a = arf_nearest (lo), c = arf_nearest (hi);
+  arf_clear (lo), arf_clear (hi), arf_clear (r);
+  *x = c;
+  return a == c;
+}
+
+/* The distance in ulps between two finite doubles (the number of doubles
+   from one to the other; +0 and -0 are the same), or infinity. */
+static double
+ulps_between (double a, double b)
+{
+  if (a == b)
+    return 0.0;
+  if (!isfinite (a) || !isfinite (b))
+    return INFINITY;
+  long long ia, ib;
+  memcpy (&ia, &a, sizeof ia);
+  memcpy (&ib, &b, sizeof ib);
+  ia = ia < 0 ? -(ia & 0x7fffffffffffffffLL) : ia;
+  ib = ib < 0 ? -(ib & 0x7fffffffffffffffLL) : ib;
+  /* the difference in integers: converting each to double first would
+     round both to the same double (they are above 2^53) */
+  const __int128 d = (__int128) ia - ib;
+  return (double) (d < 0 ? -d : d);
+}
+
+/* One certified output LIB of quantity Q against the oracle's ball REF. */
+static void
+cert_cmp (int q, int set, double lib, const arb_t ref, const char *where)
+{
+  cstat_t *c = &cst[q][set];
+  double want;
+  if (!ball_nearest (ref, &want))
+    {
+      c->undecided++;
+      if (n_cert_printed++ < 40)
+        {
+          printf ("# certified: the oracle's ball does not decide the "
+                  "rounding of %s at %s (library %a); ball ", cqname[q],
+                  where, lib);
+          arb_printd (ref, 40);
+          printf ("\n");
+        }
+      return;
+    }
+  const double u = ulps_between (lib, want);
+  c->n++;
+  c->max_ulps = fmax (c->max_ulps, u);
+  if (u != 0.0)
+    {
+      c->wrong++;
+      if (n_cert_printed++ < 40)
+        {
+          printf ("# certified %s = %a, the oracle's rounding %a (%.3g ulps) "
+                  "at %s; ball ", cqname[q], lib, want, u, where);
+          arb_printd (ref, 40);
+          printf ("\n");
+        }
+    }
+}
+
+static double
+cert_clock (void)
+{
+  struct timespec ts;
+  clock_gettime (CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* The certified step from S (system SYS = (L0, Delta)) against the
+   oracle's evaluation R of the same exact state, whose outcome was ORC. */
+static void
+cert_step (int set, const chaplygin_discrete *sys,
+           const chaplygin_discrete_state *s, int orc, const sref *r)
+{
+  chaplygin_discrete_state out;
+  chaplygin_discrete_event ev;
+  char where[300];
+  if (!use_cert || orc == ORC_INACC)
+    return;                     /* an oracle failure is counted where it
+                                   was evaluated */
+  snprintf (where, sizeof where, "%s: L0 %a, Delta %a, dir %d, E %a, H %a, "
+            "theta %a, tau %a, V %a", sname[set], sys->L0, sys->Delta,
+            s->dir, s->E, s->H, s->theta, s->tau, s->V);
+  const double t0 = cert_clock ();
+  const int rl = chaplygin_discrete_step (sys, s, CHAPLYGIN_WANT_ALL,
+                                          &opt_cert, &out, &ev);
+  t_cert += cert_clock () - t0;
+  n_cert_calls++;
+  if (orc != ORC_OK)
+    {
+      /* the spinning state, or a state that cannot move */
+      const int want = orc == ORC_SPIN ? CHAPLYGIN_ESPIN : CHAPLYGIN_ESTATE;
+      if (rl == want)
+        orc == ORC_SPIN ? n_cert_spin++ : n_cert_refused++;
+      else
+        {
+          n_cert_status_bad++;
+          printf ("# certified step: %s, the oracle %s at %s\n",
+                  chaplygin_strerror (rl), orc == ORC_SPIN
+                  ? "finds the spinning state" : "finds (V+)^2 <= 0", where);
+        }
+      return;
+    }
+  if (rl != CHAPLYGIN_SUCCESS)
+    {
+      n_cert_status_bad++;
+      printf ("# certified step failed (%s) at %s\n", chaplygin_strerror (rl),
+              where);
+      return;
+    }
+  if (ev.reversal != r->reversal
+      || out.dir != (r->reversal ? -s->dir : s->dir))
+    {
+      n_cert_flag_bad++;
+      printf ("# certified step: reversal %d (dir %d), oracle %d at %s\n",
+              ev.reversal, out.dir, r->reversal, where);
+      return;
+    }
+  n_cert_steps++, n_cert_steps_set[set]++;
+  arb_t y, t;
+  arb_init (y), arb_init (t);
+  cert_cmp (CQ_E, set, out.E, r->E, where);
+  cert_cmp (CQ_H, set, out.H, r->H, where);
+  /* theta' = theta + dtheta and tau' = tau + dtau, the input doubles
+     exact (the sums exact at this precision: the references are ~2^-2000
+     wide or more) */
+  arb_set_d (t, s->theta);
+  arb_add (y, t, r->dth, 4 * PREC_MAX);
+  cert_cmp (CQ_THETA, set, out.theta, y, where);
+  arb_set_d (t, s->tau);
+  arb_add (y, t, r->dta, 4 * PREC_MAX);
+  cert_cmp (CQ_TAU, set, out.tau, y, where);
+  cert_cmp (CQ_DTH, set, ev.dtheta, r->dth, where);
+  cert_cmp (CQ_DTA, set, ev.dtau, r->dta, where);
+  cert_cmp (CQ_VM, set, ev.Vminus, r->Vm, where);
+  if (r->reversal)
+    cert_cmp (CQ_DC, set, ev.Dc, r->Dc, where);
+  arb_clear (y), arb_clear (t);
+}
+
 /* Orbits of the return map through chaplygin_discrete_step: each step is
    compared with the oracle started from the library's own input state. */
 static void
@@ -1855,6 +2084,8 @@ run_steps (int set, int n, int nsteps, unsigned long long *seed)
             int rc = step_eval (L0, Delta, s->dir, Ea, Ha, &r, me == M_CF);
             int rl = chaplygin_discrete_step (&sys, s, CHAPLYGIN_WANT_ALL,
                                               &opt_of[me], &out, &ev);
+            if (me == M_CF)
+              cert_step (set, &sys, s, rc, &r);
             if (rc == ORC_SPIN || rl == CHAPLYGIN_ESPIN)
               {
                 if (rc == ORC_SPIN && rl == CHAPLYGIN_ESPIN)
@@ -2190,6 +2421,28 @@ slow_point (int set, double L0, double Delta, int dir, double V0, double Om0)
               kVm);
       if (r.reversal)
         record (me, Q_DC, set, ulp_err (ev.Dc, r.Dc), tol_ulps (me, kDc), kDc);
+    }
+  /* the certified method from the library's state (E and H rounded by
+     chaplygin_discrete_state_from_phase), against the oracle's step from
+     those doubles exactly */
+  if (use_cert)
+    {
+      const double q[4] = { D0, V0, 0.0, Om0 };
+      chaplygin_discrete_state in;
+      if (chaplygin_discrete_state_from_phase (&sys, q, 0.0, NULL, &in)
+          == CHAPLYGIN_SUCCESS)
+        {
+          arb_set_d (Ep, in.E);
+          arb_set_d (Hp, in.H);
+          rc = step_eval (L0, Delta, dir, Ep, Hp, &r1, 1);
+          if (rc == ORC_INACC)
+            {
+              n_oracle_fail++;
+              printf ("# oracle: the step from the state of %s failed\n",
+                      point);
+            }
+          cert_step (set, &sys, &in, rc, &r1);
+        }
     }
   /* the leg: half way to the turning point, rounded, but not beyond it */
   D = Delta - D0;
@@ -2730,12 +2983,16 @@ write_table (const char *path, int level)
    and any other program that wants them.  IN has one post-collision state
    a line, "L0 Delta dir E H" (C99 hex floats, or any strtod syntax); OUT
    gets one line each:
-     ok REV E'hi E'lo H'hi H'lo DTHhi DTHlo DTAhi DTAlo KTH KTA
+     ok REV E'hi E'lo H'hi H'lo DTHhi DTHlo DTAhi DTAlo KTH KTA CE CH CTH CTA
    the next E, H and the heading and time increments of the return map
    (B.3)/(B.4) as double-double pairs (hi the nearest double, lo the
    nearest double to the rest: about 106 correct bits, the reference
    itself carrying at least MIN_BITS), REV 1 for a reversal, KTH and KTA
-   the condition numbers of the increments with respect to E and H; or
+   the condition numbers of the increments with respect to E and H, and
+   the same four quantities correctly rounded (the double nearest to the
+   exact value, ties to even: the double both ends of the oracle's ball
+   round to, ball_nearest), or "-" where the ball does not decide the
+   rounding (the benchmark's reference for the certified method); or
      spin    for 2E = H^2 reaching l = 0 (CHAPLYGIN_ESPIN),
      bad     for a state that cannot move (V+^2 <= 0),
      fail    if the oracle did not reach its accuracy.
@@ -2821,7 +3078,17 @@ refs_mode (const char *in_path, const char *out_path)
       print_dd (out, r.H);
       print_dd (out, r.dth);
       print_dd (out, r.dta);
-      fprintf (out, " %.3g %.3g\n", kth, kta);
+      fprintf (out, " %.3g %.3g", kth, kta);
+      const arb_struct *cr[4] = { r.E, r.H, r.dth, r.dta };
+      for (int j = 0; j < 4; j++)
+        {
+          double x;
+          if (ball_nearest (cr[j], &x))
+            fprintf (out, " %a", x);
+          else
+            fprintf (out, " -");
+        }
+      fprintf (out, "\n");
     }
   sref_clear (&r), sref_clear (&r1);
   arb_clear (Ea), arb_clear (Ha), arb_clear (t);
@@ -2831,6 +3098,127 @@ refs_mode (const char *in_path, const char *out_path)
   if (fclose (out) != 0)
     rc = 2;
   return rc;
+}
+
+/* The instruments of the certified checks on known cases (a comparison
+   that cannot see an ulp passes everything: ulps_between once returned 0
+   for every pair of doubles above 2^-969 that differ by a few ulps, the
+   doubles' bit patterns converted to double before the subtraction):
+   distances of 1 ulp at 1, across 0, at the top and in the subnormals;
+   balls inside an ulp's rounding interval decide, balls about a midpoint
+   (ties, normal and subnormal) do not, an exact tie rounds to even.
+   Returns the number of failures. */
+static int
+cert_selftest (void)
+{
+  int bad = 0;
+  const double one_up = nextafter (1.0, 2.0), big = 0x1.23456789abcdep+900;
+  bad += ulps_between (1.0, one_up) != 1;
+  bad += ulps_between (big, nextafter (big, 0.0)) != 1;
+  bad += ulps_between (DBL_MAX, nextafter (DBL_MAX, 0.0)) != 1;
+  bad += ulps_between (0x1p-1074, -0x1p-1074) != 2;
+  bad += ulps_between (0.0, -0.0) != 0;
+  bad += ulps_between (3.0, 3.0 + 0x1p-50) != 2;
+  arb_t b;
+  arb_init (b);
+  double x;
+  /* 1 + 2^-53 exactly: a tie, rounds to 1 (even) */
+  arb_set_d (b, 0x1p-53);
+  arb_add_ui (b, b, 1, ARF_PREC_EXACT);
+  bad += !ball_nearest (b, &x) || x != 1.0;
+  /* 1 + 3 2^-53 exactly: a tie, to 1 + 2^-51 (even) */
+  arb_set_d (b, 0x3p-53);
+  arb_add_ui (b, b, 1, ARF_PREC_EXACT);
+  bad += !ball_nearest (b, &x) || x != 1.0 + 0x1p-51;
+  /* the tie 1 + 2^-53 with a radius 2^-200: undecided */
+  arb_set_d (b, 0x1p-53);
+  arb_add_ui (b, b, 1, ARF_PREC_EXACT);
+  mag_set_ui_2exp_si (arb_radref (b), 1, -200);
+  bad += ball_nearest (b, &x);
+  /* 1 + 2^-53 - 2^-190 with a radius 2^-200: decided, 1 */
+  arb_set_d (b, 0x1p-53);
+  arb_add_ui (b, b, 1, ARF_PREC_EXACT);
+  {
+    arb_t t;
+    arb_init (t);
+    arb_set_d (t, 0x1p-190);
+    arb_sub (b, b, t, ARF_PREC_EXACT);
+    arb_clear (t);
+  }
+  mag_set_ui_2exp_si (arb_radref (b), 1, -200);
+  bad += !ball_nearest (b, &x) || x != 1.0;
+  /* subnormals: 2.5 2^-1074 is a tie, to 2 2^-1074 (even); with a radius
+     it is undecided; 2.5 2^-1074 + 2^-1100 rounds to 3 2^-1074 */
+  arb_set_ui (b, 5);
+  arb_mul_2exp_si (b, b, -1075);
+  bad += !ball_nearest (b, &x) || x != 0x2p-1074;
+  mag_set_ui_2exp_si (arb_radref (b), 1, -1200);
+  bad += ball_nearest (b, &x);
+  arb_set_ui (b, 5 << 25);
+  arb_add_ui (b, b, 1, ARF_PREC_EXACT);
+  arb_mul_2exp_si (b, b, -1100);
+  bad += !ball_nearest (b, &x) || x != 0x3p-1074;
+  arb_clear (b);
+  return bad;
+}
+
+/* The certified method's checks: statuses and flags, then one check per
+   quantity over all data sets (0 ulps wherever the oracle's ball decides
+   the rounding), with a line per set. */
+static void
+cert_report (void)
+{
+  long total = 0, undecided = 0, wrong = 0;
+  double worst = 0;
+  for (int q = 0; q < NCQ; q++)
+    for (int s = 0; s < NS; s++)
+      {
+        total += cst[q][s].n;
+        undecided += cst[q][s].undecided;
+        wrong += cst[q][s].wrong;
+        worst = fmax (worst, cst[q][s].max_ulps);
+      }
+  printf ("# certified: %ld calls of chaplygin_discrete_step "
+          "(CHAPLYGIN_CERTIFIED, CHAPLYGIN_WANT_ALL), %.2f s, %.0f us a call; "
+          "%ld steps compared, %ld values: max %.3g ulps from the oracle's "
+          "rounding, %ld values not the oracle's rounding, %ld not decided "
+          "by the oracle's ball\n", n_cert_calls, t_cert,
+          n_cert_calls ? 1e6 * t_cert / n_cert_calls : 0.0, n_cert_steps,
+          total, worst, wrong, undecided);
+  for (int s = 0; s < NS; s++)
+    {
+      if (!set_ran[s])
+        continue;
+      long n = 0, u = 0;
+      double m = 0;
+      for (int q = 0; q < NCQ; q++)
+        n += cst[q][s].n, u += cst[q][s].undecided,
+          m = fmax (m, cst[q][s].max_ulps);
+      printf ("# certified, %-22s %4ld steps, %5ld values, max %.3g ulps, "
+              "%ld undecided\n", sname[s], n_cert_steps_set[s], n, m, u);
+    }
+  tap_check (n_cert_status_bad == 0 && n_cert_flag_bad == 0
+             && n_cert_steps > 0, (double) (n_cert_status_bad
+                                            + n_cert_flag_bad), 0,
+             "certified: statuses as the oracle decides (%ld steps succeed, "
+             "%ld CHAPLYGIN_ESPIN at the spinning state, %ld CHAPLYGIN_ESTATE "
+             "where (V+)^2 <= 0 exactly), reversal flags and directions its "
+             "exact decision", n_cert_steps, n_cert_spin, n_cert_refused);
+  const int selftest = cert_selftest ();
+  tap_check (selftest == 0, selftest, 0, "certified checks' instruments: "
+             "distances in ulps and the rounding of balls on 13 known cases");
+  for (int q = 0; q < NCQ; q++)
+    {
+      long n = 0, u = 0, w = 0;
+      double m = 0;
+      for (int s = 0; s < NS; s++)
+        n += cst[q][s].n, u += cst[q][s].undecided, w += cst[q][s].wrong,
+          m = fmax (m, cst[q][s].max_ulps);
+      tap_check (w == 0 && n > 0, m, 0, "certified %s: the oracle's "
+                 "correctly rounded value on all %ld comparisons, every data "
+                 "set (%ld not decided by the oracle's ball, not compared)",
+                 cqname[q], n, u);
+    }
 }
 
 static double
@@ -2860,6 +3248,9 @@ main (int argc, char **argv)
         return 2;
       }
   const int level = tap_level ();
+  if (chaplygin_method_available (CHAPLYGIN_CERTIFIED, &use_cert)
+      != CHAPLYGIN_SUCCESS)
+    use_cert = 0;
   /* points per data set: legs, orbits, parameter points */
   const int nl = level == 2 ? 1600 : 40, no = level == 2 ? 400 : 10;
   const int np = level == 2 ? 16000 : 400;
@@ -2943,6 +3334,11 @@ main (int argc, char **argv)
   for (int me = 0; me < NM; me++)
     if (use_method[me])
       tap_report (me);
+  if (use_cert)
+    cert_report ();
+  else
+    printf ("# CHAPLYGIN_CERTIFIED is not built into this library: its "
+            "checks are skipped\n");
   if (table && write_table (table, level))
     {
       tap_check (0, 1, 0, "writing %s", table);
