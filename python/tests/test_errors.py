@@ -42,6 +42,15 @@ def provoke_enoconv():
     d.basin_boundaries(d.init(-0.95, 1.0), 1 / 1.9025, 2.0, 2.8, 3, 60)
 
 
+def provoke_ecap():
+    # L0 = 1/3, Delta = 2/7, E = 5/11, H = -3/13 exactly: with a cap of 64
+    # bits the exact E and H outgrow it within a few collisions
+    o = c.CertifiedOrbit.exact((1, 3), (2, 7), 1, (5, 11), (-3, 13))
+    o.cap(64)
+    for _ in range(64):
+        o.step()
+
+
 CASES = [
     ('EINVAL', provoke_einval, c.InvalidArgumentError, ValueError,
      'chaplygin_discrete_heading'),
@@ -55,6 +64,8 @@ CASES = [
      'chaplygin_discrete_spin_ratio'),
     ('ENOCONV', provoke_enoconv, c.NoConvergenceError, ArithmeticError,
      'chaplygin_discrete_basin_boundaries'),
+    ('ECAP', provoke_ecap, c.CertificationCapError, ArithmeticError,
+     'chaplygin_certified_orbit_step'),
 ]
 
 
