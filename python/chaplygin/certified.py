@@ -45,7 +45,7 @@ import numpy as np
 
 from . import _core
 from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_float, _as_struct,
-                    _nt, _real, _request, _refuse_masked, _struct_class,
+                    _real, _request, _refuse_masked, _struct_class,
                     _enum_value, _REAL_TYPES)
 
 __all__ = ['CertifiedOrbit', 'certified_orbit_new',

@@ -16,9 +16,9 @@ here:
 The whole file is skipped in a build without Arb, where the method is
 not available (test_method_available checks that claim against
 config.h)."""
+import ctypes
 import gc
 import math
-import os
 import pickle
 import threading
 from fractions import Fraction as F
@@ -34,7 +34,6 @@ AVAILABLE = c.method_available('certified') == 1
 need_arb = pytest.mark.skipif(not AVAILABLE,
                               reason='a build without Arb: no certified '
                                      'method')
-EPS = 2.0 ** -52
 
 
 # ---- the exact route ------------------------------------------------------
@@ -77,6 +76,21 @@ def nearest_sqrt(q):
                     x = y
             return x
     raise AssertionError('nearest_sqrt did not settle')
+
+
+def test_nearest_sqrt():
+    """The route's square root: exact squares, the neighbours of a
+    midpoint's square, and midpoints themselves (ties to even: 1 + 2^-53
+    lies between 1 and 1 + 2^-52, 1 + 3 2^-53 between 1 + 2^-52 and
+    1 + 2^-51)."""
+    assert nearest_sqrt(F(9, 4)) == 1.5 and nearest_sqrt(F(0)) == 0.0
+    m = 1 + F(1, 2 ** 53)
+    assert nearest_sqrt(m * m) == 1.0
+    assert nearest_sqrt(m * m + F(1, 2 ** 200)) == 1 + 2.0 ** -52
+    assert nearest_sqrt(m * m - F(1, 2 ** 200)) == 1.0
+    m = 1 + F(3, 2 ** 53)
+    assert nearest_sqrt(m * m) == 1 + 2.0 ** -51
+    assert nearest_sqrt(F(2)) == math.sqrt(2)   # IEEE sqrt: correctly rounded
 
 
 def struct_bits(x):
@@ -163,6 +177,20 @@ def test_rational_start_against_fractions():
     compare_with_exact(o, F(1, 3), F(2, 7), 1, F(5, 11), F(-3, 13), 8)
     o = c.certified_orbit_new_exact((-7, 5), (2, 7), 1, 1, (9, 4))
     assert compare_with_exact(o, F(-7, 5), F(2, 7), 1, F(1), F(9, 4), 8) > 0
+
+
+@need_arb
+def test_turning_point_at_the_far_end():
+    """L0 = 1, Delta = 1, from the rear (l = 2) towards l = 1 with E = 1,
+    H = 2: 2E (1 + 1^2) = H^2, the turning point exactly at the far end,
+    which counts as a reversal (Dc = 0); then 4 collisions against the
+    exact route."""
+    o = c.certified_orbit_new_exact(1, 1, -1, 1, 2)
+    out, ev, b = o.step()
+    assert ev.reversal == 1 and same_bits(ev.Dc, 0.0) and out.dir == 1
+    assert ref_step(F(1), F(1), -1, F(1), F(2))[0]
+    o = c.certified_orbit_new_exact(1, 1, -1, 1, 2)
+    assert compare_with_exact(o, F(1), F(1), -1, F(1), F(2), 4) >= 1
 
 
 @need_arb
@@ -444,28 +472,41 @@ def test_close_and_context():
     assert 'closed' in repr(o)
 
 
-def rss():
-    with open('/proc/self/statm') as fh:
-        return int(fh.read().split()[1]) * os.sysconf('SC_PAGE_SIZE')
+def malloc_in_use():
+    """Bytes in use by malloc (glibc's mallinfo2), or None elsewhere."""
+    try:
+        libc = ctypes.CDLL(None)
+        f = libc.mallinfo2
+    except (OSError, AttributeError):
+        return None
+
+    class MallInfo2(ctypes.Structure):
+        _fields_ = [(n, ctypes.c_size_t) for n in (
+            'arena', 'ordblks', 'smblks', 'hblks', 'hblkhd', 'usmblks',
+            'fsmblks', 'uordblks', 'fordblks', 'keepcost')]
+    f.restype = MallInfo2
+    m = f()
+    return m.uordblks + m.hblkhd
 
 
 @need_arb
-@pytest.mark.skipif(not os.path.exists('/proc/self/statm'), reason='no /proc')
+@pytest.mark.skipif(malloc_in_use() is None, reason='no mallinfo2 (glibc)')
 def test_del_frees():
-    """Orbits dropped without close() are freed by __del__: 4000 orbits of
-    10 collisions each (their balls and rationals: megabytes) leave the
-    resident size within 4 MB of where it was."""
+    """Orbits dropped without close() are freed by __del__: 2000 orbits of
+    3 collisions each leave malloc's bytes in use within 200 kB of where
+    they were (an orbit not freed keeps about 580 bytes: 1.1 MB)."""
     def churn(n):
         for _ in range(n):
             o = c.CertifiedOrbit.exact((1, 3), (2, 7), 1, (5, 11), (-3, 13))
-            for _ in range(10):
+            for _ in range(3):
                 o.step(return_ev=False, return_bounds=False)
             del o
         gc.collect()
-    churn(500)                  # the allocator's pools, warmed
-    before = rss()
-    churn(4000)
-    assert rss() - before < 4 * 2 ** 20, rss() - before
+    churn(200)                  # the caches, warmed
+    before = malloc_in_use()
+    churn(2000)
+    assert malloc_in_use() - before < 200 * 1024, \
+        malloc_in_use() - before
 
 
 @need_arb
