@@ -225,19 +225,25 @@ def test_random_orbits_against_fractions():
     assert steps > 100 and reversals > steps // 20
 
 
+U = 2.0 ** -52          # the spacing of the doubles in [1, 2)
+
+
 @need_arb
-def test_tie_in_energy():
-    """E' exactly at a midpoint: L0 = 0, Delta = 1, E = 2, H = 3 2^-25:
-    C1 = -1/8, E' = 2 - 9 2^-53 between 2 - 4 2^-52 and 2 - 5 2^-52; ties to
-    even: 2 - 2^-50 (the exact route's float(Fraction) agrees)."""
-    st = c.DiscreteState(dir=1, E=2.0, H=3 * 2.0 ** -25)
+@pytest.mark.parametrize('E,want,other', [(2.0, 2 - 4 * U, 2 - 5 * U),
+                                          (2 - U, 2 - 6 * U, 2 - 5 * U)])
+def test_tie_in_energy(E, want, other):
+    """E' exactly at a midpoint: L0 = 0, Delta = 1, H = 3 2^-25, so that
+    C1 = -1/8 and E' = E - 9 2^-53.  From E = 2: 2 - 4.5 U, between 2 - 4 U
+    (even, above) and 2 - 5 U; from E = 2 - U: 2 - 5.5 U, between 2 - 5 U
+    and 2 - 6 U (even, below): ties to even, once up and once down (the
+    exact route's float(Fraction) agrees)."""
+    st = c.DiscreteState(dir=1, E=E, H=3 * 2.0 ** -25)
     sys_ = d.init(0.0, 1.0)
-    want = 2 - 2.0 ** -50
-    assert float(ref_step(F(0), F(1), 1, F(2), F(3, 2 ** 25))[2]) == want
+    assert float(ref_step(F(0), F(1), 1, F(E), F(3, 2 ** 25))[2]) == want
     assert d.step(sys_, st, 0, method='certified').out.E == want
     out, ev, b = c.CertifiedOrbit(sys_, st).step()
     assert out.E == want and out.H == 3 * 2.0 ** -26
-    assert b.E == (2 - 5 * 2.0 ** -52, want)
+    assert b.E == (min(want, other), max(want, other))
     assert b.H == (3 * 2.0 ** -26, 3 * 2.0 ** -26)      # exact: a double
 
 
