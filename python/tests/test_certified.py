@@ -290,18 +290,29 @@ def test_ball_bounds_at_a_double():
 
 @need_arb
 def test_the_orbit_does_not_round_between_collisions():
-    """Along 12 collisions of Figure 3's line, discrete.orbit with
-    method='certified' certifies each collision from the rounded state
-    before it (the exact map from each rounded state, rounded), the
-    orbit from its exact start: each agrees with its own exact route."""
-    sys_, st = phase_state(*FIG3, 0.3, 0.8)
+    """Along 12 collisions of Figure 3's line (L0 = -1/2, Delta = 1, from
+    V+ = 0.31, Omega+ = 0.9), discrete.orbit with method='certified'
+    certifies each collision from the rounded state before it (the exact
+    map from each rounded state, rounded), the orbit from its exact start
+    (the exact map iterated, rounded once): each agrees with its own route,
+    and the two differ from the second collision on."""
+    sys_, st = phase_state(*FIG3, 0.31, 0.9)
     states = d.orbit(sys_, st, 12, request=0, method='certified')
+    o = c.CertifiedOrbit(sys_, st, 0)
+    E, H, dir = F(st.E), F(st.H), st.dir
+    differ = []
     for k in range(1, 13):
         prev = c.DiscreteState.from_record(states[k - 1])
         _, dir1, E1, H1, _, _ = ref_step(F(-0.5), F(1), prev.dir,
                                          F(prev.E), F(prev.H))
         assert (states[k]['dir'], states[k]['E'], states[k]['H']) == \
             (dir1, float(E1), float(H1)), k
+        _, dir, E, H, _, _ = ref_step(F(-0.5), F(1), dir, E, H)
+        out = o.step().out
+        assert (out.dir, out.E, out.H) == (dir, float(E), float(H)), k
+        if out.E != states[k]['E']:
+            differ.append(k)
+    assert differ == list(range(2, 13)), differ
 
 
 # ---- against the library's one-step route ----------------------------------
