@@ -48,7 +48,9 @@ How parameters become Python (from the C declaration alone):
                                                  precision=
 A function with a size_t parameter (a buffer length), a const pointer to a
 scalar (an array of caller-chosen length), a parameter of any other type
-(char *, a function pointer, ...) or one annotated (inout) has no generated
+(char *, a function pointer, a pointer to an opaque type such as
+chaplygin_certified_orbit, declared `typedef struct T T;' without members,
+...) or one annotated (inout) has no generated
 wrapper (and no C loop if a parameter is of another type): python/chaplygin/*.py defines it by hand, and the test
 python/tests/test_reachable.py fails until it does.
 
@@ -437,7 +439,11 @@ def parse(header_text):
     structs, enums, funcs = [], [], []
     for ext in ast.ext:
         if isinstance(ext, c_ast.Typedef):
-            if isinstance(ext.type.type, c_ast.Struct):
+            # an opaque type (typedef struct x x;, no members: the
+            # certified orbit) is no struct class: a pointer to it is
+            # classified 'unknown', and its functions are wrapped by hand
+            if isinstance(ext.type.type, c_ast.Struct) and \
+                    ext.type.type.decls is not None:
                 structs.append(ext.name)
             elif isinstance(ext.type.type, c_ast.Enum):
                 enums.append(ext.name)

@@ -15,7 +15,7 @@ PY_PACKAGE = python/chaplygin/__init__.py python/chaplygin/_core.py \
 	python/chaplygin/smooth.py python/chaplygin/massless.py \
 	python/chaplygin/printed.py python/chaplygin/sweep.py \
 	python/chaplygin/scene.py python/chaplygin/vectorised.py \
-	python/chaplygin/equation.py
+	python/chaplygin/equation.py python/chaplygin/certified.py
 PY_TESTS = python/tests/conftest.py \
 	python/tests/test_reachable.py python/tests/test_values.py \
 	python/tests/test_eq.py python/tests/test_errors.py \
@@ -24,7 +24,8 @@ PY_TESTS = python/tests/conftest.py \
 	python/tests/test_docs.py python/tests/test_smooth_path.py \
 	python/tests/test_equation.py python/tests/test_locale.py \
 	python/tests/test_interrupt.py python/tests/test_pickle.py \
-	python/tests/test_types.py python/tests/test_gen_write.py
+	python/tests/test_types.py python/tests/test_gen_write.py \
+	python/tests/test_certified.py
 PY_GENERATED = python/gen/module.c python/gen/vec.c python/gen/vec.h \
 	python/chaplygin/_generated.py
 EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \

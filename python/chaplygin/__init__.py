@@ -29,7 +29,9 @@ basins classify final motions, sweep.sigma4 / sweep.stability are the
 sweeps of Fig. 2, and run_scene runs a scene file (or a dict with the same
 sections and keys) as `chaplygin run` does and returns its columns, and
 eq evaluates any of the paper's numbered equations by label as `chaplygin
-eq` does (labels lists them).
+eq` does (labels lists them).  CertifiedOrbit follows an orbit by the
+certified method, every double the nearest to the model's exact value
+(chaplygin.certified; method="certified" certifies a single step).
 
 The numbers are the C library's, bit for bit: the package only converts
 arguments and results.  lib and ffi (cffi) reach the C functions directly.
@@ -38,7 +40,8 @@ arguments and results.  lib and ffi (cffi) reach the C functions directly.
 from . import _core
 from ._core import (ChaplyginError, InvalidArgumentError, DomainError,
                     StateError, SpinError, RangeError, NoConvergenceError,
-                    OutOfMemoryError, SceneError, EquationError, Struct,
+                    OutOfMemoryError, CertificationCapError, SceneError,
+                    EquationError, Struct,
                     error_class,
                     ERRORS, as_columns)
 from . import _generated
@@ -63,6 +66,11 @@ from ._groups import export as _export
 _export(globals(), '')
 
 from . import discrete, smooth, massless, printed, sweep, scene, vectorised
+from . import certified
+from .certified import (CertifiedOrbit, certified_orbit_new,
+                        certified_orbit_new_exact, certified_orbit_cap,
+                        certified_orbit_step, certified_orbit_collisions,
+                        certified_orbit_free, method_available)
 from .scene import run_scene
 from .equation import eq, labels
 from .sweep import grid_point

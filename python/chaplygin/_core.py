@@ -256,6 +256,12 @@ class OutOfMemoryError(ChaplyginError, MemoryError):
     """CHAPLYGIN_ENOMEM: memory allocation failed."""
 
 
+class CertificationCapError(ChaplyginError, ArithmeticError):
+    """CHAPLYGIN_ECAP: the certified method would need more than its
+    precision or size cap to prove the result (the orbit is left as it
+    was; CertifiedOrbit.cap raises the cap)."""
+
+
 class SceneError(ChaplyginError, ValueError):
     """A scene that does not parse or that the model rejects (the program's
     exit status 2); message: the program's message."""
@@ -270,6 +276,7 @@ _ERROR_CLASSES = {
     'EINVAL': InvalidArgumentError, 'EDOM': DomainError,
     'ESTATE': StateError, 'ESPIN': SpinError, 'ERANGE': RangeError,
     'ENOCONV': NoConvergenceError, 'ENOMEM': OutOfMemoryError,
+    'ECAP': CertificationCapError,
 }
 
 Status = _make_enum('enum chaplygin_status')

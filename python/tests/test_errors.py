@@ -42,6 +42,15 @@ def provoke_enoconv():
     d.basin_boundaries(d.init(-0.95, 1.0), 1 / 1.9025, 2.0, 2.8, 3, 60)
 
 
+def provoke_ecap():
+    # L0 = 1/3, Delta = 2/7, E = 5/11, H = -3/13 exactly: with a cap of 64
+    # bits the exact E and H outgrow it within a few collisions
+    o = c.CertifiedOrbit.exact((1, 3), (2, 7), 1, (5, 11), (-3, 13))
+    o.cap(64)
+    for _ in range(64):
+        o.step()
+
+
 CASES = [
     ('EINVAL', provoke_einval, c.InvalidArgumentError, ValueError,
      'chaplygin_discrete_heading'),
@@ -55,12 +64,17 @@ CASES = [
      'chaplygin_discrete_spin_ratio'),
     ('ENOCONV', provoke_enoconv, c.NoConvergenceError, ArithmeticError,
      'chaplygin_discrete_basin_boundaries'),
+    ('ECAP', provoke_ecap, c.CertificationCapError, ArithmeticError,
+     'chaplygin_certified_orbit_step'),
 ]
 
 
 @pytest.mark.parametrize('name,call,cls,base,function', CASES,
                          ids=[x[0] for x in CASES])
 def test_status_raised(name, call, cls, base, function):
+    if name == 'ECAP' and not c.method_available('certified'):
+        pytest.skip('a build without Arb: no certified method, no ECAP '
+                    '(test_ecap_without_arb)')
     with pytest.raises(cls) as info:
         call()
     e = info.value
@@ -110,6 +124,15 @@ def test_status_enomem():
 def test_every_status_covered():
     provoked = {x[0] for x in CASES} | {'ENOMEM'}
     assert provoked == {m.name for m in c.Status if m.value != 0}
+
+
+def test_ecap_without_arb():
+    """A build without Arb has no certified method: the orbit is refused
+    (EINVAL) before any cap can be met."""
+    if c.method_available('certified'):
+        pytest.skip('this build has the certified method (test_status_raised)')
+    with pytest.raises(c.InvalidArgumentError):
+        provoke_ecap()
 
 
 def test_more_library_statuses():

@@ -37,6 +37,31 @@ SWEEP = {'scene': {'model': 'discrete'},          # V = 0 fails: masked
 MOTION = c.smooth.motion_init(1.0, [0, 1, 0, 0.5])
 BAD = c.DiscreteState(dir=1, E=float('nan'), H=0.2)   # fails at once
 
+
+def stepped(orbit, n, cap=None):
+    """ORBIT after N certified collisions, then capped at CAP."""
+    for _ in range(n):
+        orbit.step()
+    if cap is not None:
+        orbit.cap(cap)
+    return orbit
+
+
+def closed(orbit):
+    orbit.close()
+    return orbit
+
+
+def exact_orbit():
+    return c.CertifiedOrbit.exact((1, 3), (2, 7), 1, (5, 11), (-3, 13))
+
+
+def capped_out(orbit):
+    """ORBIT capped at 64 bits, stepped until that fails (ECAP)."""
+    orbit.cap(64)
+    for _ in range(64):
+        orbit.step()
+
 # The hand-written functions' calls (results and failures).
 HAND = {
     'discrete.orbit': [
@@ -89,6 +114,29 @@ HAND = {
         lambda: c.eq('B.9', L0=1, Delta='1/3', V=1, Omega=0.5, n=3),
         lambda: c.eq('9.9'), lambda: c.eq('3.10', L0=1, Delta=-1, dir=1)],
     'equation.labels': [lambda: c.labels()],
+    'certified_orbit_new': [
+        lambda: c.certified_orbit_new(SYS, ST),
+        lambda: stepped(c.certified_orbit_new(SYS, ST, 'theta'), 3, 200),
+        lambda: closed(c.certified_orbit_new(SYS, ST)),
+        lambda: c.certified_orbit_new(SYS, BAD)],
+    'certified_orbit_new_exact': [
+        lambda: stepped(exact_orbit(), 2),
+        lambda: c.certified_orbit_new_exact(1, (-1, 1), 1, 1, 1)],
+    'certified_orbit_step': [
+        lambda: c.certified_orbit_step(exact_orbit()),
+        lambda: c.certified_orbit_step(exact_orbit(), return_ev=False),
+        lambda: capped_out(exact_orbit())],
+    'certified_orbit_cap': [
+        lambda: c.certified_orbit_cap(exact_orbit(), 100),
+        lambda: c.certified_orbit_cap(exact_orbit(), 63)],
+    'certified_orbit_collisions': [
+        lambda: c.certified_orbit_collisions(stepped(exact_orbit(), 2)),
+        lambda: c.certified_orbit_collisions(closed(exact_orbit()))],
+    'certified_orbit_free': [lambda: c.certified_orbit_free(exact_orbit())],
+    'method_available': [
+        lambda: c.method_available('certified'),
+        lambda: c.method_available([0, 3, 9], errors='return'),
+        lambda: c.method_available(9)],
     'error_class': [lambda: c.error_class(2)],
     'as_columns': [lambda: c.as_columns(d.orbit(SYS, ST, 2))],
 }
@@ -237,8 +285,10 @@ def test_kinds_covered():
             visit(outcome(call))
     for kind in ('Result', 'Struct', 'ndarray', 'MaskedArray', 'Equation',
                  'Label', 'DomainError', 'SceneError', 'EquationError',
-                 'StateError', 'float', 'int', 'str', 'type'):
+                 'StateError', 'float', 'int', 'str', 'type', 'NoneType'):
         assert kind in seen, kind
+    if c.method_available('certified'):     # a build with Arb
+        assert {'CertifiedOrbit', 'CertificationCapError'} <= seen
 
 
 def remote_calls():

@@ -20,6 +20,10 @@ ST = d.state_from_phase(SYS, [0, 1, 0, 0.5])
 FIG3 = d.init(-0.5, 1.0)
 MOTION = c.smooth.motion_init(1.0, [0, 1, 0, 0.5])
 MST = c.massless.state_from_phase(-0.4137, [0, 0.6, 0.3, 0.7])
+# a certified orbit where the build has the method (Arb); elsewhere a
+# stand-in: the type checks come before the C call either way
+ORBIT = c.CertifiedOrbit(SYS, ST) if c.method_available('certified') \
+    else object.__new__(c.CertifiedOrbit)
 
 
 def masked(v, shape=(2,)):
@@ -34,7 +38,8 @@ INT_BAD = [None, '3', b'3', object(), [None], 2.5]
 
 # Hand-written functions: {name: [(kind, call of the bad value)]}, kind
 # 'real', 'int', 'array4' (four numbers), 'reals' (an array of numbers),
-# 'pair' (two numbers, or None), 'state'.
+# 'pair' (two numbers, or None), 'state', 'enum' (an integer or a name:
+# no strings), 'orbit' (a CertifiedOrbit).
 HAND = {
     'discrete.orbit': [('int', lambda v: d.orbit(SYS, ST, v)),
                        ('state', lambda v: d.orbit(SYS, v, 2))],
@@ -76,6 +81,33 @@ HAND = {
         ('real', lambda v: c.sweep.grid_point(0, v, 3, 1)),
         ('int', lambda v: c.sweep.grid_point(0, 1, v, 1)),
         ('int', lambda v: c.sweep.grid_point(0, 1, 3, v))],
+    'certified_orbit_new': [
+        ('state', lambda v: c.certified_orbit_new(SYS, v)),
+        ('enum', lambda v: c.certified_orbit_new(SYS, ST, v))],
+    'certified_orbit_new_exact': [
+        ('real', lambda v: c.certified_orbit_new_exact(v, 1, 1, 1, 0.5)),
+        ('real', lambda v: c.certified_orbit_new_exact(1, v, 1, 1, 0.5)),
+        ('int', lambda v: c.certified_orbit_new_exact(1, 1, v, 1, 0.5)),
+        ('real', lambda v: c.certified_orbit_new_exact(1, 1, 1, v, 0.5)),
+        ('real', lambda v: c.certified_orbit_new_exact(1, 1, 1, 1, v)),
+        ('pair', lambda v: c.certified_orbit_new_exact(1, 1, 1, (1, 1), v)),
+        ('real', lambda v: c.certified_orbit_new_exact(1, 1, 1, 1, 0.5,
+                                                       theta=v)),
+        ('real', lambda v: c.certified_orbit_new_exact(1, 1, 1, 1, 0.5,
+                                                       tau=v)),
+        ('pair', lambda v: c.certified_orbit_new_exact(1, 1, 1, 1, 0.5,
+                                                       peg=v)),
+        ('enum', lambda v: c.certified_orbit_new_exact(1, 1, 1, 1, 0.5,
+                                                       request=v))],
+    'certified_orbit_cap': [('int', lambda v: c.certified_orbit_cap(ORBIT,
+                                                                    v)),
+                            ('orbit', lambda v: c.certified_orbit_cap(v,
+                                                                      100))],
+    'certified_orbit_step': [('orbit', lambda v: c.certified_orbit_step(v))],
+    'certified_orbit_collisions': [
+        ('orbit', lambda v: c.certified_orbit_collisions(v))],
+    'certified_orbit_free': [('orbit', lambda v: c.certified_orbit_free(v))],
+    'method_available': [('enum', lambda v: c.method_available(v))],
 }
 EXEMPT = {
     'scene.run_scene': 'scene values are text by design (the file\'s); '
@@ -104,6 +136,11 @@ def bad_values(kind):
     if kind == 'pair':          # None: the default
         return [[None, 1.0], ['1', '2'], masked([0.5, 1.0]),
                 (np.ma.masked, 1.0)]
+    if kind == 'enum':          # a name is taken: no strings
+        return [v for v in INT_BAD if not isinstance(v, str)] + \
+            [masked(3), [3, np.ma.masked]]
+    if kind == 'orbit':         # not None: free takes it (C's null)
+        return ['1', object(), ST, SYS, [ORBIT]]
     if kind == 'state':
         return [None, '1', object(), np.ma.masked_array(
             np.zeros(2, c.DiscreteState.dtype))]
