@@ -1282,9 +1282,13 @@ int chaplygin_discrete_segment_flow (const chaplygin_discrete *sys,
    between.  @xref{Certified method}, for what is proven and how.
  */
 
-/** The enclosures of a certified step's results: `[0]` the largest double
-   not above the exact value, `[1]` the smallest not below it (equal where the
-   value is a double; the result returned is one of the two).
+/** The enclosures of a certified step's results: `[0]` <= the exact value
+   <= `[1]`, each the result returned or its neighbour.  For $E$ and $H$ (and
+   the time of a straight motion at a rational speed), held exactly, they are
+   the two doubles either side of the exact value, equal where it is a double;
+   for the balls (heading, time, peg) they are the final ball's ends rounded
+   outwards, which may be one double wider where the exact value is a double
+   the ball cannot tell (a peg at exactly 1 after three slots of 1/3).
    @fields
    Members not requested are left as they were.
  */

@@ -68,9 +68,11 @@ _export(globals(), '')
 from . import discrete, smooth, massless, printed, sweep, scene, vectorised
 from . import certified
 from .certified import (CertifiedOrbit, certified_orbit_new,
-                        certified_orbit_new_exact, certified_orbit_cap,
-                        certified_orbit_step, certified_orbit_collisions,
-                        certified_orbit_free, method_available)
+                        certified_orbit_new_exact, certified_orbit_new_phase,
+                        certified_orbit_cap, certified_orbit_step,
+                        certified_orbit_state, certified_orbit_fate,
+                        certified_orbit_collisions, certified_orbit_free,
+                        method_available)
 from .scene import run_scene
 from .equation import eq, labels
 from .sweep import grid_point

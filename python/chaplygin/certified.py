@@ -10,9 +10,18 @@ model's exact value (chaplygin_certified_orbit_*, "Certified orbits" in
       from exact ratios of doubles (chaplygin_certified_orbit_new_exact):
       each of L0, Delta, E, H a number, a fractions.Fraction or a pair
       (numerator, denominator) of doubles, taken exactly;
+  CertifiedOrbit.phase(sys, qplus, tau=0.0, peg=(0.0, 0.0), request='all')
+      from a post-collision phase state [D+, V+, theta+, Omega+] of
+      doubles, E and H formed from it exactly
+      (chaplygin_certified_orbit_new_phase);
   orbit.step()      the next collision: Result(out, ev, bounds), a
                     DiscreteState, a DiscreteEvent and a CertifiedBounds
                     (chaplygin_certified_orbit_step);
+  orbit.state()     the current state, rounded: Result(out, bounds)
+                    (chaplygin_certified_orbit_state);
+  orbit.fate(max_collisions, reversal_cap=0)
+                    Section 3.1.3's fate decided on the exact orbit, which
+                    it advances (chaplygin_certified_orbit_fate);
   orbit.cap(max_bits), orbit.collisions(), orbit.close()
                     chaplygin_certified_orbit_cap, _collisions, _free.
 
@@ -33,7 +42,8 @@ same doubles from then on).  A status raises its exception: a step beyond
 the cap CertificationCapError (CHAPLYGIN_ECAP), the orbit unchanged.
 
 The module-level functions certified_orbit_new, certified_orbit_new_exact,
-certified_orbit_cap, certified_orbit_step, certified_orbit_collisions and
+certified_orbit_new_phase, certified_orbit_cap, certified_orbit_step,
+certified_orbit_state, certified_orbit_fate, certified_orbit_collisions and
 certified_orbit_free (chaplygin.certified_orbit_new, ...) are the C
 functions' names for the same calls.
 """
@@ -49,14 +59,17 @@ from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_float, _as_struct,
                     _enum_value, _REAL_TYPES)
 
 __all__ = ['CertifiedOrbit', 'certified_orbit_new',
-           'certified_orbit_new_exact', 'certified_orbit_cap',
-           'certified_orbit_step', 'certified_orbit_collisions',
-           'certified_orbit_free', 'method_available']
+           'certified_orbit_new_exact', 'certified_orbit_new_phase',
+           'certified_orbit_cap', 'certified_orbit_step',
+           'certified_orbit_state', 'certified_orbit_fate',
+           'certified_orbit_collisions', 'certified_orbit_free',
+           'method_available']
 
 Discrete = _struct_class('chaplygin_discrete')
 DiscreteState = _struct_class('chaplygin_discrete_state')
 DiscreteEvent = _struct_class('chaplygin_discrete_event')
 CertifiedBounds = _struct_class('chaplygin_certified_bounds')
+Fate = _struct_class('chaplygin_fate')
 
 _UINT = np.dtype(np.uintc)
 _INT = np.dtype(np.intc)
@@ -65,6 +78,7 @@ _ULONG = _core._scalar_dtype('unsigned long')
 # header: 64 <= max_bits <= 2^30): an unpickled orbit replays under it.
 _CAP_MAX = 2 ** 30
 _STEP_NAMES = ('out', 'ev', 'bounds')
+_STATE_NAMES = ('out', 'bounds')
 _CORBIT = 'chaplygin_certified_orbit *'
 
 
@@ -117,6 +131,19 @@ def _integer(name, x, dtype=_UINT):
         raise TypeError('%s: one integer expected, not an array of shape %s'
                         % (name, a.shape))
     return int(a)
+
+
+def _pair4(x):
+    """The four numbers of a phase state."""
+    try:
+        q = list(x)
+    except TypeError:
+        raise TypeError('qplus: four numbers [D+, V+, theta+, Omega+] '
+                        'expected, not %s' % type(x).__name__) from None
+    if len(q) != 4:
+        raise ValueError('qplus: four numbers [D+, V+, theta+, Omega+] '
+                         'expected, not %d' % len(q))
+    return q
 
 
 def _one_struct(name, cls, x):
@@ -205,6 +232,50 @@ class CertifiedOrbit:
         self._cap = None
         return self
 
+    @classmethod
+    def phase(cls, sys, qplus, tau=0.0, peg=(0.0, 0.0), request='all'):
+        """CertifiedOrbit.phase(sys, qplus, tau=0.0, peg=(0.0, 0.0),
+        request='all')
+
+        A certified orbit from the post-collision phase state qplus =
+        [D+, V+, theta+, Omega+] of the system SYS, taken exactly
+        (chaplygin_certified_orbit_new_phase): E = V^2/2 + (1 + l0^2)
+        Omega^2/2 and H = (1 + l0^2) Omega are formed exactly, where
+        discrete.state_from_phase rounds them.  D+ = 0 for V+ > 0, Delta
+        for V+ < 0.
+
+        C: int chaplygin_certified_orbit_new_phase(const chaplygin_discrete
+        *sys, const double qplus[4], double tau, const double peg[2],
+        unsigned request, chaplygin_certified_orbit **orbit)
+        """
+        if type(sys) is not Discrete:
+            raise TypeError('sys: a chaplygin.Discrete expected (made by '
+                            'chaplygin.discrete.init(L0, Delta)), not %s'
+                            % type(sys).__name__)
+        q = np.array([_real('qplus[%d]' % i, x)
+                      for i, x in enumerate(_pair4(qplus))], dtype=float)
+        args = (sys.copy(), q, _real('tau', tau), _pair('peg', peg),
+                _integer('request', _request(request)))
+        return cls._made_phase(args)
+
+    @classmethod
+    def _made_phase(cls, args):
+        self = object.__new__(cls)
+        self._p = _NULL
+        self._lock = threading.Lock()
+        sys, q, tau, peg, req = args
+        o = _ffi.new('chaplygin_certified_orbit **')
+        qc = _ffi.new('double[4]', [float(x) for x in q])
+        rc = _lib.chaplygin_certified_orbit_new_phase(sys._c, qc, tau, peg,
+                                                      req, o)
+        if rc:
+            _fail(rc, 'chaplygin_certified_orbit_new_phase')
+        self._p = o[0]
+        self._start = ('phase', sys, tuple(float(x) for x in q), tau,
+                       tuple(peg), req)
+        self._cap = None
+        return self
+
     # -- the C functions ---------------------------------------------------
 
     def step(self, *, return_ev=True, return_bounds=True):
@@ -240,6 +311,59 @@ class CertifiedOrbit:
                 CertifiedBounds._wrap(b) if return_bounds else None)
         return _core._pick(_STEP_NAMES, (True, return_ev, return_bounds),
                            vals)
+
+    def state(self, *, return_bounds=True):
+        """orbit.state(*, return_bounds=True)
+
+        The orbit's state after the collisions it has certified (the start
+        before the first), rounded as step() rounds it: Result(out, bounds)
+        (chaplygin_certified_orbit_state); V is V+ from the exact E and H.
+
+        C: int chaplygin_certified_orbit_state(const
+        chaplygin_certified_orbit *orbit, chaplygin_discrete_state *out,
+        chaplygin_certified_bounds *bounds)
+        """
+        out = _ffi.new('chaplygin_discrete_state *')
+        b = _ffi.new('chaplygin_certified_bounds *') if return_bounds \
+            else _NULL
+        with self._lock:
+            rc = _lib.chaplygin_certified_orbit_state(self._p, out, b)
+        if rc:
+            self._failed(rc, 'chaplygin_certified_orbit_state')
+        vals = (DiscreteState._wrap(out),
+                CertifiedBounds._wrap(b) if return_bounds else None)
+        return _core._pick(_STATE_NAMES, (True, return_bounds), vals)
+
+    def fate(self, max_collisions, *, reversal_cap=0):
+        """orbit.fate(max_collisions, *, reversal_cap=0)
+
+        Section 3.1.3 and (B.10), certified: the fate of the orbit from its
+        current state, every decision exact, E_final and V_final the
+        nearest doubles (chaplygin_certified_orbit_fate).  The orbit is
+        advanced to where the fate is certain (at most max_collisions
+        collisions).  Returns a Fate; with reversal_cap > 0, (fate,
+        reversal_at): the collisions (counted from the call) that end the
+        first reversal_cap reversing segments.
+
+        C: int chaplygin_certified_orbit_fate(chaplygin_certified_orbit
+        *orbit, unsigned long max_collisions, unsigned long *reversal_at,
+        size_t reversal_cap, chaplygin_fate *fate)
+        """
+        n = _integer('max_collisions', max_collisions, _ULONG)
+        cap = _integer('reversal_cap', reversal_cap,
+                       _core._scalar_dtype('size_t'))
+        at = _ffi.new('unsigned long[]', max(cap, 1))
+        f = _ffi.new('chaplygin_fate *')
+        with self._lock:
+            rc = _lib.chaplygin_certified_orbit_fate(self._p, n, at, cap, f)
+        if rc:
+            self._failed(rc, 'chaplygin_certified_orbit_fate')
+        fate = Fate._wrap(f)
+        if not cap:
+            return fate
+        k = min(cap, int(f.reversals))
+        return _core._nt(('fate', 'reversal_at'))(
+            fate, np.array(_ffi.unpack(at, k), dtype=_ULONG))
 
     def cap(self, max_bits):
         """orbit.cap(max_bits)
@@ -349,6 +473,9 @@ def _rebuild_orbit(cls, start, cap, closed, n):
     if start[0] == 'new':
         _, sys, st, req = start
         o = cls(sys, st, req)
+    elif start[0] == 'phase':
+        _, sys, q, tau, peg, req = start
+        o = cls._made_phase((sys, q, tau, peg, req))
     else:
         o = cls._made_exact(tuple(start[1:]))
     if closed:
@@ -405,6 +532,45 @@ def certified_orbit_new_exact(L0, Delta, dir, E, H, theta=0.0, tau=0.0,
     """
     return CertifiedOrbit.exact(L0, Delta, dir, E, H, theta, tau, peg,
                                 request)
+
+
+def certified_orbit_new_phase(sys, qplus, tau=0.0, peg=(0.0, 0.0),
+                              request='all'):
+    """certified_orbit_new_phase(sys, qplus, tau=0.0, peg=(0.0, 0.0),
+    request='all')
+
+    A CertifiedOrbit from a post-collision phase state taken exactly:
+    CertifiedOrbit.phase(...).
+
+    C: int chaplygin_certified_orbit_new_phase(const chaplygin_discrete
+    *sys, const double qplus[4], double tau, const double peg[2],
+    unsigned request, chaplygin_certified_orbit **orbit)
+    """
+    return CertifiedOrbit.phase(sys, qplus, tau, peg, request)
+
+
+def certified_orbit_state(orbit, *, return_bounds=True):
+    """certified_orbit_state(orbit, *, return_bounds=True)
+
+    orbit.state(...).
+
+    C: int chaplygin_certified_orbit_state(const chaplygin_certified_orbit
+    *orbit, chaplygin_discrete_state *out, chaplygin_certified_bounds
+    *bounds)
+    """
+    return _orbit(orbit).state(return_bounds=return_bounds)
+
+
+def certified_orbit_fate(orbit, max_collisions, *, reversal_cap=0):
+    """certified_orbit_fate(orbit, max_collisions, *, reversal_cap=0)
+
+    orbit.fate(...).
+
+    C: int chaplygin_certified_orbit_fate(chaplygin_certified_orbit *orbit,
+    unsigned long max_collisions, unsigned long *reversal_at,
+    size_t reversal_cap, chaplygin_fate *fate)
+    """
+    return _orbit(orbit).fate(max_collisions, reversal_cap=reversal_cap)
 
 
 def certified_orbit_cap(orbit, max_bits):

@@ -108,7 +108,7 @@ def check_rounded(x, exact, bounds, what, tight=True):
     as an exact rational: E, H, a straight motion's time): lo and hi are
     the doubles next to EXACT, equal where EXACT is a double.  (A ball's
     bounds are its ends rounded outwards: they may be one double wider,
-    see test_ball_bounds_at_a_double.)"""
+    as the header says: test_ball_bounds_at_a_double.)"""
     assert x == float(exact), '%s: %r, nearest %r' % (what, x, float(exact))
     lo, hi = bounds
     assert F(lo) <= exact <= F(hi), (what, bounds, exact)
@@ -271,21 +271,20 @@ def test_straight_motion_exact_time_and_peg():
 
 
 @need_arb
-@pytest.mark.xfail(strict=True, reason=
-                   'lib/certified.c: the bounds of a ball (heading, time '
-                   'not exact, peg) are its ends rounded outwards, wider '
-                   'than chaplygin_certified_bounds documents where the '
-                   'exact value is a double')
+@need_arb
 def test_ball_bounds_at_a_double():
-    """The header: bounds [0] the largest double not above the exact value,
-    [1] the smallest not below it, equal where the value is a double.  The
-    peg of the straight motion above after 3 collisions is at x = 1
-    exactly."""
+    """The header: a ball's bounds (heading, time, peg) are its ends rounded
+    outwards: they enclose the exact value, each the result or its
+    neighbour, and may be one double wider than the tightest pair where
+    the value is a double, as here: the peg of the straight motion above
+    after 3 collisions is at x = 3 (1/3) = 1 exactly, but Delta = 1/3 is
+    held as a ball, so the sum cannot know it."""
     o = c.CertifiedOrbit.exact(0.25, F(1, 3), 1, F(9, 50), 0)
     for _ in range(3):
         out, ev, b = o.step()
     assert out.peg[0] == 1.0
-    assert b.peg_x == (1.0, 1.0)
+    check_rounded(out.peg[0], F(1), b.peg_x, 'peg x', tight=False)
+    assert b.peg_x == (math.nextafter(1.0, 0.0), math.nextafter(1.0, 2.0))
 
 
 @need_arb
@@ -655,3 +654,52 @@ int chaplygin_thing_get (double x, chaplygin_thing *out);
         assert not gen.generic(by[name]) and not gen.looped(by[name])
     assert gen.generic(by['chaplygin_thing_get'])
     assert by['chaplygin_thing_get'].params[1].kind == 'out_struct'
+
+
+@need_arb
+def test_phase_start_state_and_fate():
+    """CertifiedOrbit.phase forms E and H from the phase doubles exactly
+    (its state() is their nearest doubles, computed here in fractions);
+    fate() decides Section 3.1.3's fate on the exact orbit: the kind,
+    collisions and reversals of discrete.fate_phase along Figure 3's line,
+    E_final the nearest double to (B.10) from the exact state after those
+    collisions (the exact map here), V_final its sign times the nearest
+    sqrt(2 E_final); the orbit is left where the fate is certain."""
+    L0, Delta = FIG3
+    sys_ = d.init(L0, Delta)
+    for V in (0.05, 0.11, 0.2, 0.31, 0.5):
+        q = [0.0, V, 0.0, 0.8]
+        o = c.CertifiedOrbit.phase(sys_, q, request=0)
+        n0 = 1 + F(L0) ** 2
+        E, H = F(V) ** 2 / 2 + n0 * F(0.8) ** 2 / 2, n0 * F(0.8)
+        st, b = o.state()
+        check_rounded(st.E, E, b.E, 'E0')
+        check_rounded(st.H, H, b.H, 'H0')
+        assert st.V == V
+        fate, at = o.fate(1000, reversal_cap=4)
+        ref = d.fate_phase(sys_, q, 1000)
+        assert (fate.kind, fate.collisions, fate.reversals) \
+            == (ref.kind, ref.collisions, ref.reversals), V
+        assert o.collisions() == fate.collisions
+        dir_ = 1
+        for k in range(fate.collisions):
+            rev, dir_, E, H, _, _ = ref_step(F(L0), F(Delta), dir_, E, H)
+        # (B.10) with the far end's coefficients: b = l1, b' = l0
+        l0, l1 = (F(L0), F(L0) + 1) if dir_ > 0 else (F(L0) + 1, F(L0))
+        C1 = -F(Delta) ** 2 / (2 * (1 + l1 * l1) ** 2 * (1 + l0 * l0))
+        C2 = (1 + l1 * l0) / (1 + l1 * l1)
+        Ef = E + C1 * H * H / (1 - C2 * C2)
+        assert fate.kind == dir_
+        assert fate.E_final == float(Ef), V
+        assert fate.V_final == dir_ * nearest_sqrt(2 * Ef), V
+        assert len(at) == min(4, fate.reversals)
+        o2 = pickle.loads(pickle.dumps(o))
+        assert o2.collisions() == o.collisions() and o2 == o
+        assert o2.state().out.E == o.state().out.E
+        o.close()
+    with pytest.raises(c.CertificationCapError):
+        o = c.CertifiedOrbit.phase(sys_, [0.0, 0.05, 0.0, 0.8], request=0)
+        o.cap(64)
+        o.fate(100)
+    with pytest.raises(c.StateError):
+        c.certified_orbit_new_phase(sys_, [1.0, 0.3, 0.0, 0.8])
