@@ -2,7 +2,8 @@
    an exact rational (GMP-style fmpq of FLINT) by exact comparisons with
    the midpoints of its neighbouring doubles, and a ball of Arb where both
    its ends round to the same double (rounding is monotone, so every point
-   between them does too). */
+   between them does too); a ball beyond the doubles told apart from one
+   that does not decide; the exact rational of a ratio of doubles. */
 #include <config.h>
 
 #include <float.h>
@@ -158,5 +159,43 @@ chp_cert_round_arb (const arb_t b, double *x)
   if (!(isfinite (dl) && dl == dh && signbit (dl) == signbit (dh)))
     return 0;
   *x = dl;
+  return 1;
+}
+
+int
+chp_cert_round_ball (const arb_t b, double *x)
+{
+  if (chp_cert_round_arb (b, x))
+    return CHP_CERT_ROUNDED;
+  if (!arb_is_finite (b))
+    return CHP_CERT_UNDECIDED;
+  /* |B| >= DBL_MAX + ulp(DBL_MAX)/2 = 2^1024 - 2^970 throughout */
+  arf_t lo, t;
+  arf_init (lo);
+  arf_init (t);
+  arb_get_abs_lbound_arf (lo, b, ARF_PREC_EXACT);
+  arf_set_d (t, DBL_MAX);
+  arf_t h;
+  arf_init (h);
+  arf_set_d (h, 0x1p970);
+  arf_add (t, t, h, ARF_PREC_EXACT, ARF_RND_DOWN);
+  const int over = arf_cmp (lo, t) >= 0;
+  arf_clear (lo);
+  arf_clear (t);
+  arf_clear (h);
+  return over ? CHP_CERT_BEYOND : CHP_CERT_UNDECIDED;
+}
+
+int
+chp_cert_q_of_ratio (fmpq_t q, const double r[2])
+{
+  if (!isfinite (r[0]) || !isfinite (r[1]) || r[1] == 0.0)
+    return 0;
+  fmpq_t d;
+  fmpq_init (d);
+  fmpq_set_double (q, r[0]);
+  fmpq_set_double (d, r[1]);
+  fmpq_div (q, q, d);
+  fmpq_clear (d);
   return 1;
 }

@@ -92,15 +92,7 @@ q_of_double (fmpq_t q, double x)
 static int
 q_of_ratio (fmpq_t q, const double r[2])
 {
-  if (!isfinite (r[0]) || !isfinite (r[1]) || r[1] == 0.0)
-    return 0;
-  fmpq_t d;
-  fmpq_init (d);
-  q_of_double (q, r[0]);
-  q_of_double (d, r[1]);
-  fmpq_div (q, q, d);
-  fmpq_clear (d);
-  return 1;
+  return chp_cert_q_of_ratio (q, r);
 }
 
 /* Nonzero, with *S = sqrt(Q) exactly, where Q >= 0 is the square of a
@@ -159,27 +151,15 @@ enum { ROUND_OK = 0, ROUND_UNDECIDED = 1, ROUND_RANGE = 2, ROUND_CAP = 3 };
 static int
 round_ball (const arb_t b, double *x)
 {
-  if (chp_cert_round_arb (b, x))
-    return ROUND_OK;
-  if (!arb_is_finite (b))
-    return ROUND_UNDECIDED;
-  /* |B| >= DBL_MAX + ulp(DBL_MAX)/2 = 2^1024 - 2^970 throughout */
-  arf_t lo, t;
-  arf_init (lo);
-  arf_init (t);
-  arb_get_abs_lbound_arf (lo, b, ARF_PREC_EXACT);
-  arf_one (t);
-  arf_mul_2exp_si (t, t, 1024);
-  arf_t u;
-  arf_init (u);
-  arf_one (u);
-  arf_mul_2exp_si (u, u, 970);
-  arf_sub (t, t, u, ARF_PREC_EXACT, ARF_RND_DOWN);
-  const int over = arf_cmp (lo, t) >= 0;
-  arf_clear (lo);
-  arf_clear (t);
-  arf_clear (u);
-  return over ? ROUND_RANGE : ROUND_UNDECIDED;
+  switch (chp_cert_round_ball (b, x))
+    {
+    case CHP_CERT_ROUNDED:
+      return ROUND_OK;
+    case CHP_CERT_BEYOND:
+      return ROUND_RANGE;
+    default:
+      return ROUND_UNDECIDED;
+    }
 }
 
 /* Enclosure doubles of the ball B: below and above every point. */
@@ -645,6 +625,66 @@ chaplygin_certified_orbit_new_exact (const double L0[2],
                          orbit);
   fmpq_clear (qL);
   fmpq_clear (qD);
+  fmpq_clear (qE);
+  fmpq_clear (qH);
+  return status;
+}
+
+int
+chaplygin_certified_orbit_new_phase_exact (const double L0[2],
+                                           const double Delta[2],
+                                           const double V[2],
+                                           const double Omega[2],
+                                           double theta, double tau,
+                                           const double peg[2],
+                                           unsigned request,
+                                           chaplygin_certified_orbit **orbit)
+{
+  if (orbit)
+    *orbit = NULL;
+  if (!L0 || !Delta || !V || !Omega || !peg || !orbit || !request_ok (request))
+    return CHAPLYGIN_EINVAL;
+  fmpq_t qL, qD, qV, qW, qE, qH;
+  fmpq_init (qL);
+  fmpq_init (qD);
+  fmpq_init (qV);
+  fmpq_init (qW);
+  fmpq_init (qE);
+  fmpq_init (qH);
+  int status = CHAPLYGIN_EDOM;
+  if (q_of_ratio (qL, L0) && q_of_ratio (qD, Delta) && q_of_ratio (qV, V)
+      && q_of_ratio (qW, Omega) && isfinite (theta) && isfinite (tau)
+      && isfinite (peg[0]) && isfinite (peg[1]))
+    {
+      /* the peg at the end V+ leaves: l = L0 (V > 0), L0 + Delta (V < 0);
+         H = (1 + l^2) Omega (3.4), E = [V^2 + (1 + l^2) Omega^2]/2 (3.3) */
+      const int dir = fmpq_sgn (qV);
+      if (dir == 0)
+        status = fmpq_sgn (qD) > 0 ? CHAPLYGIN_ESTATE : CHAPLYGIN_EDOM;
+      else
+        {
+          fmpq_t a;
+          fmpq_init (a);
+          if (dir > 0)
+            fmpq_set (a, qL);
+          else
+            fmpq_add (a, qL, qD);
+          fmpq_mul (a, a, a);
+          fmpq_add_ui (a, a, 1);
+          fmpq_mul (qH, a, qW);
+          fmpq_mul (qE, qH, qW);
+          fmpq_mul (a, qV, qV);
+          fmpq_add (qE, qE, a);
+          fmpq_div_2exp (qE, qE, 1);
+          fmpq_clear (a);
+          status = orbit_make (qL, qD, dir, qE, qH, theta, tau, peg, request,
+                               orbit);
+        }
+    }
+  fmpq_clear (qL);
+  fmpq_clear (qD);
+  fmpq_clear (qV);
+  fmpq_clear (qW);
   fmpq_clear (qE);
   fmpq_clear (qH);
   return status;

@@ -1371,6 +1371,33 @@ int chaplygin_certified_orbit_new_phase (const chaplygin_discrete *sys,
                                          unsigned request,
                                          chaplygin_certified_orbit **orbit);
 
+/** As chaplygin_certified_orbit_new_exact, from the phase state just after a
+   collision given as exact ratios (chaplygin_certified_orbit_new_phase takes
+   the doubles of a phase state): @V and @Omega (ratios as @L0 and @Delta), taken exactly, give
+   $dir = sgn(V)$, the peg at the end that $V$ leaves ($D = 0$ for $V > 0$,
+   $Delta$ for $V < 0$, $l$ = $L_0 + D$ there), and the exact
+     H = (1 + l^2) Omega   (3.4),   E = [V^2 + (1 + l^2) Omega^2]/2   (3.3),
+   @noindent
+   which chaplygin_discrete_energy and chaplygin_discrete_momentum would
+   round.
+
+   Domain: finite numerators, finite nonzero denominators; $Delta > 0$;
+   $V != 0$.
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer, unknown request bits, a build
+   without Arb), CHAPLYGIN_EDOM (non-finite, a zero denominator,
+   $Delta <= 0$), CHAPLYGIN_ESTATE ($V = 0$), CHAPLYGIN_ENOMEM.
+ */
+int chaplygin_certified_orbit_new_phase_exact (const double L0[2],
+                                               const double Delta[2],
+                                               const double V[2],
+                                               const double Omega[2],
+                                               double theta, double tau,
+                                               const double peg[2],
+                                               unsigned request,
+                                               chaplygin_certified_orbit
+                                               **orbit);
+
 /** Set the caps of @orbit: @max_bits bounds both the working precision of its
    balls and the size in bits of its exact energy and momentum (numerator
    plus denominator).  The default, 1048576 (@pxref{Certified method}),
@@ -1437,6 +1464,227 @@ int chaplygin_certified_orbit_collisions (const chaplygin_certified_orbit *orbit
    CHAPLYGIN_SUCCESS.
  */
 int chaplygin_certified_orbit_free (chaplygin_certified_orbit *orbit);
+
+/** @section Certified values
+   @brief The closed forms, correctly rounded from exact inputs.
+   @cindex certified values
+   @cindex exact rational inputs
+
+   The paper's closed-form quantities by the certified method: each input is
+   an exact rational given as the ratio `[0]/[1]` of two doubles (so
+   $Delta = 1/3$ is {1, 3}, and {0.1, 1} is the double nearest to 0.1, not one
+   tenth), and each double returned is the one nearest (ties to even) to the
+   exact value of the formula at those inputs; each integer returned is the
+   exact decision.  The rational values are formed exactly (FLINT's
+   rationals) and rounded once; the turning points of (B.5) and the exponent
+   of (4.1), which are irrational wherever they are not formed exactly, by
+   Ziv's strategy (Arb balls at 64 bits, then twice that, until the ball's
+   rounding is decided; CHAPLYGIN_ECAP past 65536 bits, never met).
+   @xref{Certified method}.  They exist only in a build with Arb
+   (chaplygin_method_available).  Each shares the domain of its
+   uncertified counterpart, decided exactly, with no range limit on the
+   inputs (a result beyond the doubles is CHAPLYGIN_ERANGE; one below them
+   rounds to a subnormal or zero).  Common errors: CHAPLYGIN_EINVAL (a null
+   pointer, or @var{dir} not $+1$ or $-1$), CHAPLYGIN_EDOM (a non-finite
+   numerator or denominator, a zero denominator, $Delta <= 0$).
+ */
+
+/** (3.3), certified: chaplygin_discrete_energy's
+     E = [V^2 + (1 + (L0 + D)^2) Omega^2]/2.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_energy (const double L0[2], const double D[2],
+                                const double V[2], const double Omega[2],
+                                double *E);
+
+/** (3.4), certified: chaplygin_discrete_momentum's
+     H_P = [1 + (L0 + D)^2] Omega.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_momentum (const double L0[2], const double D[2],
+                                  const double Omega[2], double *H);
+
+/** (3.6), certified: the collision rule in phase form for the velocity @V
+   and rate @Omega just before it, the peg leaving the end that $V$ points to
+   ($D^- = Delta$ for $V > 0$, 0 for $V < 0$):
+     D+ = Delta - D-,   V+ = V,   theta+ = theta,
+     Omega+ = [1 + L0 (L0 + Delta)]/[1 + (L0 + D+)^2] Omega,
+   @noindent
+   written to @qplus (indices CHAPLYGIN_D, CHAPLYGIN_V, CHAPLYGIN_THETA,
+   CHAPLYGIN_OMEGA).
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE ($V = 0$),
+   CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_collide (const double L0[2], const double Delta[2],
+                                 const double V[2], const double Omega[2],
+                                 const double theta[2], double qplus[4]);
+
+/** (3.7), certified, as chaplygin_discrete_collide_eh (@ref{Erratum E8}):
+   the peg leaves the end @Dminus ($b = L_0 + D^-$, $b' = L_0 + Delta - D^-$),
+     D+ = Delta - D-,   E+ = E - Delta^2 H^2/(2 (1 + b^2)^2 (1 + b'^2)),
+     theta+ = theta,    H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H,
+   @noindent
+   written to @pplus (indices CHAPLYGIN_D, CHAPLYGIN_E, CHAPLYGIN_THETA,
+   CHAPLYGIN_H).
+
+   Domain: @Dminus exactly 0 or @Delta; $E >= 0$ and
+   $(V^-)^2 = 2E - H^2/(1 + b^2) > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$), CHAPLYGIN_ESTATE
+   (@Dminus not an end, or $(V^-)^2 <= 0$), CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
+                                    const double Dminus[2], const double E[2],
+                                    const double theta[2], const double H[2],
+                                    double pplus[4]);
+
+/** (3.8), certified: the ratio $2E/H^2$.
+
+   Domain: $E >= 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE ($H = 0$, or the
+   ratio beyond the doubles).
+ */
+int chaplygin_certified_spin_ratio (const double E[2], const double H[2],
+                                    double *ratio);
+
+/** (3.8), certified: as chaplygin_discrete_spins, `*@spins` = 1 if
+   $2E = H^2$ and the path from the starting end reaches $l = 0$ ($L_0 < 0
+   <= L_0 + Delta$ for $dir = +1$, $L_0 <= 0 < L_0 + Delta$ for $dir = -1$),
+   else 0; exactly.
+
+   Domain: $E > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_spins (const double L0[2], const double Delta[2],
+                               int dir, const double E[2], const double H[2],
+                               int *spins);
+
+/** (3.10), certified: chaplygin_discrete_sigma4's
+     sigma4 = [1 + L0 (L0 + Delta)]/[1 + (L0 + Delta)^2]   (dir = +1),
+     sigma4 = [1 + L0 (L0 + Delta)]/[1 + L0^2]             (dir = -1).
+   @noindent
+   At $L_0 = 1$, $Delta = 1/3$, $dir = -1$ it is 7/6 exactly, whose nearest
+   double is 1.1666666666666667 (chaplygin_discrete_sigma4, from the double
+   nearest 1/3, gives 1.1666666666666665).
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_sigma4 (const double L0[2], const double Delta[2],
+                                int dir, double *sigma4);
+
+/** (3.11) for $dir = +1$ and (3.12) for $dir = -1$, certified: `*@stable` = 1
+   if $|sigma_4| < 1$ for the exact $sigma_4$ of (3.10), else 0; the same
+   criteria as chaplygin_discrete_stable (@ref{Erratum E12}), decided
+   exactly however close the point lies to the boundary.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_stable (const double L0[2], const double Delta[2],
+                                int dir, int *stable);
+
+/** (3.13), (3.14), certified: chaplygin_discrete_reversal_range's
+   $rlo = 1/(1 + l_s^2)$, $rhi = 1/(1 + m^2)$ ($m$ the least $|l|$ over the
+   path), and `*@nonempty` (the path moves towards $l = 0$), exactly; where
+   it does not, $rhi = rlo$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_reversal_range (const double L0[2],
+                                        const double Delta[2], int dir,
+                                        double *rlo, double *rhi,
+                                        int *nonempty);
+
+/** (3.15), certified: chaplygin_discrete_ratio_lower_bound's
+     rmin = 1/(1 + l_s^2),   l_s = L0 (dir = +1), L0 + Delta (dir = -1).
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_ratio_lower_bound (const double L0[2],
+                                           const double Delta[2], int dir,
+                                           double *rmin);
+
+/** (4.1), certified: chaplygin_discrete_xi4's
+     xi4 = (|V*|/Delta) log sigma4,
+   @noindent
+   $sigma_4$ of (3.10) for $dir = sgn(V^*)$.  0 where $sigma_4 = 1$
+   exactly; elsewhere transcendental, by Ziv's strategy on
+   $log1p(sigma_4 - 1)$ with $sigma_4 - 1$ exact.
+
+   Domain: $V^* != 0$; $sigma_4 > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $sigma_4 <= 0$),
+   CHAPLYGIN_ESTATE ($V^* = 0$), CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_xi4 (const double L0[2], const double Delta[2],
+                             const double Vstar[2], double *xi4);
+
+/** (4.1), the series in $Delta$, certified: the coefficients of
+   chaplygin_discrete_xi4_taylor (@ref{Erratum E13}), $a = 1 + L_0^2$,
+     dir = +1:  c0 = -L0/a,  c1 = (L0^2 - 2)/(2 a^2),  c2 = L0 (6 - L0^2)/(3 a^3);
+     dir = -1:  c0 = -L0/a,  c1 = L0^2/(2 a^2),        c2 = -L0^3/(3 a^3),
+   @noindent
+   written to `@c[0]`, `@c[1]`, `@c[2]`.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_xi4_taylor (const double L0[2], int dir,
+                                    double c[3]);
+
+/** (B.1), certified: chaplygin_discrete_flow's
+     V(D)^2 = V0^2 + (D - D0)(2 L0 + D + D0) a0 Omega0^2/a,
+     Omega(D) = Omega0 a0/a,   a0 = 1 + (L0 + D0)^2,   a = 1 + (L0 + D)^2.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE ($V(D)^2 < 0$:
+   @D beyond a turning point), CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_flow (const double L0[2], const double D0[2],
+                              const double V0[2], const double Omega0[2],
+                              const double D[2], double *V2, double *Omega);
+
+/** (B.3) for $reversal = 0$ and (B.4) for $reversal = 1$, certified:
+   chaplygin_discrete_coefficients' $C_1$ and $C_2$ for the peg at @Dplus.
+
+   Domain: @Dplus exactly 0 or @Delta; @reversal 0 or 1.
+
+   Errors: CHAPLYGIN_EINVAL (also @reversal), CHAPLYGIN_EDOM,
+   CHAPLYGIN_ESTATE (@Dplus not an end), CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_coefficients (const double L0[2],
+                                      const double Delta[2],
+                                      const double Dplus[2], int reversal,
+                                      double *C1, double *C2);
+
+/** (B.5), certified: chaplygin_discrete_turning_points'
+     D_c = -L0 -+ sqrt(H^2/(2E) - 1),
+   @noindent
+   `*@n_real` (2, 1 or 0 as the radicand is positive, zero or negative) and
+   `*@n_in_slot` (how many lie in $[0, Delta]$) exact; `@Dc[0] <= @Dc[1]`,
+   as far as they exist, exact where the radicand is the square of a
+   rational, else by Ziv's strategy.
+
+   Domain: $E > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$), CHAPLYGIN_ESTATE
+   ($E = 0$), CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+
+   @Dc: (count=n_real)
+ */
+int chaplygin_certified_turning_points (const double L0[2],
+                                        const double Delta[2],
+                                        const double E[2], const double H[2],
+                                        int *n_real, double Dc[2],
+                                        int *n_in_slot);
+
+/** (B.7), certified: chaplygin_discrete_c3's
+     C3 = dir Delta (2 L0 + Delta)/(1 + l_f^2),
+   @noindent
+   $l_f = L_0 + Delta$ ($dir = +1$), $L_0$ ($dir = -1$).
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_c3 (const double L0[2], const double Delta[2],
+                            int dir, double *C3);
 
 /** @section Stability
    @brief (3.9)--(3.12), (4.1), (B.14), Figure 2.

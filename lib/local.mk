@@ -48,7 +48,8 @@ lib_libchaplygin_core_la_SOURCES += \
 	lib/cert-round.c \
 	lib/cert-leg.h \
 	lib/cert-leg.c \
-	lib/certified.c
+	lib/certified.c \
+	lib/cert-algebraic.c
 else
 lib_libchaplygin_core_la_SOURCES += lib/certified-none.c
 endif

@@ -105,8 +105,10 @@ tests_test_carlson_arb_LDADD = $(TEST_LDADD) -lquadmath $(ARB_LIBS)
 # orbits against Arb's rigorous integration of the integrands and the
 # exact model
 if HAVE_ARB
-check_PROGRAMS += tests/test_cert_round tests/test_certified
-TESTS += tests/test_cert_round tests/test_certified
+check_PROGRAMS += tests/test_cert_round tests/test_certified \
+	tests/test_cert_algebraic
+TESTS += tests/test_cert_round tests/test_certified \
+	tests/test_cert_algebraic
 endif
 tests_test_cert_round_SOURCES = tests/test_cert_round.c
 tests_test_cert_round_CFLAGS = $(TEST_CFLAGS)
@@ -114,6 +116,10 @@ tests_test_cert_round_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 tests_test_certified_SOURCES = tests/test_certified.c
 tests_test_certified_CFLAGS = $(TEST_CFLAGS)
 tests_test_certified_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+# the certified closed forms against GMP's exact rationals and MPFR
+tests_test_cert_algebraic_SOURCES = tests/test_cert_algebraic.c
+tests_test_cert_algebraic_CFLAGS = $(TEST_CFLAGS)
+tests_test_cert_algebraic_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 tests_test_quad_SOURCES = tests/test_quad.c
 tests_test_quad_CFLAGS = $(TEST_CFLAGS)
 tests_test_quad_LDADD = $(TEST_LDADD)

@@ -1,0 +1,903 @@
+/* cert-algebraic.c -- the certified method (issue 28) for the paper's
+   closed-form quantities: (3.3), (3.4), (3.6)-(3.8), (3.10)-(3.15), (4.1),
+   (B.1), the coefficients of (B.3)/(B.4), (B.5), (B.7).  Every input is an
+   exact rational, the ratio of two doubles; every double returned is the
+   one nearest (ties to even) to the exact value of the formula, every
+   integer returned the exact decision.  Uses cert-round.h and the public
+   types; built only with Arb.
+
+   Method.
+   - Rational values (all but three: the turning points of (B.5) and the
+     exponent of (4.1)): the formula in exact rationals (FLINT's fmpq),
+     rounded once by chp_cert_round_fmpq, which decides ties exactly
+     (sigma4 = 7/6 at L0 = 1, Delta = 1/3, dir = -1 is not a tie, but
+     E = 1/2 + 2^-54 from V = 1, Omega = 2^-27 is one).
+   - Decisions (stable, spins, the reversal range's nonempty, the number
+     of turning points and how many lie in the slot): the signs of exact
+     rationals; a comparison with a square root, sqrt(R) against a
+     rational T, by the signs of T and of R - T^2.
+   - The turning points -L0 -+ sqrt(R), R = H^2/(2E) - 1: exact where R is
+     the square of a rational, else irrational, and rounded by Ziv's loop
+     (ziv_round: the ball at 64 bits, then twice that, until
+     chp_cert_round_arb decides; an irrational number is no double and no
+     midpoint of two, so the loop ends).
+   - xi4 = (|V*|/Delta) log(sigma4): 0 where sigma4 = 1 exactly; else
+     transcendental (Lindemann: the logarithm of a rational other than 1),
+     by Ziv's loop on log1p(sigma4 - 1) with sigma4 - 1 formed exactly
+     (no cancellation as Delta -> 0), or log(sigma4) where
+     |sigma4 - 1| >= 1/2.
+   - The loop stops at PREC_CAP bits with CHAPLYGIN_ECAP: a value that
+     close to a rounding boundary has not been met (nor can be, for the
+     values above, except through a cap too small for their size).  */
+#include <config.h>
+
+#include <math.h>
+
+#include <arb.h>
+#include <flint/fmpq.h>
+
+/* GCC 12 misreads FLINT's fmpq_t (a one-element array of a struct of two
+   fmpz) through inlined helpers as 8-byte regions (as certified.c). */
+#pragma GCC diagnostic ignored "-Wstringop-overread"
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
+
+#include "chaplygin.h"
+#include "cert-round.h"
+
+/* Ziv's loop: the first working precision and the cap (bits). */
+enum { PREC_START = 64, PREC_CAP = 1 << 16 };
+
+/* ---- exact numbers ---------------------------------------------------- */
+
+/* The exact rationals of one call, cleared together. */
+enum { NQ = 12 };
+typedef struct
+{
+  fmpq_t q[NQ];
+} qset;
+
+static void
+qset_init (qset *s)
+{
+  for (int i = 0; i < NQ; i++)
+    fmpq_init (s->q[i]);
+}
+
+static void
+qset_clear (qset *s)
+{
+  for (int i = 0; i < NQ; i++)
+    fmpq_clear (s->q[i]);
+}
+
+/* *Q = R[0]/R[1]: CHAPLYGIN_SUCCESS, or CHAPLYGIN_EDOM (not finite, or
+   R[1] = 0). */
+static int
+in (fmpq_t q, const double r[2])
+{
+  return chp_cert_q_of_ratio (q, r) ? CHAPLYGIN_SUCCESS : CHAPLYGIN_EDOM;
+}
+
+/* T = 1 + A^2. */
+static void
+one_plus_sq (fmpq_t t, const fmpq_t a)
+{
+  fmpq_mul (t, a, a);
+  fmpq_add_ui (t, t, 1);
+}
+
+/* *X = Q rounded (CHAPLYGIN_SUCCESS or CHAPLYGIN_ERANGE). */
+static int
+out (const fmpq_t q, double *x)
+{
+  return chp_cert_round_fmpq (q, x);
+}
+
+/* The checks of the slot parameters shared by most functions: L0, Delta
+   exact, Delta > 0. */
+static int
+slot_in (fmpq_t L0, fmpq_t Delta, const double L0r[2], const double Deltar[2])
+{
+  if (in (L0, L0r) || in (Delta, Deltar) || fmpq_sgn (Delta) <= 0)
+    return CHAPLYGIN_EDOM;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* l at the ends of the slot: L[0] = L0, L[1] = L0 + Delta. */
+static void
+ends (fmpq_t l0, fmpq_t l1, const fmpq_t L0, const fmpq_t Delta)
+{
+  fmpq_set (l0, L0);
+  fmpq_add (l1, L0, Delta);
+}
+
+/* ---- Ziv's loop ------------------------------------------------------- */
+
+/* A value as a ball at a working precision. */
+typedef void (*ball_fn) (arb_t r, const void *data, slong prec);
+
+/* *X = the double nearest to the value that F encloses, raising the
+   precision until its ball decides (CHAPLYGIN_SUCCESS), or CHAPLYGIN_ERANGE
+   (the ball lies beyond the rounding boundary of DBL_MAX), or
+   CHAPLYGIN_ECAP (not decided at PREC_CAP bits). */
+static int
+ziv_round (ball_fn f, const void *data, double *x)
+{
+  arb_t b;
+  arb_init (b);
+  int status = CHAPLYGIN_ECAP;
+  for (slong prec = PREC_START; prec <= PREC_CAP; prec *= 2)
+    {
+      f (b, data, prec);
+      const int r = chp_cert_round_ball (b, x);
+      if (r == CHP_CERT_ROUNDED)
+        status = CHAPLYGIN_SUCCESS;
+      else if (r == CHP_CERT_BEYOND)
+        status = CHAPLYGIN_ERANGE;
+      else
+        continue;
+      break;
+    }
+  arb_clear (b);
+  return status;
+}
+
+/* A + S sqrt(R) for rationals A, R >= 0 and S = +-1. */
+typedef struct
+{
+  const fmpq *a, *r;
+  int s;
+} sqrt_expr;
+
+static void
+sqrt_ball (arb_t b, const void *data, slong prec)
+{
+  const sqrt_expr *e = data;
+  arb_t t;
+  arb_init (t);
+  arb_set_fmpq (b, e->r, prec);
+  arb_sqrt (b, b, prec);
+  if (e->s < 0)
+    arb_neg (b, b);
+  arb_set_fmpq (t, e->a, prec);
+  arb_add (b, b, t, prec);
+  arb_clear (t);
+}
+
+/* *X = A + S sqrt(R) rounded: exactly where R is the square of a
+   rational, else by Ziv's loop. */
+static int
+round_sqrt_expr (const fmpq_t a, const fmpq_t r, int s, double *x)
+{
+  if (fmpz_is_square (fmpq_numref (r)) && fmpz_is_square (fmpq_denref (r)))
+    {
+      fmpq_t t;
+      fmpq_init (t);
+      fmpz_sqrt (fmpq_numref (t), fmpq_numref (r));
+      fmpz_sqrt (fmpq_denref (t), fmpq_denref (r));
+      if (s < 0)
+        fmpq_neg (t, t);
+      fmpq_add (t, t, a);
+      const int status = out (t, x);
+      fmpq_clear (t);
+      return status;
+    }
+  sqrt_expr e = { a, r, s };
+  return ziv_round (sqrt_ball, &e, x);
+}
+
+/* The sign of sqrt(R) - T (R >= 0), exactly. */
+static int
+cmp_sqrt (const fmpq_t r, const fmpq_t t)
+{
+  if (fmpq_sgn (t) < 0)
+    return 1;
+  fmpq_t t2;
+  fmpq_init (t2);
+  fmpq_mul (t2, t, t);
+  const int c = fmpq_cmp (r, t2);
+  fmpq_clear (t2);
+  return c;
+}
+
+/* ---- (3.3), (3.4) ----------------------------------------------------- */
+
+int
+chaplygin_certified_energy (const double L0[2], const double D[2],
+                            const double V[2], const double Omega[2],
+                            double *E)
+{
+  if (!L0 || !D || !V || !Omega || !E)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *l = s.q[0], *v = s.q[1], *w = s.q[2], *t = s.q[3];
+  int status = CHAPLYGIN_EDOM;
+  if (!in (l, L0) && !in (t, D) && !in (v, V) && !in (w, Omega))
+    {
+      /* E = [V^2 + (1 + l^2) Omega^2]/2 */
+      fmpq_add (l, l, t);
+      one_plus_sq (t, l);
+      fmpq_mul (w, w, w);
+      fmpq_mul (t, t, w);
+      fmpq_mul (v, v, v);
+      fmpq_add (t, t, v);
+      fmpq_div_2exp (t, t, 1);
+      status = out (t, E);
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_momentum (const double L0[2], const double D[2],
+                              const double Omega[2], double *H)
+{
+  if (!L0 || !D || !Omega || !H)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *l = s.q[0], *w = s.q[1], *t = s.q[2];
+  int status = CHAPLYGIN_EDOM;
+  if (!in (l, L0) && !in (t, D) && !in (w, Omega))
+    {
+      /* H = (1 + l^2) Omega */
+      fmpq_add (l, l, t);
+      one_plus_sq (t, l);
+      fmpq_mul (t, t, w);
+      status = out (t, H);
+    }
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (3.6), (3.7) ----------------------------------------------------- */
+
+/* C2 = [1 + L0 (L0 + Delta)]/(1 + B^2), B = L0 + D- at the end the peg
+   leaves, into C (T scratch). */
+static void
+momentum_ratio (fmpq_t c, const fmpq_t L0, const fmpq_t Delta,
+                const fmpq_t b, fmpq_t t)
+{
+  fmpq_add (c, L0, Delta);
+  fmpq_mul (c, c, L0);
+  fmpq_add_ui (c, c, 1);
+  one_plus_sq (t, b);
+  fmpq_div (c, c, t);
+}
+
+int
+chaplygin_certified_collide (const double L0[2], const double Delta[2],
+                             const double V[2], const double Omega[2],
+                             const double theta[2], double qplus[4])
+{
+  if (!L0 || !Delta || !V || !Omega || !theta || !qplus)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *v = s.q[2], *w = s.q[3], *th = s.q[4];
+  fmpq *Dp = s.q[5], *b = s.q[6], *c = s.q[7], *t = s.q[8];
+  double r[4];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && (in (v, V) || in (w, Omega) || in (th, theta)))
+    status = CHAPLYGIN_EDOM;
+  if (!status && fmpq_is_zero (v))
+    status = CHAPLYGIN_ESTATE;
+  if (!status)
+    {
+      /* the peg leaves the end V points to: D- = Delta for V > 0, 0 for
+         V < 0; D+ = Delta - D-; Omega+ = C2 (1 + b^2)/(1 + b'^2) Omega-
+         with b = L0 + D-, b' = L0 + D+: by (3.6), the ratio of
+         [1 + L0 (L0 + Delta)] to 1 + b'^2 */
+      if (fmpq_sgn (v) > 0)
+        fmpq_zero (Dp);
+      else
+        fmpq_set (Dp, qD);
+      fmpq_add (b, qL, Dp);     /* b' */
+      momentum_ratio (c, qL, qD, b, t);
+      fmpq_mul (c, c, w);
+      status = out (Dp, &r[CHAPLYGIN_D]);
+      if (!status)
+        status = out (v, &r[CHAPLYGIN_V]);
+      if (!status)
+        status = out (th, &r[CHAPLYGIN_THETA]);
+      if (!status)
+        status = out (c, &r[CHAPLYGIN_OMEGA]);
+    }
+  if (!status)
+    for (int i = 0; i < 4; i++)
+      qplus[i] = r[i];
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
+                                const double Dminus[2], const double E[2],
+                                const double theta[2], const double H[2],
+                                double pplus[4])
+{
+  if (!L0 || !Delta || !Dminus || !E || !theta || !H || !pplus)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *Dm = s.q[2], *e = s.q[3], *th = s.q[4];
+  fmpq *h = s.q[5], *b = s.q[6], *bp = s.q[7], *t = s.q[8], *u = s.q[9];
+  fmpq *Dp = s.q[10];
+  double r[4];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && (in (Dm, Dminus) || in (e, E) || in (th, theta)
+                  || in (h, H) || fmpq_sgn (e) < 0))
+    status = CHAPLYGIN_EDOM;
+  if (!status && !fmpq_is_zero (Dm) && !fmpq_equal (Dm, qD))
+    status = CHAPLYGIN_ESTATE;
+  if (!status)
+    {
+      fmpq_add (b, qL, Dm);              /* the end the peg leaves */
+      fmpq_sub (Dp, qD, Dm);
+      fmpq_add (bp, qL, Dp);             /* the end it arrives at */
+      /* (V-)^2 > 0: 2E (1 + b^2) - H^2 > 0 */
+      one_plus_sq (t, b);
+      fmpq_mul (t, t, e);
+      fmpq_mul_2exp (t, t, 1);
+      fmpq_mul (u, h, h);
+      if (fmpq_cmp (t, u) <= 0)
+        status = CHAPLYGIN_ESTATE;
+    }
+  if (!status)
+    {
+      /* E+ = E- - Delta^2 H^2/(2 (1 + b^2)^2 (1 + b'^2)) */
+      one_plus_sq (t, b);
+      fmpq_mul (t, t, t);
+      one_plus_sq (u, bp);
+      fmpq_mul (t, t, u);
+      fmpq_mul_2exp (t, t, 1);
+      fmpq_mul (u, qD, h);
+      fmpq_mul (u, u, u);
+      fmpq_div (u, u, t);
+      fmpq_sub (e, e, u);
+      /* H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H- */
+      momentum_ratio (u, qL, qD, b, t);
+      fmpq_mul (h, h, u);
+      status = out (Dp, &r[CHAPLYGIN_D]);
+      if (!status)
+        status = out (e, &r[CHAPLYGIN_E]);
+      if (!status)
+        status = out (th, &r[CHAPLYGIN_THETA]);
+      if (!status)
+        status = out (h, &r[CHAPLYGIN_H]);
+    }
+  if (!status)
+    for (int i = 0; i < 4; i++)
+      pplus[i] = r[i];
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (3.8) ------------------------------------------------------------ */
+
+int
+chaplygin_certified_spin_ratio (const double E[2], const double H[2],
+                                double *ratio)
+{
+  if (!E || !H || !ratio)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *e = s.q[0], *h = s.q[1];
+  int status = CHAPLYGIN_EDOM;
+  if (!in (e, E) && !in (h, H) && fmpq_sgn (e) >= 0)
+    {
+      if (fmpq_is_zero (h))
+        status = CHAPLYGIN_ERANGE;
+      else
+        {
+          fmpq_mul (h, h, h);
+          fmpq_div (e, e, h);
+          fmpq_mul_2exp (e, e, 1);
+          status = out (e, ratio);
+        }
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_spins (const double L0[2], const double Delta[2],
+                           int dir, const double E[2], const double H[2],
+                           int *spins)
+{
+  if (!L0 || !Delta || !E || !H || !spins || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *e = s.q[2], *h = s.q[3], *l1 = s.q[4];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && (in (e, E) || in (h, H) || fmpq_sgn (e) <= 0))
+    status = CHAPLYGIN_EDOM;
+  if (!status)
+    {
+      /* 2E = H^2, and the path from the start reaches l = 0: L0 < 0 <=
+         L0 + Delta (dir +1, from l = L0), L0 <= 0 < L0 + Delta (dir -1,
+         from l = L0 + Delta) */
+      fmpq_mul_2exp (e, e, 1);
+      fmpq_mul (h, h, h);
+      fmpq_add (l1, qL, qD);
+      const int reaches = dir > 0
+        ? fmpq_sgn (qL) < 0 && fmpq_sgn (l1) >= 0
+        : fmpq_sgn (qL) <= 0 && fmpq_sgn (l1) > 0;
+      *spins = fmpq_equal (e, h) && reaches;
+    }
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (3.10)-(3.12) ---------------------------------------------------- */
+
+/* sigma4 of (3.10) into S from exact L0, Delta (T scratch):
+   [1 + L0 (L0 + Delta)]/(1 + b^2), b = L0 + Delta (dir +1) or L0 (-1). */
+static void
+sigma4_q (fmpq_t sg, const fmpq_t L0, const fmpq_t Delta, int dir, fmpq_t t)
+{
+  fmpq_add (t, L0, Delta);
+  if (dir > 0)
+    momentum_ratio (sg, L0, Delta, t, t);
+  else
+    momentum_ratio (sg, L0, Delta, L0, t);
+}
+
+int
+chaplygin_certified_sigma4 (const double L0[2], const double Delta[2],
+                            int dir, double *sigma4)
+{
+  if (!L0 || !Delta || !sigma4 || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *sg = s.q[2], *t = s.q[3];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status)
+    {
+      sigma4_q (sg, qL, qD, dir, t);
+      status = out (sg, sigma4);
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_stable (const double L0[2], const double Delta[2],
+                            int dir, int *stable)
+{
+  if (!L0 || !Delta || !stable || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *sg = s.q[2], *t = s.q[3];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status)
+    {
+      /* |sigma4| < 1, exactly */
+      sigma4_q (sg, qL, qD, dir, t);
+      fmpq_abs (sg, sg);
+      fmpq_one (t);
+      *stable = fmpq_cmp (sg, t) < 0;
+    }
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (3.13)-(3.15), (B.7) --------------------------------------------- */
+
+/* The path of direction DIR: l at its start LS and far end LF. */
+static void
+path_ends (fmpq_t ls, fmpq_t lf, const fmpq_t L0, const fmpq_t Delta,
+           int dir)
+{
+  if (dir > 0)
+    ends (ls, lf, L0, Delta);
+  else
+    ends (lf, ls, L0, Delta);
+}
+
+int
+chaplygin_certified_ratio_lower_bound (const double L0[2],
+                                       const double Delta[2], int dir,
+                                       double *rmin)
+{
+  if (!L0 || !Delta || !rmin || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *ls = s.q[2], *lf = s.q[3], *t = s.q[4];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status)
+    {
+      /* 1/(1 + l_s^2) */
+      path_ends (ls, lf, qL, qD, dir);
+      one_plus_sq (t, ls);
+      fmpq_inv (t, t);
+      status = out (t, rmin);
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_reversal_range (const double L0[2],
+                                    const double Delta[2], int dir,
+                                    double *rlo, double *rhi, int *nonempty)
+{
+  if (!L0 || !Delta || !rlo || !rhi || !nonempty
+      || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *ls = s.q[2], *lf = s.q[3];
+  fmpq *lo = s.q[4], *hi = s.q[5];
+  int status = slot_in (qL, qD, L0, Delta);
+  double x, y;
+  if (!status)
+    {
+      /* rlo = 1/(1 + l_s^2); toward l = 0 (dir l_s < 0): rhi = 1/(1 + m^2),
+         m = 0 if the path reaches l = 0, else |l_f|; away: rhi = rlo */
+      path_ends (ls, lf, qL, qD, dir);
+      one_plus_sq (lo, ls);
+      fmpq_inv (lo, lo);
+      const int toward = dir * fmpq_sgn (ls) < 0;
+      const int crosses = fmpq_sgn (ls) * fmpq_sgn (lf) <= 0;
+      if (!toward)
+        fmpq_set (hi, lo);
+      else if (crosses)
+        fmpq_one (hi);
+      else
+        {
+          one_plus_sq (hi, lf);
+          fmpq_inv (hi, hi);
+        }
+      status = out (lo, &x);
+      if (!status)
+        status = out (hi, &y);
+      if (!status)
+        {
+          *rlo = x;
+          *rhi = y;
+          *nonempty = toward;
+        }
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_c3 (const double L0[2], const double Delta[2], int dir,
+                        double *C3)
+{
+  if (!L0 || !Delta || !C3 || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *ls = s.q[2], *lf = s.q[3];
+  fmpq *c = s.q[4], *t = s.q[5];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status)
+    {
+      /* dir Delta (2 L0 + Delta)/(1 + l_f^2) */
+      path_ends (ls, lf, qL, qD, dir);
+      fmpq_mul_2exp (c, qL, 1);
+      fmpq_add (c, c, qD);
+      fmpq_mul (c, c, qD);
+      if (dir < 0)
+        fmpq_neg (c, c);
+      one_plus_sq (t, lf);
+      fmpq_div (c, c, t);
+      status = out (c, C3);
+    }
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (4.1) ------------------------------------------------------------ */
+
+/* (|V*|/Delta) log(1 + U), U = sigma4 - 1 != 0 exact; log(1 + U) by
+   log1p where |U| < 1/2, by the logarithm of 1 + U otherwise. */
+typedef struct
+{
+  const fmpq *u, *k;            /* U, and |V*|/Delta */
+  int near1;
+} xi4_expr;
+
+static void
+xi4_ball (arb_t b, const void *data, slong prec)
+{
+  const xi4_expr *e = data;
+  arb_t t;
+  arb_init (t);
+  arb_set_fmpq (b, e->u, prec);
+  if (e->near1)
+    arb_log1p (b, b, prec);
+  else
+    {
+      arb_add_ui (b, b, 1, prec);
+      arb_log (b, b, prec);
+    }
+  arb_set_fmpq (t, e->k, prec);
+  arb_mul (b, b, t, prec);
+  arb_clear (t);
+}
+
+int
+chaplygin_certified_xi4 (const double L0[2], const double Delta[2],
+                         const double Vstar[2], double *xi4)
+{
+  if (!L0 || !Delta || !Vstar || !xi4)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *v = s.q[2], *sg = s.q[3], *t = s.q[4];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && in (v, Vstar))
+    status = CHAPLYGIN_EDOM;
+  if (!status && fmpq_is_zero (v))
+    status = CHAPLYGIN_ESTATE;
+  if (!status)
+    {
+      const int dir = fmpq_sgn (v);
+      sigma4_q (sg, qL, qD, dir, t);
+      if (fmpq_sgn (sg) <= 0)
+        status = CHAPLYGIN_EDOM;        /* the logarithm is not real */
+    }
+  if (!status)
+    {
+      fmpq_sub_ui (sg, sg, 1);          /* U = sigma4 - 1, exactly */
+      if (fmpq_is_zero (sg))
+        *xi4 = 0.0;
+      else
+        {
+          fmpq_abs (v, v);
+          fmpq_div (v, v, qD);
+          fmpq_abs (t, sg);
+          fmpq_mul_2exp (t, t, 1);      /* 2 |U| */
+          xi4_expr e = { sg, v, fmpq_cmp_ui (t, 1) < 0 };
+          status = ziv_round (xi4_ball, &e, xi4);
+        }
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_xi4_taylor (const double L0[2], int dir, double c[3])
+{
+  if (!L0 || !c || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *a = s.q[1], *l2 = s.q[2], *t = s.q[3];
+  fmpq *c0 = s.q[4], *c1 = s.q[5], *c2 = s.q[6];
+  int status = in (qL, L0);
+  double r[3];
+  if (!status)
+    {
+      /* a = 1 + L0^2;  c0 = -L0/a;
+         dir +1: c1 = (L0^2 - 2)/(2 a^2),  c2 = L0 (6 - L0^2)/(3 a^3);
+         dir -1: c1 = L0^2/(2 a^2),        c2 = -L0^3/(3 a^3) */
+      fmpq_mul (l2, qL, qL);
+      fmpq_add_ui (a, l2, 1);
+      fmpq_div (c0, qL, a);
+      fmpq_neg (c0, c0);
+      fmpq_mul (t, a, a);               /* a^2 */
+      if (dir > 0)
+        fmpq_sub_ui (c1, l2, 2);
+      else
+        fmpq_set (c1, l2);
+      fmpq_div (c1, c1, t);
+      fmpq_div_2exp (c1, c1, 1);
+      fmpq_mul (t, t, a);               /* a^3 */
+      if (dir > 0)
+        {
+          fmpq_set_si (c2, 6, 1);
+          fmpq_sub (c2, c2, l2);
+          fmpq_mul (c2, c2, qL);
+        }
+      else
+        {
+          fmpq_mul (c2, l2, qL);
+          fmpq_neg (c2, c2);
+        }
+      fmpq_mul_ui (t, t, 3);
+      fmpq_div (c2, c2, t);
+      status = out (c0, &r[0]);
+      if (!status)
+        status = out (c1, &r[1]);
+      if (!status)
+        status = out (c2, &r[2]);
+    }
+  if (!status)
+    for (int i = 0; i < 3; i++)
+      c[i] = r[i];
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (B.1), (B.3)/(B.4), (B.5) ---------------------------------------- */
+
+int
+chaplygin_certified_flow (const double L0[2], const double D0[2],
+                          const double V0[2], const double Omega0[2],
+                          const double D[2], double *V2, double *Omega)
+{
+  if (!L0 || !D0 || !V0 || !Omega0 || !D || !V2 || !Omega)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *d0 = s.q[1], *v0 = s.q[2], *w0 = s.q[3], *d = s.q[4];
+  fmpq *a0 = s.q[5], *a = s.q[6], *t = s.q[7], *v2 = s.q[8], *w = s.q[9];
+  int status = CHAPLYGIN_EDOM;
+  if (!in (qL, L0) && !in (d0, D0) && !in (v0, V0) && !in (w0, Omega0)
+      && !in (d, D))
+    {
+      /* a0 = 1 + (L0 + D0)^2, a = 1 + (L0 + D)^2;
+         V^2 = V0^2 + (D - D0)(2 L0 + D + D0) a0 Omega0^2/a,
+         Omega = Omega0 a0/a */
+      fmpq_add (t, qL, d0);
+      one_plus_sq (a0, t);
+      fmpq_add (t, qL, d);
+      one_plus_sq (a, t);
+      fmpq_mul (w, w0, a0);
+      fmpq_div (w, w, a);
+      fmpq_mul_2exp (v2, qL, 1);
+      fmpq_add (v2, v2, d);
+      fmpq_add (v2, v2, d0);
+      fmpq_sub (t, d, d0);
+      fmpq_mul (v2, v2, t);
+      fmpq_mul (v2, v2, w0);
+      fmpq_mul (v2, v2, w);
+      fmpq_mul (t, v0, v0);
+      fmpq_add (v2, v2, t);
+      if (fmpq_sgn (v2) < 0)
+        status = CHAPLYGIN_ESTATE;      /* beyond a turning point */
+      else
+        {
+          double x, y;
+          status = out (v2, &x);
+          if (!status)
+            status = out (w, &y);
+          if (!status)
+            {
+              *V2 = x;
+              *Omega = y;
+            }
+        }
+    }
+  qset_clear (&s);
+  return status;
+}
+
+int
+chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
+                                  const double Dplus[2], int reversal,
+                                  double *C1, double *C2)
+{
+  if (!L0 || !Delta || !Dplus || !C1 || !C2
+      || (reversal != 0 && reversal != 1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *Dp = s.q[2], *Dm = s.q[3], *b = s.q[4];
+  fmpq *bp = s.q[5], *c1 = s.q[6], *c2 = s.q[7], *t = s.q[8], *u = s.q[9];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && in (Dp, Dplus))
+    status = CHAPLYGIN_EDOM;
+  if (!status && !fmpq_is_zero (Dp) && !fmpq_equal (Dp, qD))
+    status = CHAPLYGIN_ESTATE;
+  if (!status)
+    {
+      /* (3.7) at the end the peg leaves, D- = Delta - D+ (B.3) or D+
+         (B.4): b = L0 + D-, b' = L0 + Delta - D-;
+         C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)), C2 of momentum_ratio */
+      if (reversal)
+        fmpq_set (Dm, Dp);
+      else
+        fmpq_sub (Dm, qD, Dp);
+      fmpq_add (b, qL, Dm);
+      fmpq_add (bp, qL, qD);
+      fmpq_sub (bp, bp, Dm);
+      momentum_ratio (c2, qL, qD, b, t);
+      one_plus_sq (t, b);
+      fmpq_mul (t, t, t);
+      one_plus_sq (u, bp);
+      fmpq_mul (t, t, u);
+      fmpq_mul_2exp (t, t, 1);
+      fmpq_mul (c1, qD, qD);
+      fmpq_div (c1, c1, t);
+      fmpq_neg (c1, c1);
+      double x, y;
+      status = out (c1, &x);
+      if (!status)
+        status = out (c2, &y);
+      if (!status)
+        {
+          *C1 = x;
+          *C2 = y;
+        }
+    }
+  qset_clear (&s);
+  return status;
+}
+
+/* Whether -L0 + S sqrt(R) lies in [0, Delta], exactly (S = +-1). */
+static int
+in_slot (const fmpq_t L0, const fmpq_t Delta, const fmpq_t r, int s)
+{
+  /* 0 <= -L0 + S sqrt(R) <= Delta:  S sqrt(R) >= L0 and
+     S sqrt(R) <= L0 + Delta */
+  fmpq_t t;
+  fmpq_init (t);
+  int lo, hi;
+  if (s > 0)
+    {
+      lo = cmp_sqrt (r, L0) >= 0;
+      fmpq_add (t, L0, Delta);
+      hi = cmp_sqrt (r, t) <= 0;
+    }
+  else
+    {
+      /* -sqrt(R) >= L0 iff sqrt(R) <= -L0; -sqrt(R) <= L0 + Delta iff
+         sqrt(R) >= -(L0 + Delta) */
+      fmpq_neg (t, L0);
+      lo = cmp_sqrt (r, t) <= 0;
+      fmpq_add (t, L0, Delta);
+      fmpq_neg (t, t);
+      hi = cmp_sqrt (r, t) >= 0;
+    }
+  fmpq_clear (t);
+  return lo && hi;
+}
+
+int
+chaplygin_certified_turning_points (const double L0[2],
+                                    const double Delta[2], const double E[2],
+                                    const double H[2], int *n_real,
+                                    double Dc[2], int *n_in_slot)
+{
+  if (!L0 || !Delta || !E || !H || !n_real || !Dc || !n_in_slot)
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *e = s.q[2], *h = s.q[3], *r = s.q[4];
+  fmpq *m = s.q[5];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && (in (e, E) || in (h, H) || fmpq_sgn (e) < 0))
+    status = CHAPLYGIN_EDOM;
+  if (!status && fmpq_is_zero (e))
+    status = CHAPLYGIN_ESTATE;
+  if (!status)
+    {
+      /* D_c = -L0 -+ sqrt(R), R = H^2/(2E) - 1 */
+      fmpq_mul (r, h, h);
+      fmpq_div (r, r, e);
+      fmpq_div_2exp (r, r, 1);
+      fmpq_sub_ui (r, r, 1);
+      fmpq_neg (m, qL);
+      const int sr = fmpq_sgn (r);
+      const int n = sr > 0 ? 2 : sr == 0 ? 1 : 0;
+      double d[2] = { 0.0, 0.0 };
+      int k = 0;
+      for (int i = 0; i < n && !status; i++)
+        {
+          const int sg = n == 1 ? 1 : i == 0 ? -1 : 1;
+          status = round_sqrt_expr (m, r, sg, &d[i]);
+          k += in_slot (qL, qD, r, sg);
+        }
+      if (!status)
+        {
+          *n_real = n;
+          for (int i = 0; i < n; i++)
+            Dc[i] = d[i];
+          *n_in_slot = k;
+        }
+    }
+  qset_clear (&s);
+  return status;
+}
