@@ -174,6 +174,9 @@ sub check_record {
   for (qw(title eq.inputs eq.outputs eq.paper eq.example)) {
     fail("$at: $_ is empty") if $f->{$_} eq '';
   }
+  fail("$at: eq.certified '$f->{'eq.certified'}' is not chaplygin_certified_* names separated by ', '")
+    if defined $f->{'eq.certified'}
+    && $f->{'eq.certified'} !~ /^chaplygin_certified_[a-z0-9_]+(?:, chaplygin_certified_[a-z0-9_]+)*\z/;
 }
 
 # ---- the other sources -----------------------------------------------------
@@ -357,8 +360,10 @@ sub macro {
 # The C string literal of TEXT.
 sub cstr { my $t = shift; $t =~ s/([\\"])/\\$1/g; return "\"$t\""; }
 
-# The C name of a label's evaluator: eq_3_10.
+# The C name of a label's evaluator: eq_3_10; of its certified one
+# (eq.certified, lib/scene/eq-certified.c): eq_cert_3_10.
 sub evaluator { my $l = shift; $l =~ tr/./_/; return "eq_$l"; }
+sub cert_evaluator { my $l = shift; $l =~ tr/./_/; return "eq_cert_$l"; }
 
 # The call of an eq.eval or eq.printed field VALUE of REC: (function,
 # [args]), each arg a hash {kind, name, default, lo, hi, literal}.  The
@@ -553,7 +558,9 @@ if ($mode eq 'list') {
   $text = "/* eq-table.c -- $gen: do not edit.\n"
     . "   The paper's labels as `chaplygin eq' and chaplygin.eq show them, each\n"
     . "   with its evaluator: generated here from its eq.eval (a label whose\n"
-    . "   inputs map to one call), else lib/scene/eq-eval.c's. */\n"
+    . "   inputs map to one call), else lib/scene/eq-eval.c's; and the\n"
+    . "   certified one of a label with eq.certified (lib/scene/eq-certified.c,\n"
+    . "   where the library has the certified method: HAVE_ARB). */\n"
     . "#include <config.h>\n\n#include <limits.h>\n#include <stddef.h>\n\n"
     . "#include \"chaplygin.h\"\n#include \"eq.h\"\n"
     . "#include \"eq-evaluators.h\"\n\n";
@@ -565,20 +572,32 @@ if ($mode eq 'list') {
     $text .= "  { { " . join(",\n      ", map { cstr($_) }
         $l, $f->{title}, $f->{'eq.inputs'}, $f->{'eq.outputs'},
         join(', ', names($f->{functions})), @e ? join(' ', @e) : '-',
-        $f->{'eq.paper'}, $f->{'eq.example'}) . " },\n    " . evaluator($l) . ",\n    "
-        . (defined $f->{'eq.degrees'} ? cstr($f->{'eq.degrees'}) : 'NULL') . " },\n";
+        $f->{'eq.paper'}, $f->{'eq.example'})
+        . ",\n      " . (defined $f->{'eq.certified'} ? cstr($f->{'eq.certified'}) : 'NULL')
+        . " },\n    " . evaluator($l) . ",\n    "
+        . (defined $f->{'eq.degrees'} ? cstr($f->{'eq.degrees'}) : 'NULL') . ",\n    "
+        . (defined $f->{'eq.certified'}
+           ? "\n#if HAVE_ARB\n    " . cert_evaluator($l) . "\n#else\n    NULL\n#endif\n"
+           : 'NULL') . " },\n";
   }
   $text .= "};\n\nconst size_t eq_n_labels = sizeof eq_labels / sizeof eq_labels[0];\n";
 } elsif ($mode eq 'h') {
   $text = "/* eq-evaluators.h -- $gen: do not edit.\n"
     . "   The evaluators of the labels without an eq.eval field, written by\n"
-    . "   hand in lib/scene/eq-eval.c. */\n"
+    . "   hand in lib/scene/eq-eval.c, and the certified evaluators of the\n"
+    . "   labels with an eq.certified field, lib/scene/eq-certified.c. */\n"
     . "#ifndef CHAPLYGIN_SCENE_EQ_EVALUATORS_H\n#define CHAPLYGIN_SCENE_EQ_EVALUATORS_H\n\n"
     . "#include \"eq.h\"\n\n";
   for (@recs) {
     $text .= "int " . evaluator($_->{label}) . " (eq_ctx *c);\n"
       unless defined $_->{fields}{'eq.eval'};
   }
+  $text .= "\n#if HAVE_ARB\n";
+  for (@recs) {
+    $text .= "int " . cert_evaluator($_->{label}) . " (eq_ctx *c);\n"
+      if defined $_->{fields}{'eq.certified'};
+  }
+  $text .= "#endif\n";
   $text .= "\n#endif\n";
 } elsif ($mode eq 'macros') {
   $text = $texi_head->('');

@@ -91,6 +91,7 @@ lib_libchaplygin_scene_core_la_SOURCES = \
 	lib/scene/eq.h \
 	lib/scene/eq.c \
 	lib/scene/eq-eval.c \
+	lib/scene/eq-certified.c \
 	lib/scene/eq-evaluators.h \
 	lib/scene/eq-table.c
 # The table of labels and the evaluators that map inputs to one call,

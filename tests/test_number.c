@@ -262,6 +262,65 @@ START_TEST (problems)
 }
 END_TEST
 
+/* TEXT must read as the ratio {P, Q} (same bits); or fail with STATUS,
+   the output untouched. */
+static void
+ratio_is (const char *text, double p, double q)
+{
+  double r[2] = { 7.0, 7.0 };
+  int s = chaplygin_number_ratio (text, r);
+  ck_assert_msg (s == CHAPLYGIN_NUMBER_OK, "'%s': status %d", text, s);
+  ck_assert_msg (memcmp (&r[0], &p, sizeof p) == 0
+                 && memcmp (&r[1], &q, sizeof q) == 0,
+                 "'%s' read as {%a, %a}, expected {%a, %a}", text, r[0],
+                 r[1], p, q);
+}
+
+static void
+ratio_fails (const char *text, int status)
+{
+  double r[2] = { 7.0, 7.0 };
+  int s = chaplygin_number_ratio (text, r);
+  ck_assert_msg (s == status, "'%s': status %d, expected %d", text, s,
+                 status);
+  ck_assert_msg (r[0] == 7.0 && r[1] == 7.0, "'%s': output written", text);
+}
+
+/* number_ratio: the exact inputs of the certified method.  p/q in lowest
+   terms (the reduced forms written by hand), each part a double; a
+   constant the double it denotes (the compiler's hex constants). */
+START_TEST (ratios)
+{
+  ratio_is ("1/3", 1.0, 3.0);
+  ratio_is ("2/6", 1.0, 3.0);
+  ratio_is ("-22/7", -22.0, 7.0);
+  ratio_is ("+4/2", 2.0, 1.0);
+  ratio_is ("-0/5", -0.0, 1.0);
+  ratio_is ("0/5", 0.0, 1.0);
+  ratio_is ("10000000000000000000000/30000000000000000000000", 1.0, 3.0);
+  ratio_is ("18014398509481984/3", 0x1p54, 3.0);       /* 2^54: a double */
+  ratio_is ("1/9007199254740992", 1.0, 0x1p53);
+  ratio_is ("9007199254740994/9007199254740992", 4503599627370497.0, 0x1p52);
+  ratio_fails ("9007199254740992/9007199254740993", CHAPLYGIN_NUMBER_NOT_RATIO);
+  ratio_is ("0.1", 0x1.999999999999ap-4, 1.0);
+  ratio_is ("0x1.8p-2", 0.375, 1.0);
+  ratio_is ("-2.5e-3", -0x1.47ae147ae147bp-9, 1.0);
+  ratio_is ("1e-320", 1e-320, 1.0);
+  ratio_fails ("1/9007199254740993", CHAPLYGIN_NUMBER_NOT_RATIO);
+  ratio_fails ("9007199254740993/2", CHAPLYGIN_NUMBER_NOT_RATIO);
+  ratio_fails ("1/0", CHAPLYGIN_NUMBER_ZERO_DIV);
+  ratio_fails ("1/3x", CHAPLYGIN_NUMBER_SYNTAX);
+  ratio_fails ("nan", CHAPLYGIN_NUMBER_SYNTAX);
+  ratio_fails ("1e400", CHAPLYGIN_NUMBER_RANGE);
+  ratio_fails ("", CHAPLYGIN_NUMBER_SYNTAX);
+  ck_assert_int_eq (chaplygin_number_ratio (NULL, (double[2]) { 0, 0 }),
+                    CHAPLYGIN_NUMBER_SYNTAX);
+  ck_assert_str_eq (chaplygin_number_problem (CHAPLYGIN_NUMBER_NOT_RATIO),
+                    "is not a ratio of two doubles (p and q in lowest terms "
+                    "must each be a double)");
+}
+END_TEST
+
 /* number_format: x 2^e as %.17g prints it, exactly, also beyond the
    doubles.  Route: the expected texts are Python's decimal module at 200
    digits (Decimal(x) * Decimal(2)**e formatted to 17 significant digits);
@@ -322,6 +381,7 @@ main (void)
   tcase_add_test (tc, integers);
   tcase_add_test (tc, problems);
   tcase_add_test (tc, formats);
+  tcase_add_test (tc, ratios);
   suite_add_tcase (s, tc);
   sr = srunner_create (s);
   srunner_run_all (sr, CK_NORMAL);

@@ -620,6 +620,51 @@ START_TEST (equations)
 END_TEST
 
 
+/* The certified evaluation (CHAPLYGIN_EQ_CERTIFIED): (3.10) at Delta = 1/3
+   exactly is 7/6's double, the library's chaplygin_certified_sigma4 of
+   {1, 3}; a label without a certified evaluator and an unknown flag are
+   refused; the entries name the certified functions.  (Where the library
+   has no certified method every certified call is refused.) */
+START_TEST (equations_certified)
+{
+  static chaplygin_eq_result r;
+  const char *names[] = { "L0", "Delta", "dir" };
+  const char *values[] = { "1", "1/3", "-1" };
+  int available = 0;
+  ck_assert_ok (chaplygin_method_available (CHAPLYGIN_CERTIFIED, &available));
+  const int st = chaplygin_eq_eval_with ("3.10", CHAPLYGIN_EQ_CERTIFIED, 3,
+                                         names, values, &r);
+  ck_assert_str_eq (chaplygin_eq_find ("3.10")->certified,
+                    "chaplygin_certified_sigma4");
+  ck_assert (chaplygin_eq_find ("2.1")->certified == NULL);
+  if (!available)
+    {
+      ck_assert_int_eq (st, CHAPLYGIN_SCENE_EINVAL);
+      return;
+    }
+  ck_assert_int_eq (st, 0);
+  ck_assert_int_eq (r.n_out, 1);
+  ck_assert (r.out[0].x == 7.0 / 6.0);
+  ck_assert_str_eq (r.out[0].function, "chaplygin_certified_sigma4");
+  ck_assert_str_eq (r.out[0].method, "certified");
+  ck_assert_str_eq (r.shown[1], "Delta = 1/3 (exact)");
+  /* without the flag: the double nearest 1/3, the closed form */
+  ck_assert_int_eq (chaplygin_eq_eval_with ("3.10", 0, 3, names, values, &r),
+                    0);
+  ck_assert (r.out[0].x == 1.1666666666666665);
+  const char *n21[] = { "L", "V", "Omega" };
+  const char *v21[] = { "1", "1", "0.5" };
+  ck_assert_int_eq (chaplygin_eq_eval_with ("2.1", CHAPLYGIN_EQ_CERTIFIED, 3,
+                                            n21, v21, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_int_eq (r.n_out, 0);
+  ck_assert (strstr (r.message, "no certified evaluator for label 2.1"));
+  ck_assert_int_eq (chaplygin_eq_eval_with ("3.10", 2, 3, names, values, &r),
+                    CHAPLYGIN_SCENE_EINVAL);
+  ck_assert_str_eq (r.message, "unknown flags 0x2");
+}
+END_TEST
+
 static int
 stop_at_begin (void *user, const chaplygin_scene_report *rep)
 {
@@ -976,6 +1021,7 @@ main (void)
   tu_add (s, "set_key", set_key);
   tu_add (s, "cells_beyond_doubles", cells_beyond_doubles);
   tu_add (s, "equations", equations);
+  tu_add (s, "equations_certified", equations_certified);
   tu_add (s, "interface_edges", interface_edges);
   tu_add (s, "text_rows", text_rows);
   tu_add (s, "integer_cells", integer_cells);

@@ -2,7 +2,7 @@
    (1999) evaluated at the user's inputs.
 
      chaplygin eq --list [--csv]
-     chaplygin eq LABEL NAME=VALUE ... [--csv]
+     chaplygin eq [--certified] LABEL NAME=VALUE ... [--csv]
 
    The labels, their inputs and outputs, and the evaluation are the scene
    engine's (chaplygin_eq_eval, from the registry of the paper's labels);
@@ -161,14 +161,19 @@ print_list (int csv, FILE *f)
           fputc ('\n', f);
         }
       else
-        fprintf (f, "(%s) %s\n    inputs:    %s\n    outputs:   %s\n"
-                 "    functions: %s\n    paper:     %s\n", e->label,
-                 e->title, e->inputs, e->outputs, e->functions, e->paper);
+        {
+          fprintf (f, "(%s) %s\n    inputs:    %s\n    outputs:   %s\n"
+                   "    functions: %s\n", e->label, e->title, e->inputs,
+                   e->outputs, e->functions);
+          if (e->certified)
+            fprintf (f, "    certified: %s\n", e->certified);
+          fprintf (f, "    paper:     %s\n", e->paper);
+        }
     }
 }
 
 static const char eq_usage[] =
-  "Usage: chaplygin eq LABEL NAME=VALUE ... [--csv]\n"
+  "Usage: chaplygin eq [--certified] LABEL NAME=VALUE ... [--csv]\n"
   "       chaplygin eq --list [--csv]\n"
   "Evaluate one numbered equation of the paper (a label such as 3.10, A.2,\n"
   "B.16) at the inputs given, through the library function(s) implementing\n"
@@ -176,12 +181,16 @@ static const char eq_usage[] =
   "value is shown too.  --list lists the labels with their inputs.\n"
   "VALUE: a number as 'man chaplygin' says under NUMBERS (1/3 is one);\n"
   "dir is +1 or -1.  [NAME=x] is optional with default x; (a | b) means\n"
-  "either set of inputs.\n";
+  "either set of inputs.\n"
+  "--certified: the inputs exact (p/q is that rational, a decimal the\n"
+  "double it denotes), every value the double nearest to the exact one,\n"
+  "by the library's certified functions (the labels --list shows with\n"
+  "'certified:').\n";
 
 /* Evaluate LABEL at the NAME=VALUE words WORDS[0..N-1] and print it.
    Returns the exit status. */
 static int
-evaluate (const char *label, int n, char **words, int csv)
+evaluate (const char *label, int n, char **words, int csv, unsigned flags)
 {
   static chaplygin_eq_result res;       /* large: keep it off the stack */
   const char *names[EQ_MAX_ARGS], *values[EQ_MAX_ARGS];
@@ -220,8 +229,9 @@ evaluate (const char *label, int n, char **words, int csv)
           values[k++] = eqs + 1;
         }
     }
-  if (rc == EQ_OK && chaplygin_eq_eval (label, (size_t) k, names, values,
-                                        &res) != CHAPLYGIN_SCENE_OK)
+  if (rc == EQ_OK && chaplygin_eq_eval_with (label, flags, (size_t) k, names,
+                                             values, &res)
+      != CHAPLYGIN_SCENE_OK)
     {
       fprintf (stderr, "chaplygin: eq %s: %s\n  inputs of (%s): %s\n",
                e->label, chaplygin_text_shown (shown, sizeof shown,
@@ -243,7 +253,7 @@ evaluate (const char *label, int n, char **words, int csv)
 int
 eq_main (int argc, char **argv)
 {
-  int csv = 0, list = 0, n = 0, i;
+  int csv = 0, list = 0, certified = 0, n = 0, i;
   const char *label = NULL;
   char *words[EQ_MAX_ARGS + 1];
 
@@ -253,6 +263,8 @@ eq_main (int argc, char **argv)
         csv = 1;
       else if (strcmp (argv[i], "--list") == 0)
         list = 1;
+      else if (strcmp (argv[i], "--certified") == 0)
+        certified = 1;
       else if (strcmp (argv[i], "--help") == 0 || strcmp (argv[i], "-h") == 0)
         {
           fputs (eq_usage, stdout);
@@ -274,9 +286,10 @@ eq_main (int argc, char **argv)
     }
   if (list)
     {
-      if (label || n)
+      if (label || n || certified)
         {
-          fputs ("chaplygin: eq: --list takes no label or inputs\n", stderr);
+          fputs ("chaplygin: eq: --list takes no label, inputs or "
+                 "--certified\n", stderr);
           return EQ_USAGE;
         }
       print_list (csv, stdout);
@@ -289,5 +302,5 @@ eq_main (int argc, char **argv)
       return EQ_USAGE;
     }
   return evaluate (label, n > EQ_MAX_ARGS + 1 ? EQ_MAX_ARGS + 1 : n, words,
-                   csv);
+                   csv, certified ? CHAPLYGIN_EQ_CERTIFIED : 0u);
 }

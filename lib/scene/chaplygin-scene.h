@@ -479,7 +479,11 @@ typedef struct
   const char *errata;           /** its errata, space-separated, or
                                     @samp{-}; */
   const char *paper;            /** what the audit of the paper found; */
-  const char *example;          /** an example call, NAME=VALUE ... */
+  const char *example;          /** an example call, NAME=VALUE ...; */
+  const char *certified;        /** the certified library functions of
+                                    its evaluation with
+                                    CHAPLYGIN_EQ_CERTIFIED, comma-separated,
+                                    or null: it has none. */
 } chaplygin_eq_entry;
 
 /** Return the number of labels. */
@@ -587,6 +591,36 @@ int chaplygin_eq_eval (const char *label, size_t n,
                        const char *const *names, const char *const *values,
                        chaplygin_eq_result *res);
 
+/** The flags of chaplygin_eq_eval_with.
+   @fields
+ */
+enum chaplygin_eq_flags
+{
+  CHAPLYGIN_EQ_CERTIFIED = 1    /** the certified method: every input an
+                                    exact rational (chaplygin_number_ratio:
+                                    @samp{1/3} is one third exactly, a
+                                    decimal the double it denotes), every
+                                    real output the double nearest to the
+                                    exact value (ties to even) and every
+                                    integer output the exact decision, by
+                                    the library's chaplygin_certified_*
+                                    functions that the label's `certified`
+                                    member names (method @samp{certified});
+                                    no printed forms, no velocity scaling.
+                                    A label without them, or a library built
+                                    without Arb, is refused (EINVAL, with a
+                                    message saying which). */
+};
+
+/** As chaplygin_eq_eval, with @flags, a combination of enum
+   chaplygin_eq_flags (0: chaplygin_eq_eval itself).  An unknown flag is
+   EINVAL.
+ */
+int chaplygin_eq_eval_with (const char *label, unsigned flags, size_t n,
+                            const char *const *names,
+                            const char *const *values,
+                            chaplygin_eq_result *res);
+
 /** @section Numbers
    @node Numbers read and written
    @brief The numbers a user writes.
@@ -610,13 +644,28 @@ typedef enum
   CHAPLYGIN_NUMBER_SYNTAX = 1,      /** not a number; */
   CHAPLYGIN_NUMBER_RANGE = 2,       /** beyond the doubles or the range; */
   CHAPLYGIN_NUMBER_ZERO_DIV = 3,    /** $P/0$; */
-  CHAPLYGIN_NUMBER_NOT_INTEGER = 4  /** not an integer. */
+  CHAPLYGIN_NUMBER_NOT_INTEGER = 4, /** not an integer; */
+  CHAPLYGIN_NUMBER_NOT_RATIO = 5    /** $P/Q$ whose numerator or
+                                        denominator in lowest terms is not a
+                                        double (chaplygin_number_ratio). */
 } chaplygin_number_status;
 
 /** @text as a real into `*`@x (written only on success); return a
    chaplygin_number_status.
  */
 int chaplygin_number_real (const char *text, double *x);
+
+/** @text as an exact rational, the ratio `@r[0]/@r[1]` of two doubles
+   (written only on success), as the certified functions of the library
+   take their inputs: a decimal or hexadecimal constant is the double it
+   denotes (rounded as chaplygin_number_real rounds it: @samp{0.1} is
+   0.1000000000000000055511151231257827..., {x, 1}); $P/Q$ is that rational
+   exactly, in lowest terms (@samp{2/6} is {1, 3}), and must have a
+   numerator and a denominator that are doubles
+   (CHAPLYGIN_NUMBER_NOT_RATIO otherwise: @samp{1/9007199254740993}).
+   Return a chaplygin_number_status.
+ */
+int chaplygin_number_ratio (const char *text, double r[2]);
 
 /** @text as an integer $lo <= x <= hi$ into `*`@x (written only on
    success); return a chaplygin_number_status.  Plain decimal digits

@@ -18,6 +18,7 @@
 #include "eq.h"
 
 const char EQ_FORMULA[] = "formula";
+const char EQ_CERTIFIED[] = "certified";
 
 /* ---------------------------------------------------------------- */
 /* The labels                                                        */
@@ -292,6 +293,79 @@ eq_real_opt (eq_ctx *c, const char *name, double deflt, double *x)
     return eq_real_in (c, name, x);
   *x = deflt;
   eq_show (c, "%s = %.17g (default)", name, deflt);
+  return 0;
+}
+
+/* The input NAME as read: "1/3" as 1/3, a double as %.17g. */
+static void
+show_ratio (eq_ctx *c, const char *name, const double r[2], const char *how)
+{
+  if (r[1] == 1.0)
+    eq_show (c, "%s = %.17g%s", name, r[0], how);
+  else
+    eq_show (c, "%s = %.17g/%.17g (exact)%s", name, r[0], r[1], how);
+}
+
+int
+eq_ratio_in (eq_ctx *c, const char *name, double r[2])
+{
+  eq_arg *a = find_arg (c, name);
+  int s;
+
+  if (c->failed)
+    return -1;
+  if (!a)
+    return eq_fail_usage (c, "missing input %s", name);
+  a->used = 1;
+  s = chaplygin_number_ratio (a->text, r);
+  if (s != CHAPLYGIN_NUMBER_OK)
+    return eq_fail_usage (c, "%s = '%s' %s", name, a->text,
+                          chaplygin_number_problem (s));
+  show_ratio (c, name, r, "");
+  return 0;
+}
+
+int
+eq_ratio_opt (eq_ctx *c, const char *name, double deflt, double r[2])
+{
+  if (c->failed)
+    return -1;
+  if (eq_given (c, name))
+    return eq_ratio_in (c, name, r);
+  r[0] = deflt;
+  r[1] = 1.0;
+  show_ratio (c, name, r, " (default)");
+  return 0;
+}
+
+int
+eq_exact_opt (eq_ctx *c, const char *name, double deflt, double *x)
+{
+  double r[2];
+  if (c->failed)
+    return -1;
+  if (!eq_given (c, name))
+    {
+      *x = deflt;
+      eq_show (c, "%s = %.17g (default)", name, deflt);
+      return 0;
+    }
+  if (eq_ratio_in (c, name, r))
+    return -1;
+  if (r[1] == 1.0)
+    {
+      *x = r[0];
+      return 0;
+    }
+  /* R[0]/R[1] is a double iff the division is exact: its remainder,
+     formed exactly by fma, is 0 (where the quotient is normal) */
+  const double q = r[0] / r[1];
+  if (!isfinite (q) || fma (q, r[1], -r[0]) != 0.0
+      || (q != 0.0 && fabs (q) < 0x1p-1022))
+    return eq_fail_usage (c, "%s = %.17g/%.17g is not a double: the "
+                          "certified method takes %s as the double it is",
+                          name, r[0], r[1], name);
+  *x = q;
   return 0;
 }
 
@@ -616,6 +690,31 @@ int
 chaplygin_eq_eval (const char *label, size_t n, const char *const *names,
                    const char *const *values, chaplygin_eq_result *res)
 {
+  return chaplygin_eq_eval_with (label, 0, n, names, values, res);
+}
+
+/* The certified evaluation of LAB: refused where there is none, or where
+   the library has no certified method. */
+static int
+certified_eval (eq_ctx *c, const eq_label *lab)
+{
+  int available = 0;
+  if (chaplygin_method_available (CHAPLYGIN_CERTIFIED, &available)
+      != CHAPLYGIN_SUCCESS || !available)
+    return eq_fail_usage (c, "this build of the library has no certified "
+                          "method (it was configured without Arb)");
+  if (!lab->info.certified || !lab->certified)
+    return eq_fail_usage (c, "no certified evaluator for label %s "
+                          "(chaplygin eq --list names the labels that have "
+                          "one)", lab->info.label);
+  return lab->certified (c);
+}
+
+int
+chaplygin_eq_eval_with (const char *label, unsigned flags, size_t n,
+                        const char *const *names, const char *const *values,
+                        chaplygin_eq_result *res)
+{
   static eq_ctx zero_ctx;
   eq_ctx c = zero_ctx;
   c_locale l;
@@ -635,7 +734,17 @@ chaplygin_eq_eval (const char *label, size_t n, const char *const *names,
       return res->status;
     }
   res->entry = &lab->info;
-  c.degrees = lab->degrees;
+  if (flags & ~(unsigned) CHAPLYGIN_EQ_CERTIFIED)
+    {
+      res->status = CHAPLYGIN_SCENE_EINVAL;
+      snprintf (res->message, sizeof res->message, "unknown flags %#x",
+                flags);
+      return res->status;
+    }
+  c.certified = (flags & CHAPLYGIN_EQ_CERTIFIED) != 0;
+  /* certified: exact inputs, no velocity scaling (an output beyond the
+     doubles is ERANGE) */
+  c.degrees = c.certified ? NULL : lab->degrees;
   if (c_locale_enter (&l) != 0)
     {
       res->status = CHAPLYGIN_SCENE_ENOMEM;
@@ -643,7 +752,12 @@ chaplygin_eq_eval (const char *label, size_t n, const char *const *names,
       return res->status;
     }
   if (collect (&c, lab, n, names, values) == 0)
-    lab->eval (&c);
+    {
+      if (c.certified)
+        certified_eval (&c, lab);
+      else
+        lab->eval (&c);
+    }
   check_used (&c);
   c_locale_leave (&l);
   res->note = c.note;

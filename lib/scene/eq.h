@@ -37,6 +37,8 @@ typedef struct eq_ctx
   int m;                        /* the velocity scaling of this evaluation
                                    (0: none): a quantity of degree d is
                                    computed as x 2^(d m) */
+  int certified;                /* CHAPLYGIN_EQ_CERTIFIED: the label's
+                                   certified evaluator, exact inputs */
 } eq_ctx;
 
 /* A label: what the user sees, and its evaluator. */
@@ -49,6 +51,8 @@ typedef struct
                                    velocity (chaplygin_scale_kind), or
                                    NULL where the label is not evaluated
                                    in scaled units */
+  int (*certified) (eq_ctx *);  /* its certified evaluator
+                                   (eq-certified.c), or NULL */
 } eq_label;
 
 /* The table (eq-table.c, generated from lib/labels.txt), in the paper's
@@ -77,6 +81,15 @@ int eq_dir_opt (eq_ctx *c, const char *name, int deflt, int *dir);
    which must then agree with it. */
 int eq_dir_from (eq_ctx *c, const char *dir_name, double V,
                  const char *V_name, int *dir);
+/* Exact inputs (the certified evaluators): the input NAME as the ratio
+   R[0]/R[1] of two doubles (chaplygin_number_ratio: p/q exactly, a
+   decimal the double it denotes), required or DEFLT where it is not
+   given; and as a double that must be its exact value (for the inputs
+   the library takes as doubles, such as a heading). */
+int eq_ratio_in (eq_ctx *c, const char *name, double r[2]);
+int eq_ratio_opt (eq_ctx *c, const char *name, double deflt, double r[2]);
+int eq_exact_opt (eq_ctx *c, const char *name, double deflt, double *x);
+
 /* The method options method, tol, prec (all optional) into c->opt and
    c->method. */
 int eq_method_in (eq_ctx *c);
@@ -103,6 +116,7 @@ int eq_degree (const eq_ctx *c, const char *name, int *d);
 /* Outputs: a value of the library's FUNCTION (METHOD: how it computed
    it), and the printed form's value of output NAME. */
 extern const char EQ_FORMULA[];
+extern const char EQ_CERTIFIED[];
 void eq_put_real (eq_ctx *c, const char *name, double x,
                   const char *function, const char *method);
 void eq_put_int (eq_ctx *c, const char *name, long n, const char *function,

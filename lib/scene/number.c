@@ -72,22 +72,19 @@ read_constant (const char *text, double *x, int *exact)
   return CHAPLYGIN_NUMBER_OK;
 }
 
-/* P/Q rounded to the nearest double; P is TEXT up to SLASH; *EXACT (may
-   be NULL): whether the double is P/Q exactly. */
+/* P/Q (P is TEXT up to SLASH) exactly into R, canonical; *NEGATIVE set
+   for a '-' sign (R is then negative, or zero: -0/5). */
 static int
-read_rational (const char *text, const char *slash, double *x, int *exact)
+parse_rational (const char *text, const char *slash, mpq_t r, int *negative)
 {
   const char *p = text, *q = slash + 1;
   size_t np = (size_t) (slash - text);
-  int negative = 0, status = CHAPLYGIN_NUMBER_OK, inexact;
   char *num;
-  mpq_t r;
-  mpfr_t f;
-  mpfr_exp_t emin, emax;
 
+  *negative = 0;
   if (np > 0 && (*p == '+' || *p == '-'))
     {
-      negative = *p == '-';
+      *negative = *p == '-';
       p++;
       np--;
     }
@@ -101,15 +98,33 @@ read_rational (const char *text, const char *slash, double *x, int *exact)
     return CHAPLYGIN_NUMBER_RANGE;
   memcpy (num, p, np);
   num[np] = '\0';
-  mpq_init (r);
   /* Both strings are nonempty runs of decimal digits: they cannot fail. */
   mpz_set_str (mpq_numref (r), num, 10);
   mpz_set_str (mpq_denref (r), q, 10);
   free (num);
   mpq_canonicalize (r);
-  if (negative)
+  if (*negative)
     mpq_neg (r, r);
+  return CHAPLYGIN_NUMBER_OK;
+}
 
+/* P/Q rounded to the nearest double; P is TEXT up to SLASH; *EXACT (may
+   be NULL): whether the double is P/Q exactly. */
+static int
+read_rational (const char *text, const char *slash, double *x, int *exact)
+{
+  int negative, status, inexact;
+  mpq_t r;
+  mpfr_t f;
+  mpfr_exp_t emin, emax;
+
+  mpq_init (r);
+  status = parse_rational (text, slash, r, &negative);
+  if (status != CHAPLYGIN_NUMBER_OK)
+    {
+      mpq_clear (r);
+      return status;
+    }
   emin = mpfr_get_emin ();
   emax = mpfr_get_emax ();
   mpfr_set_emin (-1073);
@@ -134,6 +149,44 @@ read_rational (const char *text, const char *slash, double *x, int *exact)
   return status;
 }
 
+/* Z as a double into *X where it is one exactly: 1, else 0. */
+static int
+z_double (const mpz_t z, double *x)
+{
+  mpfr_t f;
+  mpfr_init2 (f, 53);
+  const int inexact = mpfr_set_z (f, z, MPFR_RNDN);
+  const double d = mpfr_get_d (f, MPFR_RNDN);
+  mpfr_clear (f);
+  if (inexact != 0 || !isfinite (d))
+    return 0;
+  *x = d;
+  return 1;
+}
+
+/* P/Q as the ratio R of two doubles (lowest terms). */
+static int
+read_ratio (const char *text, const char *slash, double r[2])
+{
+  int negative;
+  double p, q;
+  mpq_t t;
+  mpq_init (t);
+  int status = parse_rational (text, slash, t, &negative);
+  if (status == CHAPLYGIN_NUMBER_OK)
+    {
+      if (z_double (mpq_numref (t), &p) && z_double (mpq_denref (t), &q))
+        {
+          r[0] = negative && p == 0.0 ? -0.0 : p;
+          r[1] = q;
+        }
+      else
+        status = CHAPLYGIN_NUMBER_NOT_RATIO;
+    }
+  mpq_clear (t);
+  return status;
+}
+
 /* TEXT as a real into *X; *EXACT (may be NULL) whether *X is its exact
    value. */
 static int
@@ -142,6 +195,34 @@ read_real (const char *text, double *x, int *exact)
   const char *slash = strchr (text, '/');
   return slash ? read_rational (text, slash, x, exact)
     : read_constant (text, x, exact);
+}
+
+int
+chaplygin_number_ratio (const char *text, double r[2])
+{
+  c_locale l;
+  double x = 0.0, q[2] = { 0.0, 1.0 };
+  if (!text || !r)
+    return CHAPLYGIN_NUMBER_SYNTAX;
+  if (c_locale_enter (&l) != 0)
+    return CHAPLYGIN_NUMBER_RANGE;
+  const char *slash = strchr (text, '/');
+  int status;
+  if (slash)
+    status = read_ratio (text, slash, q);
+  else
+    {
+      status = read_constant (text, &x, NULL);
+      q[0] = x;
+      q[1] = 1.0;
+    }
+  c_locale_leave (&l);
+  if (status == CHAPLYGIN_NUMBER_OK)
+    {
+      r[0] = q[0];
+      r[1] = q[1];
+    }
+  return status;
 }
 
 int
@@ -221,6 +302,9 @@ chaplygin_number_problem (int status)
       return "divides by zero";
     case CHAPLYGIN_NUMBER_NOT_INTEGER:
       return "is not an integer";
+    case CHAPLYGIN_NUMBER_NOT_RATIO:
+      return "is not a ratio of two doubles (p and q in lowest terms must "
+        "each be a double)";
     default:
       return "is not a number";
     }

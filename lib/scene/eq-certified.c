@@ -1,0 +1,423 @@
+/* eq-certified.c -- the certified evaluators of the paper's equations
+   (chaplygin_eq_eval_with, CHAPLYGIN_EQ_CERTIFIED; `chaplygin eq
+   --certified'), one per label whose registry record has an eq.certified
+   field (the table eq-table.c names each).  Each reads its inputs exactly
+   (eq_ratio_in: p/q is that rational, a decimal the double it denotes),
+   calls the library's certified functions, and records each output with
+   the function that computed it: every real the double nearest to the
+   exact value, every integer the exact decision.  Every number is a
+   library function's.
+
+   Derived inputs: the certified functions take a state's E and H as
+   exact inputs; E and H made from V and Omega by (3.3), (3.4) are not
+   ratios of two doubles in general, so only the return map's labels,
+   whose orbit takes V and Omega exactly
+   (chaplygin_certified_orbit_new_phase_exact), accept V, Omega here; the
+   others ask for E and H.  Method options (method, tol, prec) do not
+   apply.  A library built without Arb has no certified functions: this
+   file is then empty, and the table names no certified evaluator. */
+#include <config.h>
+
+#include <stdio.h>
+#include <string.h>
+
+#include "chaplygin.h"
+#include "eq.h"
+#include "eq-evaluators.h"
+
+#if HAVE_ARB
+
+/* ---------------------------------------------------------------- */
+/* Inputs                                                            */
+/* ---------------------------------------------------------------- */
+
+/* The slot: L0, Delta. */
+static int
+slot_in (eq_ctx *c, double L0[2], double Delta[2])
+{
+  return eq_ratio_in (c, "L0", L0) || eq_ratio_in (c, "Delta", Delta);
+}
+
+/* E and H of a state, given as such: V and Omega are refused with a
+   message saying why (LABEL's). */
+static int
+eh_in (eq_ctx *c, const char *label, double E[2], double H[2])
+{
+  if (eq_given (c, "V") || eq_given (c, "Omega"))
+    return eq_fail_usage (c, "with --certified, (%s) takes E and H: those "
+                          "(3.3) and (3.4) make of V and Omega are not "
+                          "ratios of two doubles in general", label);
+  return eq_ratio_in (c, "E", E) || eq_ratio_in (c, "H", H);
+}
+
+/* The method options do not apply. */
+static int
+no_method (eq_ctx *c)
+{
+  static const char *const opts[] = { "method", "tol", "prec" };
+  for (size_t i = 0; i < sizeof opts / sizeof opts[0]; i++)
+    if (eq_given (c, opts[i]))
+      return eq_fail_usage (c, "%s does not apply with --certified (its "
+                            "own method)", opts[i]);
+  return 0;
+}
+
+/* The sign of the ratio R (nonzero), +1 or -1. */
+static int
+sign_of (const double r[2])
+{
+  return (r[0] > 0.0) == (r[1] > 0.0) ? 1 : -1;
+}
+
+static void
+put (eq_ctx *c, const char *name, double x, const char *fn)
+{
+  eq_put_real (c, name, x, fn, EQ_CERTIFIED);
+}
+
+/* ---------------------------------------------------------------- */
+/* The evaluators                                                    */
+/* ---------------------------------------------------------------- */
+
+int
+eq_cert_3_3 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_energy";
+  double L0[2], D[2], V[2], Omega[2], E;
+  if (eq_ratio_in (c, "L0", L0) || eq_ratio_in (c, "D", D)
+      || eq_ratio_in (c, "V", V) || eq_ratio_in (c, "Omega", Omega)
+      || eq_lib (c, fn, chaplygin_certified_energy (L0, D, V, Omega, &E)))
+    return -1;
+  put (c, "E", E, fn);
+  return 0;
+}
+
+int
+eq_cert_3_4 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_momentum";
+  double L0[2], D[2], Omega[2], H;
+  if (eq_ratio_in (c, "L0", L0) || eq_ratio_in (c, "D", D)
+      || eq_ratio_in (c, "Omega", Omega)
+      || eq_lib (c, fn, chaplygin_certified_momentum (L0, D, Omega, &H)))
+    return -1;
+  put (c, "H", H, fn);
+  return 0;
+}
+
+int
+eq_cert_3_6 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_collide";
+  double L0[2], Delta[2], V[2], Omega[2], theta[2], q[4];
+  if (slot_in (c, L0, Delta) || eq_ratio_in (c, "V", V)
+      || eq_ratio_in (c, "Omega", Omega)
+      || eq_ratio_opt (c, "theta", 0.0, theta)
+      || eq_lib (c, fn, chaplygin_certified_collide (L0, Delta, V, Omega,
+                                                     theta, q)))
+    return -1;
+  put (c, "D_plus", q[CHAPLYGIN_D], fn);
+  put (c, "V_plus", q[CHAPLYGIN_V], fn);
+  put (c, "theta_plus", q[CHAPLYGIN_THETA], fn);
+  put (c, "Omega_plus", q[CHAPLYGIN_OMEGA], fn);
+  return 0;
+}
+
+int
+eq_cert_3_7 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_collide_eh";
+  double L0[2], Delta[2], D[2], E[2], H[2], theta[2], p[4];
+  if (slot_in (c, L0, Delta) || eq_ratio_in (c, "D", D)
+      || eh_in (c, "3.7", E, H) || eq_ratio_opt (c, "theta", 0.0, theta)
+      || eq_lib (c, fn, chaplygin_certified_collide_eh (L0, Delta, D, E,
+                                                        theta, H, p)))
+    return -1;
+  put (c, "D_plus", p[CHAPLYGIN_D], fn);
+  put (c, "E_plus", p[CHAPLYGIN_E], fn);
+  put (c, "theta_plus", p[CHAPLYGIN_THETA], fn);
+  put (c, "H_plus", p[CHAPLYGIN_H], fn);
+  return 0;
+}
+
+int
+eq_cert_3_8 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_spin_ratio";
+  static const char fn_spins[] = "chaplygin_certified_spins";
+  double L0[2], Delta[2], E[2], H[2], ratio;
+  int dir = 0, spins;
+  const int slot = eq_given (c, "L0") || eq_given (c, "Delta");
+  if ((slot && (slot_in (c, L0, Delta) || eq_dir_in (c, "dir", &dir)))
+      || eh_in (c, "3.8", E, H)
+      || eq_lib (c, fn, chaplygin_certified_spin_ratio (E, H, &ratio)))
+    return -1;
+  put (c, "ratio", ratio, fn);
+  if (slot)
+    {
+      if (eq_lib (c, fn_spins, chaplygin_certified_spins (L0, Delta, dir, E,
+                                                          H, &spins)))
+        return -1;
+      eq_put_int (c, "spins", spins, fn_spins, "exact");
+    }
+  return 0;
+}
+
+int
+eq_cert_3_10 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_sigma4";
+  double L0[2], Delta[2], sigma4;
+  int dir;
+  if (slot_in (c, L0, Delta) || eq_dir_in (c, "dir", &dir)
+      || eq_lib (c, fn, chaplygin_certified_sigma4 (L0, Delta, dir, &sigma4)))
+    return -1;
+  put (c, "sigma4", sigma4, fn);
+  return 0;
+}
+
+/* (3.11), (3.12): the stability of the direction DIR. */
+static int
+stable_case (eq_ctx *c, int dir)
+{
+  static const char fn[] = "chaplygin_certified_stable";
+  double L0[2], Delta[2];
+  int stable;
+  if (slot_in (c, L0, Delta)
+      || eq_lib (c, fn, chaplygin_certified_stable (L0, Delta, dir, &stable)))
+    return -1;
+  eq_put_int (c, "stable", stable, fn, "exact");
+  return 0;
+}
+
+int
+eq_cert_3_11 (eq_ctx *c)
+{
+  return stable_case (c, 1);
+}
+
+int
+eq_cert_3_12 (eq_ctx *c)
+{
+  return stable_case (c, -1);
+}
+
+/* (3.13), (3.14): the reversal range, dir defaulting to DEFLT. */
+static int
+range_case (eq_ctx *c, int deflt)
+{
+  static const char fn[] = "chaplygin_certified_reversal_range";
+  double L0[2], Delta[2], rlo, rhi;
+  int dir, nonempty;
+  if (slot_in (c, L0, Delta) || eq_dir_opt (c, "dir", deflt, &dir)
+      || eq_lib (c, fn, chaplygin_certified_reversal_range (L0, Delta, dir,
+                                                            &rlo, &rhi,
+                                                            &nonempty)))
+    return -1;
+  put (c, "rlo", rlo, fn);
+  put (c, "rhi", rhi, fn);
+  eq_put_int (c, "nonempty", nonempty, fn, "exact");
+  return 0;
+}
+
+int
+eq_cert_3_13 (eq_ctx *c)
+{
+  return range_case (c, -1);
+}
+
+int
+eq_cert_3_14 (eq_ctx *c)
+{
+  return range_case (c, 1);
+}
+
+int
+eq_cert_3_15 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_ratio_lower_bound";
+  double L0[2], Delta[2], rmin;
+  int dir;
+  if (slot_in (c, L0, Delta) || eq_dir_in (c, "dir", &dir)
+      || eq_lib (c, fn, chaplygin_certified_ratio_lower_bound (L0, Delta, dir,
+                                                               &rmin)))
+    return -1;
+  put (c, "rmin", rmin, fn);
+  return 0;
+}
+
+int
+eq_cert_4_1 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_xi4";
+  static const char fn_t[] = "chaplygin_certified_xi4_taylor";
+  static const char *const cn[3] = { "c0", "c1", "c2" };
+  double L0[2], Delta[2], Vstar[2], xi4, coef[3];
+  if (slot_in (c, L0, Delta) || eq_ratio_in (c, "Vstar", Vstar)
+      || eq_lib (c, fn, chaplygin_certified_xi4 (L0, Delta, Vstar, &xi4))
+      || eq_lib (c, fn_t, chaplygin_certified_xi4_taylor (L0,
+                                                          sign_of (Vstar),
+                                                          coef)))
+    return -1;
+  put (c, "xi4", xi4, fn);
+  for (int i = 0; i < 3; i++)
+    put (c, cn[i], coef[i], fn_t);
+  return 0;
+}
+
+int
+eq_cert_B_1 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_flow";
+  double L0[2], D0[2], V0[2], Omega0[2], D[2], V2, Omega;
+  if (eq_ratio_in (c, "L0", L0) || eq_ratio_in (c, "D0", D0)
+      || eq_ratio_in (c, "V0", V0) || eq_ratio_in (c, "Omega0", Omega0)
+      || eq_ratio_in (c, "D", D)
+      || eq_lib (c, fn, chaplygin_certified_flow (L0, D0, V0, Omega0, D, &V2,
+                                                  &Omega)))
+    return -1;
+  put (c, "V2", V2, fn);
+  put (c, "Omega", Omega, fn);
+  return 0;
+}
+
+/* (B.3) (REVERSAL = 0) and (B.4) (REVERSAL = 1): the coefficients of the
+   label's case and one certified step of the return map from the exact
+   state, (E, H, dir) or (V, Omega) just after the collision. */
+static int
+step_case (eq_ctx *c, int reversal)
+{
+  static const char fn_c[] = "chaplygin_certified_coefficients";
+  static const char fn[] = "chaplygin_certified_orbit_step";
+  const double peg[2] = { 0.0, 0.0 };
+  const unsigned request = CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU;
+  double L0[2], Delta[2], a[2], b[2], theta, tau, C1, C2;
+  int dir;
+  chaplygin_certified_orbit *o = NULL;
+
+  int eh = eq_choose (c, "E", "H", "V", "Omega");
+  if (eh < 0 || no_method (c) || slot_in (c, L0, Delta))
+    return -1;
+  if (eh)
+    {
+      if (eq_ratio_in (c, "E", a) || eq_ratio_in (c, "H", b)
+          || eq_dir_in (c, "dir", &dir))
+        return -1;
+    }
+  else
+    {
+      if (eq_ratio_in (c, "V", a) || eq_ratio_in (c, "Omega", b))
+        return -1;
+      if (a[0] == 0.0 && !eq_given (c, "dir"))
+        return eq_fail_usage (c, "V = 0: give dir (+1 or -1)");
+      dir = a[0] == 0.0 ? 0 : sign_of (a);
+      if (eq_given (c, "dir"))
+        {
+          int d;
+          if (eq_dir_in (c, "dir", &d))
+            return -1;
+          if (dir != 0 && d != dir)
+            return eq_fail_usage (c, "V and dir disagree: dir has the sign "
+                                  "of the velocity along the slot");
+          dir = d;
+        }
+    }
+  if (eq_exact_opt (c, "theta", 0.0, &theta)
+      || eq_exact_opt (c, "tau", 0.0, &tau))
+    return -1;
+  const double Dplus[2] = { dir > 0 ? 0.0 : Delta[0],
+                            dir > 0 ? 1.0 : Delta[1] };
+  if (eq_lib (c, fn_c, chaplygin_certified_coefficients (L0, Delta, Dplus,
+                                                         reversal, &C1, &C2)))
+    return -1;
+  if (eh)
+    {
+      if (eq_lib (c, "chaplygin_certified_orbit_new_exact",
+                  chaplygin_certified_orbit_new_exact (L0, Delta, dir, a, b,
+                                                       theta, tau, peg,
+                                                       request, &o)))
+        return -1;
+    }
+  else if (eq_lib (c, "chaplygin_certified_orbit_new_phase_exact",
+                   chaplygin_certified_orbit_new_phase_exact (L0, Delta, a,
+                                                              b, theta, tau,
+                                                              peg, request,
+                                                              &o)))
+    return -1;
+  chaplygin_discrete_state out;
+  chaplygin_discrete_event ev;
+  const int status = chaplygin_certified_orbit_step (o, &out, &ev, NULL);
+  chaplygin_certified_orbit_free (o);
+  if (eq_lib (c, fn, status))
+    return -1;
+  put (c, "C1", C1, fn_c);
+  put (c, "C2", C2, fn_c);
+  eq_put_int (c, "reversal", ev.reversal, fn, "exact");
+  put (c, "E_next", out.E, fn);
+  put (c, "H_next", out.H, fn);
+  put (c, "dtheta", ev.dtheta, fn);
+  put (c, "dtau", ev.dtau, fn);
+  if (reversal && ev.reversal)
+    put (c, "Dc", ev.Dc, fn);
+  if (ev.reversal != reversal)
+    c->note = reversal
+      ? "this segment does not reverse: the step is (B.3)'s, and C1, C2 "
+      "above are (B.4)'s, for a reversing segment from the same end"
+      : "this segment reverses: the step is (B.4)'s, and C1, C2 above are "
+      "(B.3)'s, for a segment from the same end without reversal";
+  return 0;
+}
+
+int
+eq_cert_B_3 (eq_ctx *c)
+{
+  return step_case (c, 0);
+}
+
+int
+eq_cert_B_4 (eq_ctx *c)
+{
+  return step_case (c, 1);
+}
+
+int
+eq_cert_B_5 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_turning_points";
+  double L0[2], Delta[2], E[2], H[2], Dc[2];
+  int n_real, n_in_slot;
+  if (eq_given (c, "D") && !eq_given (c, "V") && !eq_given (c, "Omega"))
+    return eq_fail_usage (c, "D goes with V and Omega, which --certified "
+                          "does not take here: give E and H");
+  if (slot_in (c, L0, Delta) || eh_in (c, "B.5", E, H)
+      || eq_lib (c, fn, chaplygin_certified_turning_points (L0, Delta, E, H,
+                                                            &n_real, Dc,
+                                                            &n_in_slot)))
+    return -1;
+  eq_put_int (c, "n_real", n_real, fn, "exact");
+  if (n_real >= 1)
+    put (c, "Dc1", Dc[0], fn);
+  if (n_real == 2)
+    put (c, "Dc2", Dc[1], fn);
+  eq_put_int (c, "n_in_slot", n_in_slot, fn, "exact");
+  return 0;
+}
+
+int
+eq_cert_B_7 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_c3";
+  double L0[2], Delta[2], C3;
+  int dir;
+  if (slot_in (c, L0, Delta) || eq_dir_in (c, "dir", &dir)
+      || eq_lib (c, fn, chaplygin_certified_c3 (L0, Delta, dir, &C3)))
+    return -1;
+  put (c, "C3", C3, fn);
+  return 0;
+}
+
+#else /* !HAVE_ARB: no certified evaluators (eq-table.c names none) */
+
+typedef int eq_certified_none;
+
+#endif /* HAVE_ARB */
