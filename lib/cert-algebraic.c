@@ -1,6 +1,7 @@
 /* cert-algebraic.c -- the certified method (issue 28) for the paper's
    closed-form quantities: (3.3), (3.4), (3.6)-(3.8), (3.10)-(3.15), (4.1),
-   (B.1), the coefficients of (B.3)/(B.4), (B.5), (B.7).  Every input is an
+   (B.1), the coefficients of (B.3)/(B.4), (B.5), (B.7); and the Jacobian
+   (3.9) of the return map.  Every input is an
    exact rational, the ratio of two doubles; every double returned is the
    one nearest (ties to even) to the exact value of the formula, every
    integer returned the exact decision.  Uses cert-round.h and the public
@@ -26,6 +27,14 @@
      by Ziv's loop on log1p(sigma4 - 1) with sigma4 - 1 formed exactly
      (no cancellation as Delta -> 0), or log(sigma4) where
      |sigma4 - 1| >= 1/2.
+   - The Jacobian (3.9): its rational entries exact (2 C1 H, C2, 0, 1),
+     df3/dE and df3/dH from Phi'(h) = Int sqrt(a) g^(-3/2) dl
+     (stability.c) by the identity
+       (1 - h^2) Phi'(h) = [l sqrt(a/g)]_lo^hi + Theta - T,
+     Theta, T the leg integrals I1, I2 of cert-leg.c (Arb balls), divided
+     by q = 1 - h^2 exactly; at q = 0 by the primitive of sqrt(1 + l^2)/|l|^3,
+     -sqrt(1 + x^2)/(2 x^2) - asinh(1/x)/2 at x = |l|; by Ziv's loop (0
+     exactly for df3/dE at H = 0).
    - The loop stops at PREC_CAP bits with CHAPLYGIN_ECAP: a value that
      close to a rounding boundary has not been met (nor can be, for the
      values above, except through a cap too small for their size).  */
@@ -42,6 +51,7 @@
 #pragma GCC diagnostic ignored "-Wstringop-overflow"
 
 #include "chaplygin.h"
+#include "cert-leg.h"
 #include "cert-round.h"
 
 /* Ziv's loop: the first working precision and the cap (bits). */
@@ -898,6 +908,187 @@ chaplygin_certified_turning_points (const double L0[2],
           *n_in_slot = k;
         }
     }
+  qset_clear (&s);
+  return status;
+}
+
+/* ---- (3.9) ------------------------------------------------------------ */
+
+/* df3/dH = Phi'(h)/sqrt(2E) (WHICH 0) or df3/dE = -H Phi'(h)/(2E sqrt(2E))
+   (WHICH 1) on the path from LO to HI without a turning point, q = 1 -
+   H^2/(2E) exact. */
+typedef struct
+{
+  const fmpq *q, *lo, *hi, *E, *H;
+  int which;
+} jac_expr;
+
+/* B = l sqrt((1 + l^2)/(l^2 + q)) at the exact L. */
+static void
+jac_boundary (arb_t b, const fmpq_t l, const fmpq_t q, slong prec)
+{
+  fmpq_t a, g;
+  fmpq_init (a);
+  fmpq_init (g);
+  one_plus_sq (a, l);
+  fmpq_mul (g, l, l);
+  fmpq_add (g, g, q);
+  fmpq_div (a, a, g);
+  arb_set_fmpq (b, a, prec);
+  arb_sqrt (b, b, prec);
+  arb_t t;
+  arb_init (t);
+  arb_set_fmpq (t, l, prec);
+  arb_mul (b, b, t, prec);
+  arb_clear (t);
+  fmpq_clear (a);
+  fmpq_clear (g);
+}
+
+/* The primitive of sqrt(1 + x^2)/x^3 (x > 0):
+   -sqrt(1 + x^2)/(2 x^2) - asinh(1/x)/2, at |L|. */
+static void
+jac_prim0 (arb_t p, const fmpq_t l, slong prec)
+{
+  arb_t x, t;
+  arb_init (x);
+  arb_init (t);
+  arb_set_fmpq (x, l, prec);
+  arb_abs (x, x);
+  arb_sqr (t, x, prec);
+  arb_add_ui (p, t, 1, prec);
+  arb_sqrt (p, p, prec);
+  arb_div (p, p, t, prec);
+  arb_inv (t, x, prec);
+  arb_asinh (t, t, prec);
+  arb_add (p, p, t, prec);
+  arb_mul_2exp_si (p, p, -1);
+  arb_neg (p, p);
+  arb_clear (x);
+  arb_clear (t);
+}
+
+static void
+jac_ball (arb_t b, const void *data, slong prec)
+{
+  const jac_expr *e = data;
+  arb_t t, u;
+  arb_init (t);
+  arb_init (u);
+  if (fmpq_is_zero (e->q))
+    {
+      jac_prim0 (b, e->hi, prec);
+      jac_prim0 (t, e->lo, prec);
+      arb_sub (b, b, t, prec);
+      arb_abs (b, b);
+    }
+  else
+    {
+      /* ([B]_lo^hi + I1 - I2)/q */
+      chp_cert_leg (t, u, e->q, e->lo, e->hi, 0, prec);
+      arb_sub (t, t, u, prec);
+      jac_boundary (b, e->hi, e->q, prec);
+      arb_add (t, t, b, prec);
+      jac_boundary (b, e->lo, e->q, prec);
+      arb_sub (t, t, b, prec);
+      arb_set_fmpq (u, e->q, prec);
+      arb_div (b, t, u, prec);
+    }
+  /* 1/sqrt(2E), and -H/(2E) for df3/dE */
+  arb_set_fmpq (t, e->E, prec);
+  arb_mul_2exp_si (t, t, 1);
+  arb_rsqrt (u, t, prec);
+  arb_mul (b, b, u, prec);
+  if (e->which)
+    {
+      arb_inv (t, t, prec);
+      arb_set_fmpq (u, e->H, prec);
+      arb_mul (t, t, u, prec);
+      arb_neg (t, t);
+      arb_mul (b, b, t, prec);
+    }
+  arb_clear (t);
+  arb_clear (u);
+}
+
+int
+chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
+                              int dir, const double E[2], const double H[2],
+                              double J[16])
+{
+  if (!L0 || !Delta || !E || !H || !J || (dir != 1 && dir != -1))
+    return CHAPLYGIN_EINVAL;
+  qset s;
+  qset_init (&s);
+  fmpq *qL = s.q[0], *qD = s.q[1], *e = s.q[2], *h = s.q[3], *ls = s.q[4];
+  fmpq *lf = s.q[5], *q = s.q[6], *t = s.q[7], *c1 = s.q[8], *c2 = s.q[9];
+  fmpq *u = s.q[10];
+  int status = slot_in (qL, qD, L0, Delta);
+  if (!status && (in (e, E) || in (h, H) || fmpq_sgn (e) < 0))
+    status = CHAPLYGIN_EDOM;
+  if (!status)
+    {
+      /* a valid start: 2E (1 + l_s^2) - H^2 > 0 */
+      path_ends (ls, lf, qL, qD, dir);
+      one_plus_sq (t, ls);
+      fmpq_mul (t, t, e);
+      fmpq_mul_2exp (t, t, 1);
+      fmpq_mul (u, h, h);
+      if (fmpq_cmp (t, u) <= 0)
+        status = CHAPLYGIN_ESTATE;
+    }
+  if (!status)
+    {
+      /* q = 1 - H^2/(2E); the segment's outcome (certified.c's rule):
+         q = 0 reaching l = 0 spins, q < 0 reverses where it reaches l = 0
+         or l_f^2 + q <= 0 */
+      fmpq_div (q, u, e);
+      fmpq_div_2exp (q, q, 1);
+      fmpq_sub_ui (q, q, 1);
+      fmpq_neg (q, q);
+      const int reaches0 = fmpq_sgn (ls) * fmpq_sgn (lf) <= 0;
+      fmpq_mul (t, lf, lf);
+      fmpq_add (t, t, q);
+      if (fmpq_is_zero (q) && reaches0)
+        status = CHAPLYGIN_ESPIN;
+      else if (fmpq_sgn (q) < 0 && (reaches0 || fmpq_sgn (t) <= 0))
+        status = CHAPLYGIN_ESTATE;      /* reverses: no (3.9) */
+    }
+  double r[16] = { 0.0 };
+  if (!status)
+    {
+      /* the collision at the far end: b = l_f, b' = l_s;
+         J[7] = 2 C1 H, J[15] = C2 */
+      momentum_ratio (c2, qL, qD, lf, t);
+      one_plus_sq (t, lf);
+      fmpq_mul (t, t, t);
+      one_plus_sq (u, ls);
+      fmpq_mul (t, t, u);
+      fmpq_mul (c1, qD, qD);
+      fmpq_div (c1, c1, t);
+      fmpq_neg (c1, c1);                /* 2 C1 */
+      fmpq_mul (c1, c1, h);
+      r[5] = r[10] = 1.0;
+      status = out (c1, &r[7]);
+      if (!status)
+        status = out (c2, &r[15]);
+    }
+  if (!status)
+    {
+      const fmpq *lo = dir > 0 ? ls : lf, *hi = dir > 0 ? lf : ls;
+      jac_expr x = { q, lo, hi, e, h, 0 };
+      status = ziv_round (jac_ball, &x, &r[11]);
+      if (!status && fmpq_is_zero (h))
+        r[9] = 0.0;
+      else if (!status)
+        {
+          x.which = 1;
+          status = ziv_round (jac_ball, &x, &r[9]);
+        }
+    }
+  if (!status)
+    for (int i = 0; i < 16; i++)
+      J[i] = r[i];
   qset_clear (&s);
   return status;
 }

@@ -1476,9 +1476,9 @@ int chaplygin_certified_orbit_free (chaplygin_certified_orbit *orbit);
    tenth), and each double returned is the one nearest (ties to even) to the
    exact value of the formula at those inputs; each integer returned is the
    exact decision.  The rational values are formed exactly (FLINT's
-   rationals) and rounded once; the turning points of (B.5) and the exponent
-   of (4.1), which are irrational wherever they are not formed exactly, by
-   Ziv's strategy (Arb balls at 64 bits, then twice that, until the ball's
+   rationals) and rounded once; the turning points of (B.5), the exponent
+   of (4.1) and the heading derivatives of the Jacobian (3.9), which are
+   irrational wherever they are not formed exactly, by Ziv's strategy (Arb balls at 64 bits, then twice that, until the ball's
    rounding is decided; CHAPLYGIN_ECAP past 65536 bits, never met).
    @xref{Certified method}.  They exist only in a build with Arb
    (chaplygin_method_available).  Each shares the domain of its
@@ -1631,6 +1631,30 @@ int chaplygin_certified_xi4 (const double L0[2], const double Delta[2],
  */
 int chaplygin_certified_xi4_taylor (const double L0[2], int dir,
                                     double c[3]);
+
+/** (3.9), certified: chaplygin_discrete_jacobian's Jacobian of the return
+   map at the post-collision state (@dir, @E, @H) whose segment does not
+   reverse, row-major (@pxref{Stability}):
+     J[5] = J[10] = 1,   J[7] = 2 C1 H,   J[15] = C2,
+     J[9] = df3/dE = -H Phi'(h)/(2E sqrt(2E)),   J[11] = df3/dH = Phi'(h)/sqrt(2E),
+     Phi'(h) = Int_lo^hi sqrt(1 + l^2) (1 + l^2 - h^2)^(-3/2) dl,
+   @noindent
+   the others 0, $h = H/sqrt(2E)$, $C_1$ and $C_2$ those of (B.3) for
+   @dir.  The rational entries exact; $Phi'(h)$ by Arb from the segment's
+   heading and time integrals (@pxref{Jacobian of the return map}) with
+   Ziv's strategy; $J[9]$ is 0 exactly where $H = 0$.
+
+   Domain: $E > 0$, $(V^+)^2 > 0$ (decided exactly); the segment does not
+   reverse.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$),
+   CHAPLYGIN_ESTATE (an invalid start, or a reversing segment),
+   CHAPLYGIN_ESPIN ($2E = H^2$ on a path through $l = 0$),
+   CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
+                                  int dir, const double E[2],
+                                  const double H[2], double J[16]);
 
 /** (B.1), certified: chaplygin_discrete_flow's
      V(D)^2 = V0^2 + (D - D0)(2 L0 + D + D0) a0 Omega0^2/a,

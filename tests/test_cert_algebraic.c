@@ -14,6 +14,12 @@
      midpoints built on purpose);
    - the irrational values (turning points, xi4) by MPFR at 2000 bits, from
      sqrt(H^2 - 2E)/sqrt(2E) and log(numerator) - log(denominator);
+   - the Jacobian's Phi'(h) by Arb's rigorous numerical integration
+     (acb_calc_integrate, 300 bits) of its integrand in D,
+     sqrt(a)/(a - h^2)^(3/2), a = 1 + (L0 + D)^2 (the library: an identity
+     in the leg's R_F, R_D integrals), the ball required to decide each
+     rounding; at H = 0, Phi'(0) = atan2(Delta, 1 + L0 (L0 + Delta)) by
+     MPFR;
    plus the uncertified functions of the library within their documented
    ulps, and the error statuses.  0 ulps is required of the certified
    ones.  Built where configure found Arb. */
@@ -24,6 +30,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include <acb_calc.h>
+#include <arb.h>
 #include <gmp.h>
 #include <mpfr.h>
 
@@ -31,6 +39,7 @@
 #include "chaplygin.h"
 
 enum { RP = 2000 };             /* the irrational route's precision */
+enum { JP_BITS = 400 };         /* room for the ends of a 300-bit ball */
 
 /* ---- the reference route ---------------------------------------------- */
 
@@ -80,6 +89,30 @@ round_q (const mpq_t q)
   mpfr_set_emin (emin);
   mpfr_set_emax (emax);
   return d;
+}
+
+/* *X = the double nearest to every point of the ball B (both its ends,
+   rounded by MPFR, the same double): 1, else 0. */
+static int
+chp_round (const arb_t b, double *x)
+{
+  arf_t lo, hi;
+  mpfr_t m;
+  arf_init (lo);
+  arf_init (hi);
+  mpfr_init2 (m, 2 * JP_BITS);
+  arb_get_interval_arf (lo, hi, b, ARF_PREC_EXACT);
+  arf_get_mpfr (m, lo, MPFR_RNDD);
+  const double a = round_fr (m);
+  arf_get_mpfr (m, hi, MPFR_RNDU);
+  const double c = round_fr (m);
+  mpfr_clear (m);
+  arf_clear (lo);
+  arf_clear (hi);
+  if (!(a == c && signbit (a) == signbit (c)))
+    return 0;
+  *x = a;
+  return 1;
 }
 
 /* The same doubles, signed zeros told apart. */
@@ -1135,6 +1168,260 @@ START_TEST (certified_B_5)
 }
 END_TEST
 
+/* ---- (3.9) ------------------------------------------------------------ */
+
+enum { JP = 300 };              /* the integration route's precision */
+
+typedef struct
+{
+  arb_t L0, h2;
+} dphi_param;
+
+/* sqrt(a)/(a - h^2)^(3/2) at D (analytic where a - h^2 > 0). */
+static int
+f_dphi (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
+{
+  const dphi_param *p = param;
+  acb_t a, g;
+  acb_init (a);
+  acb_init (g);
+  acb_add_arb (a, z, p->L0, prec);
+  acb_sqr (a, a, prec);
+  acb_add_ui (a, a, 1, prec);
+  acb_sub_arb (g, a, p->h2, prec);
+  acb_rsqrt_analytic (g, g, order != 0, prec);
+  acb_cube (g, g, prec);
+  acb_sqrt_analytic (a, a, order != 0, prec);
+  acb_mul (res, a, g, prec);
+  acb_clear (a);
+  acb_clear (g);
+  return 0;
+}
+
+/* Phi' over D in [0, Delta] into R, for exact L0, Delta, h^2. */
+static void
+ref_dphi (arb_t r, const mpq_t L0, const mpq_t Dl, const mpq_t h2)
+{
+  dphi_param p;
+  acb_t res, a, b;
+  mag_t tol;
+  acb_calc_integrate_opt_t opt;
+  fmpq_t q;
+  arb_init (p.L0);
+  arb_init (p.h2);
+  fmpq_init (q);
+  acb_init (res);
+  acb_init (a);
+  acb_init (b);
+  mag_init (tol);
+  fmpq_set_mpq (q, L0);
+  arb_set_fmpq (p.L0, q, JP);
+  fmpq_set_mpq (q, h2);
+  arb_set_fmpq (p.h2, q, JP);
+  fmpq_set_mpq (q, Dl);
+  acb_zero (a);
+  arb_set_fmpq (acb_realref (b), q, JP);
+  acb_calc_integrate_opt_init (opt);
+  mag_set_ui_2exp_si (tol, 1, -JP + 20);
+  acb_calc_integrate (res, f_dphi, &p, a, b, JP - 20, tol, opt, JP);
+  arb_set (r, acb_realref (res));
+  arb_clear (p.L0);
+  arb_clear (p.h2);
+  fmpq_clear (q);
+  acb_clear (res);
+  acb_clear (a);
+  acb_clear (b);
+  mag_clear (tol);
+}
+
+START_TEST (certified_3_9)
+{
+  tu_rng g;
+  tu_rng_seed (&g, 309);
+  mpq_t L0, Dl, E, H, h2, t, ls, lf, m;
+  mpq_inits (L0, Dl, E, H, h2, t, ls, lf, m, NULL);
+  arb_t dphi, x, y;
+  arb_init (dphi);
+  arb_init (x);
+  arb_init (y);
+  fmpq_t fq;
+  fmpq_init (fq);
+  int n = 0;
+  for (int i = 0; i < 400; i++)
+    {
+      double l[2], dl[2], e[2], hh[2], J[16];
+      const int dir = i % 2 ? 1 : -1;
+      ratio_in (&g, -3.0, 3.0, l);
+      ratio_in (&g, 0.05, 2.0, dl);
+      ratio_in (&g, 0.2, 2.0, e);
+      ratio_in (&g, -2.0, 2.0, hh);
+      if (i % 10 == 0)
+        hh[0] = 0.0;
+      q_of (L0, l);
+      q_of (Dl, dl);
+      q_of (E, e);
+      q_of (H, hh);
+      const int st = chaplygin_certified_jacobian (l, dl, dir, e, hh, J);
+      /* valid, and no turning point on the path: V^2 = 2E - H^2/a > 0 at
+         its least, where |l| is least (h^2 = H^2/(2E) < 1 + m^2) */
+      mpq_mul (h2, H, H);
+      mpq_div (h2, h2, E);
+      mpq_div_2exp (h2, h2, 1);
+      mpq_add (t, L0, Dl);
+      mpq_set (ls, dir > 0 ? L0 : t);
+      mpq_set (lf, dir > 0 ? t : L0);
+      mpq_mul (m, ls, ls);
+      mpq_set_ui (t, 1, 1);
+      mpq_add (m, m, t);
+      if (mpq_cmp (h2, m) >= 0)
+        {
+          ck_assert_int_eq (st, CHAPLYGIN_ESTATE);       /* invalid start */
+          continue;
+        }
+      if (mpq_sgn (ls) * mpq_sgn (lf) <= 0)
+        mpq_set_ui (m, 1, 1);
+      else
+        {
+          mpq_abs (m, ls);
+          mpq_abs (t, lf);
+          if (mpq_cmp (t, m) < 0)
+            mpq_set (m, t);
+          mpq_mul (m, m, m);
+          mpq_set_ui (t, 1, 1);
+          mpq_add (m, m, t);
+        }
+      if (mpq_cmp (h2, m) >= 0)
+        {
+          ck_assert_msg (st == CHAPLYGIN_ESTATE || st == CHAPLYGIN_ESPIN,
+                         "a turning point on the path: %d", st);
+          continue;
+        }
+      ck_assert_ok (st);
+      n++;
+      ref_dphi (dphi, L0, Dl, h2);
+      /* df3/dH = Phi'/sqrt(2E); df3/dE = -H Phi'/(2E sqrt(2E)) */
+      fmpq_set_mpq (fq, E);
+      arb_set_fmpq (y, fq, JP);
+      arb_mul_2exp_si (y, y, 1);
+      arb_rsqrt (x, y, JP);
+      arb_mul (x, x, dphi, JP);
+      double want;
+      ck_assert_msg (chp_round (x, &want), "the route does not decide");
+      ck_assert_same (J[11], want);
+      fmpq_set_mpq (fq, H);
+      arb_set_fmpq (dphi, fq, JP);
+      arb_div (x, x, y, JP);
+      arb_mul (x, x, dphi, JP);
+      arb_neg (x, x);
+      if (mpq_sgn (H) == 0)
+        ck_assert_same (J[9], 0.0);
+      else
+        {
+          ck_assert_msg (chp_round (x, &want), "the route does not decide");
+          ck_assert_same (J[9], want);
+        }
+      /* the rational entries: C1 from the phase form, C2 = 1 - Delta b/
+         (1 + b^2) (ref_sigma4: the collision at the far end) */
+      mpq_set_ui (t, 1, 1);
+      ref_sigma4 (m, L0, Dl, dir);
+      ck_assert_same (J[15], round_q (m));
+      /* 2 C1 H = [C2^2/(1 + b'^2) - 1/(1 + b^2)] H, b = l_f, b' = l_s */
+      mpq_mul (m, m, m);
+      mpq_mul (t, ls, ls);
+      mpq_set_ui (h2, 1, 1);
+      mpq_add (t, t, h2);
+      mpq_div (m, m, t);
+      mpq_mul (t, lf, lf);
+      mpq_add (t, t, h2);
+      mpq_inv (t, t);
+      mpq_sub (m, m, t);
+      mpq_mul (m, m, H);
+      ck_assert_same (J[7], round_q (m));
+      ck_assert (J[5] == 1.0 && J[10] == 1.0 && J[0] == 0.0 && J[13] == 0.0);
+      if (l[1] == 1.0 && dl[1] == 1.0 && e[1] == 1.0 && hh[1] == 1.0)
+        {
+          chaplygin_discrete sys;
+          chaplygin_discrete_state s0 = { 0 };
+          double K[16];
+          ck_assert_ok (chaplygin_discrete_init (&sys, l[0], dl[0]));
+          s0.dir = dir;
+          s0.E = e[0];
+          s0.H = hh[0];
+          ck_assert_ok (chaplygin_discrete_jacobian (&sys, &s0, K));
+          ck_assert_abs_eps (K[11], J[11], 16, fabs (J[11]));
+          ck_assert_abs_eps (K[9], J[9], 16, fabs (J[9]));
+          ck_assert_ulps (K[7], J[7], 8);
+          ck_assert_ulps (K[15], J[15], 4);
+        }
+    }
+  ck_assert_int_gt (n, 150);
+  /* at H = 0: df3/dH = atan2(Delta, 1 + L0 (L0 + Delta))/sqrt(2E) (the
+     paper's (3.9)), by MPFR; L0 = 1/3, Delta = 5/7, E = 3/5 */
+  {
+    double J[16];
+    const double l[2] = { 1.0, 3.0 }, dl[2] = { 5.0, 7.0 }, e[2] = { 3.0, 5.0 };
+    ck_assert_ok (chaplygin_certified_jacobian (l, dl, 1, e, AS_RATIO (0.0),
+                                                J));
+    mpfr_t a, b;
+    mpfr_inits2 (RP, a, b, NULL);
+    mpfr_set_ui (a, 5, MPFR_RNDN);
+    mpfr_div_ui (a, a, 7, MPFR_RNDN);                    /* Delta */
+    mpfr_set_ui (b, 63 + 22, MPFR_RNDN);              /* 1 + (1/3)(22/21) */
+    mpfr_div_ui (b, b, 63, MPFR_RNDN);
+    mpfr_atan2 (a, a, b, MPFR_RNDN);
+    mpfr_set_ui (b, 6, MPFR_RNDN);
+    mpfr_div_ui (b, b, 5, MPFR_RNDN);
+    mpfr_sqrt (b, b, MPFR_RNDN);
+    mpfr_div (a, a, b, MPFR_RNDN);
+    ck_assert_same (J[11], round_fr (a));
+    ck_assert_same (J[9], 0.0);
+    mpfr_clears (a, b, NULL);
+  }
+  /* q = 0 (2E = H^2) on a path away from l = 0: L0 = 1/2, Delta = 1,
+     E = 1/2, H = 1: Phi' = Int_{1/2}^{3/2} sqrt(1 + l^2)/l^3 dl */
+  {
+    double J[16];
+    mpq_set_ui (L0, 1, 2);
+    mpq_set_ui (Dl, 1, 1);
+    mpq_set_ui (h2, 1, 1);
+    ck_assert_ok (chaplygin_certified_jacobian ((const double[2]) { 1.0, 2.0 },
+                                                AS_RATIO (1.0), 1,
+                                                (const double[2]) { 1.0, 2.0 },
+                                                AS_RATIO (1.0), J));
+    ref_dphi (dphi, L0, Dl, h2);
+    double want;
+    ck_assert (chp_round (dphi, &want));
+    ck_assert_same (J[11], want);
+    ck_assert (chp_round (dphi, &want));
+    ck_assert_same (J[9], -want);       /* -H/(2E) = -1 */
+  }
+  /* errors: a reversing segment; the spinning state; an invalid start */
+  double J[16];
+  ck_assert_status (chaplygin_certified_jacobian (AS_RATIO (1.0),
+                                                  (const double[2]) { 1.0,
+                                                                      3.0 },
+                                                  -1, AS_RATIO (1.0),
+                                                  (const double[2]) { 11.0,
+                                                                      5.0 },
+                                                  J), CHAPLYGIN_ESTATE);
+  ck_assert_status (chaplygin_certified_jacobian (AS_RATIO (-0.5),
+                                                  AS_RATIO (1.0), 1,
+                                                  AS_RATIO (0.5),
+                                                  AS_RATIO (1.0), J),
+                    CHAPLYGIN_ESPIN);
+  ck_assert_status (chaplygin_certified_jacobian (AS_RATIO (0.0),
+                                                  AS_RATIO (1.0), 1,
+                                                  AS_RATIO (0.5),
+                                                  AS_RATIO (2.0), J),
+                    CHAPLYGIN_ESTATE);
+  fmpq_clear (fq);
+  arb_clear (dphi);
+  arb_clear (x);
+  arb_clear (y);
+  mpq_clears (L0, Dl, E, H, h2, t, ls, lf, m, NULL);
+}
+END_TEST
+
 /* ---- the orbit from a phase state ------------------------------------- */
 
 /* chaplygin_certified_orbit_new_phase_exact against new_exact where (3.3),
@@ -1247,6 +1534,7 @@ main (void)
   tu_add (s, "certified_3_3", certified_3_3);
   tu_add (s, "certified_3_6_3_7", certified_3_6_3_7);
   tu_add (s, "certified_3_8", certified_3_8);
+  tu_add (s, "certified_3_9", certified_3_9);
   tu_add (s, "certified_3_10", certified_3_10);
   tu_add (s, "certified_3_11_3_12", certified_3_11_3_12);
   tu_add (s, "certified_3_13_3_15", certified_3_13_3_15);

@@ -164,6 +164,26 @@ eq_cert_3_8 (eq_ctx *c)
 }
 
 int
+eq_cert_3_9 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_jacobian";
+  static const char *const names[16] = {
+    "J11", "J12", "J13", "J14", "J21", "J22", "J23", "J24",
+    "J31", "J32", "J33", "J34", "J41", "J42", "J43", "J44"
+  };
+  double L0[2], Delta[2], E[2], H[2], J[16];
+  int dir;
+  if (slot_in (c, L0, Delta) || eq_dir_in (c, "dir", &dir)
+      || eh_in (c, "3.9", E, H)
+      || eq_lib (c, fn, chaplygin_certified_jacobian (L0, Delta, dir, E, H,
+                                                      J)))
+    return -1;
+  for (int i = 0; i < 16; i++)
+    put (c, names[i], J[i], fn);
+  return 0;
+}
+
+int
 eq_cert_3_10 (eq_ctx *c)
 {
   static const char fn[] = "chaplygin_certified_sigma4";
