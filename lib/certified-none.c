@@ -1,4 +1,4 @@
-/* certified-none.c -- the certified method's public functions in a build
+/* certified-none.c -- every public chaplygin_certified_* function in a build
    without Arb (configure --without-arb, or Arb not found): the same
    interface, every entry refusing with CHAPLYGIN_EINVAL, so that programs
    and bindings link against either build
@@ -121,5 +121,285 @@ chaplygin_certified_orbit_fate (chaplygin_certified_orbit *orbit,
   (void) reversal_at;
   (void) reversal_cap;
   (void) fate;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_orbit_new_phase_exact (const double L0[2],
+                                           const double Delta[2],
+                                           const double V[2],
+                                           const double Omega[2],
+                                           double theta,
+                                           double tau,
+                                           const double peg[2],
+                                           unsigned request,
+                                           chaplygin_certified_orbit **orbit)
+{
+  (void) L0;
+  (void) Delta;
+  (void) V;
+  (void) Omega;
+  (void) theta;
+  (void) tau;
+  (void) peg;
+  (void) request;
+  (void) orbit;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_energy (const double L0[2],
+                            const double D[2],
+                            const double V[2],
+                            const double Omega[2],
+                            double *E)
+{
+  (void) L0;
+  (void) D;
+  (void) V;
+  (void) Omega;
+  (void) E;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_momentum (const double L0[2],
+                              const double D[2],
+                              const double Omega[2],
+                              double *H)
+{
+  (void) L0;
+  (void) D;
+  (void) Omega;
+  (void) H;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_collide (const double L0[2],
+                             const double Delta[2],
+                             const double V[2],
+                             const double Omega[2],
+                             const double theta[2],
+                             double qplus[4])
+{
+  (void) L0;
+  (void) Delta;
+  (void) V;
+  (void) Omega;
+  (void) theta;
+  (void) qplus;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_collide_eh (const double L0[2],
+                                const double Delta[2],
+                                const double Dminus[2],
+                                const double E[2],
+                                const double theta[2],
+                                const double H[2],
+                                double pplus[4])
+{
+  (void) L0;
+  (void) Delta;
+  (void) Dminus;
+  (void) E;
+  (void) theta;
+  (void) H;
+  (void) pplus;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_spin_ratio (const double E[2],
+                                const double H[2],
+                                double *ratio)
+{
+  (void) E;
+  (void) H;
+  (void) ratio;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_spins (const double L0[2],
+                           const double Delta[2],
+                           int dir,
+                           const double E[2],
+                           const double H[2],
+                           int *spins)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) E;
+  (void) H;
+  (void) spins;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_sigma4 (const double L0[2],
+                            const double Delta[2],
+                            int dir,
+                            double *sigma4)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) sigma4;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_stable (const double L0[2],
+                            const double Delta[2],
+                            int dir,
+                            int *stable)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) stable;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_reversal_range (const double L0[2],
+                                    const double Delta[2],
+                                    int dir,
+                                    double *rlo,
+                                    double *rhi,
+                                    int *nonempty)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) rlo;
+  (void) rhi;
+  (void) nonempty;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_ratio_lower_bound (const double L0[2],
+                                       const double Delta[2],
+                                       int dir,
+                                       double *rmin)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) rmin;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_xi4 (const double L0[2],
+                         const double Delta[2],
+                         const double Vstar[2],
+                         double *xi4)
+{
+  (void) L0;
+  (void) Delta;
+  (void) Vstar;
+  (void) xi4;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_xi4_taylor (const double L0[2],
+                                int dir,
+                                double c[3])
+{
+  (void) L0;
+  (void) dir;
+  (void) c;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_jacobian (const double L0[2],
+                              const double Delta[2],
+                              int dir,
+                              const double E[2],
+                              const double H[2],
+                              double J[16])
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) E;
+  (void) H;
+  (void) J;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_flow (const double L0[2],
+                          const double D0[2],
+                          const double V0[2],
+                          const double Omega0[2],
+                          const double D[2],
+                          double *V2,
+                          double *Omega)
+{
+  (void) L0;
+  (void) D0;
+  (void) V0;
+  (void) Omega0;
+  (void) D;
+  (void) V2;
+  (void) Omega;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_coefficients (const double L0[2],
+                                  const double Delta[2],
+                                  const double Dplus[2],
+                                  int reversal,
+                                  double *C1,
+                                  double *C2)
+{
+  (void) L0;
+  (void) Delta;
+  (void) Dplus;
+  (void) reversal;
+  (void) C1;
+  (void) C2;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_turning_points (const double L0[2],
+                                    const double Delta[2],
+                                    const double E[2],
+                                    const double H[2],
+                                    int *n_real,
+                                    double Dc[2],
+                                    int *n_in_slot)
+{
+  (void) L0;
+  (void) Delta;
+  (void) E;
+  (void) H;
+  (void) n_real;
+  (void) Dc;
+  (void) n_in_slot;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_c3 (const double L0[2],
+                        const double Delta[2],
+                        int dir,
+                        double *C3)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) C3;
   return CHAPLYGIN_EINVAL;
 }

@@ -69,6 +69,7 @@ from . import discrete, smooth, massless, printed, sweep, scene, vectorised
 from . import certified
 from .certified import (CertifiedOrbit, certified_orbit_new,
                         certified_orbit_new_exact, certified_orbit_new_phase,
+                        certified_orbit_new_phase_exact,
                         certified_orbit_cap, certified_orbit_step,
                         certified_orbit_state, certified_orbit_fate,
                         certified_orbit_collisions, certified_orbit_free,

@@ -14,6 +14,9 @@ model's exact value (chaplygin_certified_orbit_*, "Certified orbits" in
       from a post-collision phase state [D+, V+, theta+, Omega+] of
       doubles, E and H formed from it exactly
       (chaplygin_certified_orbit_new_phase);
+  CertifiedOrbit.phase_exact(L0, Delta, V, Omega, ...)
+      from a phase state of exact ratios
+      (chaplygin_certified_orbit_new_phase_exact);
   orbit.step()      the next collision: Result(out, ev, bounds), a
                     DiscreteState, a DiscreteEvent and a CertifiedBounds
                     (chaplygin_certified_orbit_step);
@@ -60,6 +63,7 @@ from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_float, _as_struct,
 
 __all__ = ['CertifiedOrbit', 'certified_orbit_new',
            'certified_orbit_new_exact', 'certified_orbit_new_phase',
+           'certified_orbit_new_phase_exact',
            'certified_orbit_cap', 'certified_orbit_step',
            'certified_orbit_state', 'certified_orbit_fate',
            'certified_orbit_collisions', 'certified_orbit_free',
@@ -276,6 +280,42 @@ class CertifiedOrbit:
         self._cap = None
         return self
 
+    @classmethod
+    def phase_exact(cls, L0, Delta, V, Omega, theta=0.0, tau=0.0,
+                    peg=(0.0, 0.0), request='all'):
+        """CertifiedOrbit.phase_exact(L0, Delta, V, Omega, theta=0.0,
+        tau=0.0, peg=(0.0, 0.0), request='all')
+
+        A certified orbit from a post-collision phase state given as exact
+        ratios (chaplygin_certified_orbit_new_phase_exact): L0, Delta, V and
+        Omega each as in CertifiedOrbit.exact; dir = sgn(V), the peg at the
+        end V leaves, E and H by (3.3), (3.4) exactly.
+
+        C: int chaplygin_certified_orbit_new_phase_exact(const double L0[2],
+        const double Delta[2], const double V[2], const double Omega[2],
+        double theta, double tau, const double peg[2], unsigned request,
+        chaplygin_certified_orbit **orbit)
+        """
+        args = (_ratio('L0', L0), _ratio('Delta', Delta), _ratio('V', V),
+                _ratio('Omega', Omega), _real('theta', theta),
+                _real('tau', tau), _pair('peg', peg),
+                _integer('request', _request(request)))
+        return cls._made_phase_exact(args)
+
+    @classmethod
+    def _made_phase_exact(cls, args):
+        self = object.__new__(cls)
+        self._p = _NULL
+        self._lock = threading.Lock()
+        o = _ffi.new('chaplygin_certified_orbit **')
+        rc = _lib.chaplygin_certified_orbit_new_phase_exact(*(args + (o,)))
+        if rc:
+            _fail(rc, 'chaplygin_certified_orbit_new_phase_exact')
+        self._p = o[0]
+        self._start = ('phase_exact',) + tuple(args)
+        self._cap = None
+        return self
+
     # -- the C functions ---------------------------------------------------
 
     def step(self, *, return_ev=True, return_bounds=True):
@@ -473,6 +513,8 @@ def _rebuild_orbit(cls, start, cap, closed, n):
     if start[0] == 'new':
         _, sys, st, req = start
         o = cls(sys, st, req)
+    elif start[0] == 'phase_exact':
+        o = cls._made_phase_exact(tuple(start[1:]))
     elif start[0] == 'phase':
         _, sys, q, tau, peg, req = start
         o = cls._made_phase((sys, q, tau, peg, req))
@@ -547,6 +589,22 @@ def certified_orbit_new_phase(sys, qplus, tau=0.0, peg=(0.0, 0.0),
     unsigned request, chaplygin_certified_orbit **orbit)
     """
     return CertifiedOrbit.phase(sys, qplus, tau, peg, request)
+
+
+def certified_orbit_new_phase_exact(L0, Delta, V, Omega, theta=0.0, tau=0.0,
+                                    peg=(0.0, 0.0), request='all'):
+    """certified_orbit_new_phase_exact(L0, Delta, V, Omega, theta=0.0,
+    tau=0.0, peg=(0.0, 0.0), request='all')
+
+    CertifiedOrbit.phase_exact(...).
+
+    C: int chaplygin_certified_orbit_new_phase_exact(const double L0[2],
+    const double Delta[2], const double V[2], const double Omega[2],
+    double theta, double tau, const double peg[2], unsigned request,
+    chaplygin_certified_orbit **orbit)
+    """
+    return CertifiedOrbit.phase_exact(L0, Delta, V, Omega, theta, tau, peg,
+                                      request)
 
 
 def certified_orbit_state(orbit, *, return_bounds=True):

@@ -703,3 +703,18 @@ def test_phase_start_state_and_fate():
         o.fate(100)
     with pytest.raises(c.StateError):
         c.certified_orbit_new_phase(sys_, [1.0, 0.3, 0.0, 0.8])
+
+
+@need_arb
+def test_phase_exact_start():
+    """CertifiedOrbit.phase_exact: V = 3/10 and Omega = 4/5 taken exactly
+    (not the doubles 0.3, 0.8): its start's E and H are the nearest doubles
+    to (3.3), (3.4) of those rationals, and it pickles."""
+    o = c.certified_orbit_new_phase_exact(F(-1, 2), 1, F(3, 10), F(4, 5),
+                                          request=0)
+    n0 = 1 + F(1, 4)
+    st, b = o.state()
+    check_rounded(st.E, F(9, 100) / 2 + n0 * F(16, 25) / 2, b.E, 'E0')
+    check_rounded(st.H, n0 * F(4, 5), b.H, 'H0')
+    o.step()
+    assert pickle.loads(pickle.dumps(o)) == o
