@@ -133,6 +133,22 @@ HAND = {
         lambda: c.certified_orbit_collisions(stepped(exact_orbit(), 2)),
         lambda: c.certified_orbit_collisions(closed(exact_orbit()))],
     'certified_orbit_free': [lambda: c.certified_orbit_free(exact_orbit())],
+    'certified_orbit_new_phase': [
+        lambda: stepped(c.certified_orbit_new_phase(SYS, [0, 1, 0.1, 0.5]), 2),
+        lambda: c.certified_orbit_new_phase(SYS, [1, 1, 0, 0.5])],
+    'certified_orbit_new_phase_exact': [
+        lambda: stepped(c.certified_orbit_new_phase_exact(
+            (-1, 2), 1, (3, 10), (4, 5)), 2),
+        lambda: c.certified_orbit_new_phase_exact(1, 1, 0, 1)],
+    'certified_orbit_state': [
+        lambda: c.certified_orbit_state(stepped(exact_orbit(), 2)),
+        lambda: c.certified_orbit_state(exact_orbit(), return_bounds=False),
+        lambda: c.certified_orbit_state(closed(exact_orbit()))],
+    'certified_orbit_fate': [
+        lambda: c.certified_orbit_fate(exact_orbit(), 100),
+        lambda: c.certified_orbit_fate(c.certified_orbit_new_phase_exact(
+            (-1, 2), 1, (3, 10), (4, 5)), 100, reversal_cap=3),
+        lambda: c.certified_orbit_fate(closed(exact_orbit()), 1)],
     'method_available': [
         lambda: c.method_available('certified'),
         lambda: c.method_available([0, 3, 9], errors='return'),

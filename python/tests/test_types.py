@@ -99,6 +99,27 @@ HAND = {
                                                        peg=v)),
         ('enum', lambda v: c.certified_orbit_new_exact(1, 1, 1, 1, 0.5,
                                                        request=v))],
+    'certified_orbit_new_phase': [
+        ('array4', lambda v: c.certified_orbit_new_phase(SYS, v)),
+        ('real', lambda v: c.certified_orbit_new_phase(SYS, [0, 1, 0, 0.5],
+                                                       v)),
+        ('pair', lambda v: c.certified_orbit_new_phase(SYS, [0, 1, 0, 0.5],
+                                                       peg=v)),
+        ('enum', lambda v: c.certified_orbit_new_phase(SYS, [0, 1, 0, 0.5],
+                                                       request=v))],
+    'certified_orbit_new_phase_exact': [
+        ('real', lambda v: c.certified_orbit_new_phase_exact(v, 1, 1, 0.5)),
+        ('real', lambda v: c.certified_orbit_new_phase_exact(1, v, 1, 0.5)),
+        ('real', lambda v: c.certified_orbit_new_phase_exact(1, 1, v, 0.5)),
+        ('real', lambda v: c.certified_orbit_new_phase_exact(1, 1, 1, v)),
+        ('enum', lambda v: c.certified_orbit_new_phase_exact(1, 1, 1, 0.5,
+                                                             request=v))],
+    'certified_orbit_state': [
+        ('orbit', lambda v: c.certified_orbit_state(v))],
+    'certified_orbit_fate': [
+        ('int', lambda v: c.certified_orbit_fate(ORBIT, v)),
+        ('int', lambda v: c.certified_orbit_fate(ORBIT, 0, reversal_cap=v)),
+        ('orbit', lambda v: c.certified_orbit_fate(v, 0))],
     'certified_orbit_cap': [('int', lambda v: c.certified_orbit_cap(ORBIT,
                                                                     v)),
                             ('orbit', lambda v: c.certified_orbit_cap(v,
