@@ -1480,13 +1480,14 @@ int chaplygin_certified_orbit_free (chaplygin_certified_orbit *orbit);
    of (4.1) and the heading derivatives of the Jacobian (3.9), which are
    irrational wherever they are not formed exactly, by Ziv's strategy (Arb balls at 64 bits, then twice that, until the ball's
    rounding is decided; CHAPLYGIN_ECAP past 65536 bits, never met).
-   @xref{Certified method}.  They exist only in a build with Arb
-   (chaplygin_method_available).  Each shares the domain of its
+   @xref{Certified method}.  In a build without Arb each of them returns
+   CHAPLYGIN_EINVAL (chaplygin_method_available tells).  Each shares the domain of its
    uncertified counterpart, decided exactly, with no range limit on the
    inputs (a result beyond the doubles is CHAPLYGIN_ERANGE; one below them
    rounds to a subnormal or zero).  Common errors: CHAPLYGIN_EINVAL (a null
    pointer, or @var{dir} not $+1$ or $-1$), CHAPLYGIN_EDOM (a non-finite
-   numerator or denominator, a zero denominator, $Delta <= 0$).
+   numerator or denominator, a zero denominator, $Delta <= 0$).  Also
+   CHAPLYGIN_EINVAL: a build without Arb.
  */
 
 /** (3.3), certified: chaplygin_discrete_energy's
