@@ -403,3 +403,12 @@ chaplygin_certified_c3 (const double L0[2],
   (void) C3;
   return CHAPLYGIN_EINVAL;
 }
+
+int
+chaplygin_certified_orbit_omega (const chaplygin_certified_orbit *orbit,
+                                 double *Omega)
+{
+  (void) orbit;
+  (void) Omega;
+  return CHAPLYGIN_EINVAL;
+}

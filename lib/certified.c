@@ -713,6 +713,25 @@ chaplygin_certified_orbit_collisions (const chaplygin_certified_orbit *orbit,
 }
 
 int
+chaplygin_certified_orbit_omega (const chaplygin_certified_orbit *orbit,
+                                 double *Omega)
+{
+  if (!orbit || !Omega)
+    return CHAPLYGIN_EINVAL;
+  /* Omega = H/(1 + l^2) at the peg's end: D = 0 for dir = +1, Delta for
+     -1 (3.4), exactly, rounded once */
+  fmpq_t a;
+  fmpq_init (a);
+  const fmpq *l = orbit->l[orbit->dir > 0 ? 0 : 1];
+  fmpq_mul (a, l, l);
+  fmpq_add_ui (a, a, 1);
+  fmpq_div (a, orbit->H, a);
+  const int status = chp_cert_round_fmpq (a, Omega);
+  fmpq_clear (a);
+  return status;
+}
+
+int
 chaplygin_certified_orbit_free (chaplygin_certified_orbit *o)
 {
   if (!o)

@@ -1460,6 +1460,19 @@ int chaplygin_certified_orbit_state (const chaplygin_certified_orbit *orbit,
 int chaplygin_certified_orbit_collisions (const chaplygin_certified_orbit *orbit,
                                           unsigned long *n);
 
+/** Set `*@Omega` to the angular rate of @orbit's state after its last
+   collision (its start before the first),
+     Omega = H/(1 + l^2),   l = L0 (dir = +1), L0 + Delta (dir = -1),
+   @noindent
+   (3.4) at the peg, the double nearest to the exact value: with the state's
+   `V`, the phase form of (3.5).
+
+   Errors: CHAPLYGIN_EINVAL (a null pointer, a build without Arb),
+   CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_orbit_omega (const chaplygin_certified_orbit *orbit,
+                                     double *Omega);
+
 /** Release @orbit (null is allowed) and everything it holds.  Always
    CHAPLYGIN_SUCCESS.
  */

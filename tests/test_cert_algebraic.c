@@ -1426,7 +1426,8 @@ END_TEST
 
 /* chaplygin_certified_orbit_new_phase_exact against new_exact where (3.3),
    (3.4) give E and H that are doubles (dyadic inputs), and against
-   the exact E' of the phase form where they are not. */
+   the exact E', H' and Omega+ of the phase form where they are not
+   (chaplygin_certified_orbit_omega). */
 START_TEST (certified_orbit_phase)
 {
   const double peg[2] = { 0.0, 0.0 };
@@ -1481,8 +1482,17 @@ START_TEST (certified_orbit_phase)
                                                      0.0, peg, 0, &o1));
   chaplygin_discrete_state s;
   chaplygin_discrete_event ev;
+  double w0, w1;
+  ck_assert_ok (chaplygin_certified_orbit_omega (o1, &w0));
   ck_assert_ok (chaplygin_certified_orbit_step (o1, &s, &ev, NULL));
+  ck_assert_ok (chaplygin_certified_orbit_omega (o1, &w1));
   chaplygin_certified_orbit_free (o1);
+  ck_assert_status (chaplygin_certified_orbit_omega (NULL, &w1),
+                    CHAPLYGIN_EINVAL);
+  /* Omega at the start, 1/7, and after the collision, H+/(1 + (4/3)^2)
+     = (65/126)(9/25) = 13/70 (the phase form's Omega+) */
+  ck_assert_same (w0, 1.0 / 7.0);
+  ck_assert_same (w1, 13.0 / 70.0);
   ck_assert_int_eq (ev.reversal, 0);
   ck_assert_int_eq (s.dir, -1);
   /* V- = V exactly ... no: V^2 at l = 1/3: 2E - H^2/(10/9); Omega- =

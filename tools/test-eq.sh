@@ -29,7 +29,7 @@ refs=$top_srcdir/tests/ref/eq.tsv
 tab=$(printf '\t')
 
 . "$top_srcdir/tools/tap-lib.sh"
-tap_start test-eq 40
+tap_start test-eq 41
 
 # The registry as doc/concordance.tsv's rows (label, functions, tests,
 # verification, errata, printed_function, eq.example), with its header.
@@ -233,7 +233,7 @@ expect_usage "E, H and V, Omega together" "give either E, H or V, Omega, not bot
 expect_usage "input outside the domain" "outside the domain" eq 3.10 L0=1 Delta=-1 dir=1
 expect_usage "a direction must be +1 or -1" "not a direction" eq 3.10 L0=1 Delta=1 dir=0
 
-# 29-39: --certified (exact inputs, correctly rounded values).  The
+# 29-40: --certified (exact inputs, correctly rounded values).  The
 # references: awk's division of two integers that are doubles (IEEE
 # division rounds correctly) for the rational values; the closed form for
 # the heading and time, within its few ulps, at inputs that are doubles.
@@ -269,6 +269,16 @@ if test "$have_cert" -eq 1; then
     && test "$(csv_get reversal value)" = 0 \
     && test "$(csv_get dtheta method)" = certified && ok=0
   result "$ok" "--certified (B.3) from V, Omega given exactly: C1, C2, E', H' are the rationals' nearest doubles"
+
+  # (3.5) from the same state: Omega' = H'/(1 + L0^2) = 21/50, theta' the
+  # step's dtheta, the same certified value as (B.3)'s
+  dth=$(csv_get dtheta value)
+  run eq --certified 3.5 L0=1 Delta=1/3 V=1 Omega=1/2 --csv
+  ok=1
+  test "$rc" -eq 0 && exact_is "$(csv_get Omega_next value)" 21 50 \
+    && test "$(csv_get D_next value)" = 0 \
+    && test "$(csv_get theta_next value)" = "$dth" && ok=0
+  result "$ok" "--certified (3.5): Omega' = 21/50's nearest double, theta' = (B.3)'s dtheta ($dth)"
 
   # (B.4) from E = 1, H = 11/5, dir = -1: reverses; E' = 61411/62500,
   # H' = 231/125; Dc = sqrt(1.42) - 1
@@ -324,7 +334,7 @@ if test "$have_cert" -eq 1; then
 
 else
   i=0
-  while test "$i" -lt 10; do
+  while test "$i" -lt 11; do
     count=$((count + 1)); i=$((i + 1))
     echo "ok $count - --certified # SKIP the library has no certified method (built without Arb)"
   done
@@ -357,14 +367,14 @@ while IFS="$tab" read -r label args; do
     bad="$bad $label(not refused)"
   fi
 done < "$tmp/calls"
-ok=1; test -z "$bad" && test "$n_cert" -ge 18 && ok=0
+ok=1; test -z "$bad" && test "$n_cert" -ge 19 && ok=0
 if test "$have_cert" -eq 1; then
   result "$ok" "--certified: the $n_cert certified labels evaluate at their examples, every other label is refused${bad:+ (failed:$bad)}"
 else
   result "$ok" "--certified without the certified method: every label is refused${bad:+ (failed:$bad)}"
 fi
 
-# 40: no crash: every input of every label set to hostile values
+# 41: no crash: every input of every label set to hostile values
 bad=""
 for label in $(tail -n +2 "$tsv" | cut -f1); do
   args=$(awk -F'\t' -v l="$label" '$1 == l { print $7 }' "$tsv")

@@ -301,6 +301,83 @@ eq_cert_B_1 (eq_ctx *c)
   return 0;
 }
 
+/* The exact state just after a collision: (E, H, dir) or (V, Omega, [dir]
+   the sign of V), into *EH (1: E, H in A, B; 0: V, Omega) and *DIR. */
+static int
+post_collision_in (eq_ctx *c, int *eh, double a[2], double b[2], int *dir)
+{
+  *eh = eq_choose (c, "E", "H", "V", "Omega");
+  if (*eh < 0)
+    return -1;
+  if (*eh)
+    return eq_ratio_in (c, "E", a) || eq_ratio_in (c, "H", b)
+      || eq_dir_in (c, "dir", dir);
+  if (eq_ratio_in (c, "V", a) || eq_ratio_in (c, "Omega", b))
+    return -1;
+  if (a[0] == 0.0 && !eq_given (c, "dir"))
+    return eq_fail_usage (c, "V = 0: give dir (+1 or -1)");
+  *dir = a[0] == 0.0 ? 0 : sign_of (a);
+  if (eq_given (c, "dir"))
+    {
+      int d;
+      if (eq_dir_in (c, "dir", &d))
+        return -1;
+      if (*dir != 0 && d != *dir)
+        return eq_fail_usage (c, "V and dir disagree: dir has the sign "
+                              "of the velocity along the slot");
+      *dir = d;
+    }
+  return 0;
+}
+
+/* A certified orbit from that state (REQUEST), into *O. */
+static int
+orbit_in (eq_ctx *c, int eh, const double L0[2], const double Delta[2],
+          const double a[2], const double b[2], int dir, double theta,
+          double tau, unsigned request, chaplygin_certified_orbit **o)
+{
+  const double peg[2] = { 0.0, 0.0 };
+  if (eh)
+    return eq_lib (c, "chaplygin_certified_orbit_new_exact",
+                   chaplygin_certified_orbit_new_exact (L0, Delta, dir, a, b,
+                                                        theta, tau, peg,
+                                                        request, o));
+  return eq_lib (c, "chaplygin_certified_orbit_new_phase_exact",
+                 chaplygin_certified_orbit_new_phase_exact (L0, Delta, a, b,
+                                                            theta, tau, peg,
+                                                            request, o));
+}
+
+int
+eq_cert_3_5 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_orbit_step";
+  static const char fn_w[] = "chaplygin_certified_orbit_omega";
+  double L0[2], Delta[2], a[2], b[2], theta, Omega;
+  int eh, dir;
+  chaplygin_certified_orbit *o = NULL;
+  chaplygin_discrete_state out;
+  chaplygin_discrete_event ev;
+
+  if (no_method (c) || slot_in (c, L0, Delta)
+      || post_collision_in (c, &eh, a, b, &dir)
+      || eq_exact_opt (c, "theta", 0.0, &theta)
+      || orbit_in (c, eh, L0, Delta, a, b, dir, theta, 0.0,
+                   CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU, &o))
+    return -1;
+  int status = chaplygin_certified_orbit_step (o, &out, &ev, NULL);
+  const int ws = status ? status : chaplygin_certified_orbit_omega (o, &Omega);
+  chaplygin_certified_orbit_free (o);
+  if (eq_lib (c, fn, status) || eq_lib (c, fn_w, ws))
+    return -1;
+  put (c, "D_next", ev.Dplus, fn);
+  put (c, "V_next", out.V, fn);
+  put (c, "theta_next", out.theta, fn);
+  put (c, "Omega_next", Omega, fn_w);
+  put (c, "dtau", ev.dtau, fn);
+  return 0;
+}
+
 /* (B.3) (REVERSAL = 0) and (B.4) (REVERSAL = 1): the coefficients of the
    label's case and one certified step of the return map from the exact
    state, (E, H, dir) or (V, Omega) just after the collision. */
@@ -309,39 +386,14 @@ step_case (eq_ctx *c, int reversal)
 {
   static const char fn_c[] = "chaplygin_certified_coefficients";
   static const char fn[] = "chaplygin_certified_orbit_step";
-  const double peg[2] = { 0.0, 0.0 };
   const unsigned request = CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU;
   double L0[2], Delta[2], a[2], b[2], theta, tau, C1, C2;
-  int dir;
+  int dir, eh;
   chaplygin_certified_orbit *o = NULL;
 
-  int eh = eq_choose (c, "E", "H", "V", "Omega");
-  if (eh < 0 || no_method (c) || slot_in (c, L0, Delta))
+  if (no_method (c) || slot_in (c, L0, Delta)
+      || post_collision_in (c, &eh, a, b, &dir))
     return -1;
-  if (eh)
-    {
-      if (eq_ratio_in (c, "E", a) || eq_ratio_in (c, "H", b)
-          || eq_dir_in (c, "dir", &dir))
-        return -1;
-    }
-  else
-    {
-      if (eq_ratio_in (c, "V", a) || eq_ratio_in (c, "Omega", b))
-        return -1;
-      if (a[0] == 0.0 && !eq_given (c, "dir"))
-        return eq_fail_usage (c, "V = 0: give dir (+1 or -1)");
-      dir = a[0] == 0.0 ? 0 : sign_of (a);
-      if (eq_given (c, "dir"))
-        {
-          int d;
-          if (eq_dir_in (c, "dir", &d))
-            return -1;
-          if (dir != 0 && d != dir)
-            return eq_fail_usage (c, "V and dir disagree: dir has the sign "
-                                  "of the velocity along the slot");
-          dir = d;
-        }
-    }
   if (eq_exact_opt (c, "theta", 0.0, &theta)
       || eq_exact_opt (c, "tau", 0.0, &tau))
     return -1;
@@ -350,19 +402,7 @@ step_case (eq_ctx *c, int reversal)
   if (eq_lib (c, fn_c, chaplygin_certified_coefficients (L0, Delta, Dplus,
                                                          reversal, &C1, &C2)))
     return -1;
-  if (eh)
-    {
-      if (eq_lib (c, "chaplygin_certified_orbit_new_exact",
-                  chaplygin_certified_orbit_new_exact (L0, Delta, dir, a, b,
-                                                       theta, tau, peg,
-                                                       request, &o)))
-        return -1;
-    }
-  else if (eq_lib (c, "chaplygin_certified_orbit_new_phase_exact",
-                   chaplygin_certified_orbit_new_phase_exact (L0, Delta, a,
-                                                              b, theta, tau,
-                                                              peg, request,
-                                                              &o)))
+  if (orbit_in (c, eh, L0, Delta, a, b, dir, theta, tau, request, &o))
     return -1;
   chaplygin_discrete_state out;
   chaplygin_discrete_event ev;

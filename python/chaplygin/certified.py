@@ -22,6 +22,8 @@ model's exact value (chaplygin_certified_orbit_*, "Certified orbits" in
                     (chaplygin_certified_orbit_step);
   orbit.state()     the current state, rounded: Result(out, bounds)
                     (chaplygin_certified_orbit_state);
+  orbit.omega()     Omega = H/(1 + l^2) at its peg, rounded
+                    (chaplygin_certified_orbit_omega);
   orbit.fate(max_collisions, reversal_cap=0)
                     Section 3.1.3's fate decided on the exact orbit, which
                     it advances (chaplygin_certified_orbit_fate);
@@ -66,6 +68,7 @@ __all__ = ['CertifiedOrbit', 'certified_orbit_new',
            'certified_orbit_new_phase_exact',
            'certified_orbit_cap', 'certified_orbit_step',
            'certified_orbit_state', 'certified_orbit_fate',
+           'certified_orbit_omega',
            'certified_orbit_collisions', 'certified_orbit_free',
            'method_available']
 
@@ -405,6 +408,23 @@ class CertifiedOrbit:
         return _core._nt(('fate', 'reversal_at'))(
             fate, np.array(_ffi.unpack(at, k), dtype=_ULONG))
 
+    def omega(self):
+        """orbit.omega()
+
+        The angular rate Omega = H/(1 + l^2) at the peg of the orbit's
+        current state, the double nearest to the exact value
+        (chaplygin_certified_orbit_omega).
+
+        C: int chaplygin_certified_orbit_omega(const
+        chaplygin_certified_orbit *orbit, double *Omega)
+        """
+        w = _ffi.new('double *')
+        with self._lock:
+            rc = _lib.chaplygin_certified_orbit_omega(self._p, w)
+        if rc:
+            self._failed(rc, 'chaplygin_certified_orbit_omega')
+        return float(w[0])
+
     def cap(self, max_bits):
         """orbit.cap(max_bits)
 
@@ -605,6 +625,17 @@ def certified_orbit_new_phase_exact(L0, Delta, V, Omega, theta=0.0, tau=0.0,
     """
     return CertifiedOrbit.phase_exact(L0, Delta, V, Omega, theta, tau, peg,
                                       request)
+
+
+def certified_orbit_omega(orbit):
+    """certified_orbit_omega(orbit)
+
+    orbit.omega().
+
+    C: int chaplygin_certified_orbit_omega(const chaplygin_certified_orbit
+    *orbit, double *Omega)
+    """
+    return _orbit(orbit).omega()
 
 
 def certified_orbit_state(orbit, *, return_bounds=True):

@@ -716,5 +716,7 @@ def test_phase_exact_start():
     st, b = o.state()
     check_rounded(st.E, F(9, 100) / 2 + n0 * F(16, 25) / 2, b.E, 'E0')
     check_rounded(st.H, n0 * F(4, 5), b.H, 'H0')
+    # Omega = H/(1 + L0^2) at the start: 4/5 exactly rounded
+    assert o.omega() == float(F(4, 5))
     o.step()
     assert pickle.loads(pickle.dumps(o)) == o

@@ -144,6 +144,9 @@ HAND = {
         lambda: c.certified_orbit_state(stepped(exact_orbit(), 2)),
         lambda: c.certified_orbit_state(exact_orbit(), return_bounds=False),
         lambda: c.certified_orbit_state(closed(exact_orbit()))],
+    'certified_orbit_omega': [
+        lambda: c.certified_orbit_omega(stepped(exact_orbit(), 1)),
+        lambda: c.certified_orbit_omega(closed(exact_orbit()))],
     'certified_orbit_fate': [
         lambda: c.certified_orbit_fate(exact_orbit(), 100),
         lambda: c.certified_orbit_fate(c.certified_orbit_new_phase_exact(

@@ -114,6 +114,8 @@ HAND = {
         ('real', lambda v: c.certified_orbit_new_phase_exact(1, 1, 1, v)),
         ('enum', lambda v: c.certified_orbit_new_phase_exact(1, 1, 1, 0.5,
                                                              request=v))],
+    'certified_orbit_omega': [
+        ('orbit', lambda v: c.certified_orbit_omega(v))],
     'certified_orbit_state': [
         ('orbit', lambda v: c.certified_orbit_state(v))],
     'certified_orbit_fate': [
