@@ -445,12 +445,22 @@ chaplygin_discrete_xi4_taylor (double L0, int dir, double c[3])
   if (!isfinite (L0))
     return CHAPLYGIN_EDOM;
   /* with f = L0/a and 1/a = f/L0 (no overflow for large L0):
-     dir +1:  c1 = 1/(2a) - 3/(2a^2),  c2 = f (7/a - 1)/(3a);
-     dir -1:  c1 = f^2/2,              c2 = -f^3/3 */
+     dir +1:  c1 = (1 - 3/a)/(2a),     c2 = f (7/a - 1)/(3a);
+     dir -1:  c1 = f^2/2,              c2 = -f^3/3.
+     1 - 3/a = (L0^2 - 2)/a and 7/a - 1 = (6 - L0^2)/a vanish at L0^2 = 2
+     and 6: formed from L0^2 - 2 and 6 - L0^2 by one fma each, c1 and c2
+     keep their relative accuracy there (the differences cancelled: 67 ulps
+     in c2 at L0 = 2.449..., tests/test_cert_algebraic.c); beyond 2^500,
+     where L0^2 would overflow, 3/a and 7/a are negligible. */
   double f = chp_L_over_one_plus_sq (L0);
   double inva = L0 != 0.0 ? f / L0 : 1.0;
   double r0 = -f, r1, r2;
-  if (dir > 0)
+  if (dir > 0 && fabs (L0) <= 0x1p500)
+    {
+      r1 = 0.5 * inva * (fma (L0, L0, -2.0) * inva);
+      r2 = f * inva * (fma (-L0, L0, 6.0) * inva) / 3.0;
+    }
+  else if (dir > 0)
     {
       r1 = 0.5 * inva * (1.0 - 3.0 * inva);
       r2 = f * inva * (7.0 * inva - 1.0) / 3.0;
