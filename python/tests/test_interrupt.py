@@ -24,7 +24,11 @@ from conftest import child_env
 
 # Each call runs for minutes (or forever) unless interrupted.
 CHILD = textwrap.dedent('''
+    import signal
     import sys
+    # a child started from a background job inherits SIGINT ignored (POSIX:
+    # asynchronous lists), and Python then installs no handler: restore it
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     import numpy as np
     import chaplygin as c
     from chaplygin import _core, discrete as d
