@@ -1087,6 +1087,34 @@ chaplygin_certified_orbit_state (const chaplygin_certified_orbit *o,
 
 /* ---- fates ------------------------------------------------------------ */
 
+/* After collisions made without rounding (a fate's): raise O's precision
+   (replaying it) until the balls it follows decide their roundings, as
+   chaplygin_certified_orbit_state expects, or the cap is reached (state
+   then says ECAP). */
+static void
+orbit_settle (chaplygin_certified_orbit *o)
+{
+  for (;;)
+    {
+      double x;
+      int rc = ROUND_OK;
+      if (o->request & CHAPLYGIN_WANT_THETA)
+        take (o->theta, &x, NULL, &rc);
+      if ((o->request & CHAPLYGIN_WANT_TAU) && !o->tau_exact)
+        take (o->tau, &x, NULL, &rc);
+      if (o->request & CHAPLYGIN_WANT_PEG)
+        {
+          take (o->peg[0], &x, NULL, &rc);
+          take (o->peg[1], &x, NULL, &rc);
+        }
+      if (rc != ROUND_UNDECIDED || (unsigned long) o->prec * 2 > o->cap)
+        return;
+      orbit_replay (o, o->prec * 2);
+    }
+}
+
+
+
 /* Whether the fate of O's current state is certain (Section 3.1.3):
    returns the kind (FORWARD, BACKWARD, SPIN) with the exact (B.10) energy in
    EF for a straight-line fate, or UNDECIDED. */
@@ -1179,6 +1207,8 @@ chaplygin_certified_orbit_fate (chaplygin_certified_orbit *o,
           last = n;
         }
     }
+  if (n > 0)
+    orbit_settle (o);
   chaplygin_fate r;
   r.kind = kind;
   r.collisions = n;

@@ -995,6 +995,28 @@ START_TEST (fates)
     }
   /* both straight-line fates occur on this line */
   ck_assert (kinds[0] > 10 && kinds[2] > 10);
+  /* an orbit that follows heading, time and peg: after its fate, its state
+     is the one stepping gives (the same exact values, rounded) */
+  {
+    const double q[4] = { 0.0, 0.05, 0.0, 0.8 }, peg0[2] = { 0, 0 };
+    chaplygin_certified_orbit *oa, *ob;
+    chaplygin_discrete_state sa, sb;
+    chaplygin_fate fa;
+    ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg0, 7, &oa)
+               == 0);
+    ck_assert (chaplygin_certified_orbit_new_phase (&sys, q, 0, peg0, 7, &ob)
+               == 0);
+    ck_assert (chaplygin_certified_orbit_fate (oa, 1000, NULL, 0, &fa) == 0);
+    ck_assert (fa.collisions > 5);
+    for (unsigned long k = 0; k < fa.collisions; k++)
+      ck_assert (chaplygin_certified_orbit_step (ob, &sb, NULL, NULL) == 0);
+    ck_assert (chaplygin_certified_orbit_state (oa, &sa, NULL) == 0);
+    ck_assert (sa.E == sb.E && sa.H == sb.H && sa.theta == sb.theta
+               && sa.tau == sb.tau && sa.peg[0] == sb.peg[0]
+               && sa.peg[1] == sb.peg[1] && sa.dir == sb.dir);
+    chaplygin_certified_orbit_free (oa);
+    chaplygin_certified_orbit_free (ob);
+  }
   /* a slot ahead of the mass centre (L0 = 3/10, Delta = 4/5: |C2| >= 1
      backwards, so a backward motion is never certain: every start ends
      forward, the backward ones after a reversal): the same decisions as
