@@ -998,7 +998,7 @@ START_TEST (fates)
   /* an orbit that follows heading, time and peg: after its fate, its state
      is the one stepping gives (the same exact values, rounded) */
   {
-    const double q[4] = { 0.0, 0.05, 0.0, 0.8 }, peg0[2] = { 0, 0 };
+    const double q[4] = { 0.0, 0.002, 0.0, 0.8 }, peg0[2] = { 0, 0 };
     chaplygin_certified_orbit *oa, *ob;
     chaplygin_discrete_state sa, sb;
     chaplygin_fate fa;
