@@ -6,6 +6,8 @@ them.
     r['sigma4']               # the same
     r.outputs                 # {'sigma4': 1.1666666666666665}
     r.functions               # {'sigma4': 'chaplygin_discrete_sigma4'}
+    chaplygin.eq('3.10', L0=1, Delta='1/3', dir=-1, certified=True).sigma4
+                              # 1.1666666666666667, the nearest to 7/6
     chaplygin.eq('2.1', L=1, V=1, Omega=0.5).printed   # the printed forms
     chaplygin.labels()        # every label, in the paper's order
 
@@ -162,24 +164,34 @@ def _real(x, e):
         return math.copysign(math.inf, x), q
 
 
-def eq(label, **inputs):
-    """eq(label, **inputs) -> Equation
+def eq(label, *, certified=False, **inputs):
+    """eq(label, *, certified=False, **inputs) -> Equation
 
     Evaluate the paper's equation LABEL ('3.10', '(A.2)', 'b.16') at the
     keyword INPUTS, as `chaplygin eq LABEL NAME=VALUE ...` does (see the
-    module's documentation)."""
+    module's documentation).  certified=True is `chaplygin eq --certified`
+    (chaplygin_eq_eval_with, CHAPLYGIN_EQ_CERTIFIED): every input exact (a
+    Fraction or 'p/q' that rational, a float the double it is), every
+    output the double nearest to the exact value; a label without a
+    certified evaluator raises EquationError."""
     if not isinstance(label, str):
         raise TypeError('eq: the label is a string such as "3.10", not %s'
                         % type(label).__name__)
+    if not isinstance(certified, bool):
+        raise TypeError('eq: certified is True or False, not %s'
+                        % type(certified).__name__)
     names = [_ffi.new('char[]', k.encode()) for k in inputs]
     values = [_ffi.new('char[]', _text(k, v).encode())
               for k, v in inputs.items()]
     res = _ffi.new('chaplygin_eq_result *')
-    rc = _lib.chaplygin_eq_eval(label.encode('utf-8', 'replace'),
-                                len(names),
-                                _ffi.new('char *[]', names or [_ffi.NULL]),
-                                _ffi.new('char *[]', values or [_ffi.NULL]),
-                                res)
+    rc = _lib.chaplygin_eq_eval_with(label.encode('utf-8', 'replace'),
+                                     _lib.CHAPLYGIN_EQ_CERTIFIED if certified
+                                     else 0, len(names),
+                                     _ffi.new('char *[]',
+                                              names or [_ffi.NULL]),
+                                     _ffi.new('char *[]',
+                                              values or [_ffi.NULL]),
+                                     res)
     msg = _ffi.string(res.message).decode('utf-8', 'replace')
     if rc == _ENOMEM:
         raise MemoryError('eq: out of memory')

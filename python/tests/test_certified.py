@@ -720,3 +720,21 @@ def test_phase_exact_start():
     assert o.omega() == float(F(4, 5))
     o.step()
     assert pickle.loads(pickle.dumps(o)) == o
+
+
+@need_arb
+def test_eq_certified():
+    """chaplygin.eq(..., certified=True) is `chaplygin eq --certified`:
+    sigma4 = 7/6 exactly at L0 = 1, Delta = 1/3 (a Fraction or 'p/q'),
+    whose nearest double is 1.1666666666666667 (the closed form's
+    1.1666666666666665 is not); the certified function is named; a label
+    without a certified evaluator, and a non-bool flag, are refused."""
+    for Delta in (F(1, 3), '1/3'):
+        r = c.eq('3.10', L0=1, Delta=Delta, dir=-1, certified=True)
+        assert r.sigma4 == float(F(7, 6)) == 1.1666666666666667
+        assert r.functions['sigma4'] == 'chaplygin_certified_sigma4'
+    assert c.eq('3.10', L0=1, Delta='1/3', dir=-1).sigma4 != r.sigma4
+    with pytest.raises(c.EquationError, match='no certified evaluator'):
+        c.eq('2.1', L=1, V=1, Omega=0.5, certified=True)
+    with pytest.raises(TypeError):
+        c.eq('3.10', L0=1, Delta='1/3', dir=-1, certified=1)
