@@ -756,25 +756,6 @@ make_diag_rows (row_t *rows, int n, bench *b)
 /* Errors and timing                                                   */
 /* ------------------------------------------------------------------ */
 
-/* The distance in ulps between two finite doubles (the number of doubles
-   from one to the other, +0 and -0 the same), or infinity. */
-static double
-ulps_between (double a, double b)
-{
-  if (a == b)
-    return 0.0;
-  if (!isfinite (a) || !isfinite (b))
-    return INFINITY;
-  long long ia, ib;
-  memcpy (&ia, &a, sizeof ia);
-  memcpy (&ib, &b, sizeof ib);
-  ia = ia < 0 ? -(ia & 0x7fffffffffffffffLL) : ia;
-  ib = ib < 0 ? -(ib & 0x7fffffffffffffffLL) : ib;
-  /* in integers: the bit patterns converted to double would round alike */
-  const __int128 d = (__int128) ia - ib;
-  return (double) (d < 0 ? -d : d);
-}
-
 /* Output X of quantity J (0 E', 1 H', 2 heading, 3 time increment)
    against the correctly rounded reference of F, into R's ulp figures. */
 static void

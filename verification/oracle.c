@@ -1892,26 +1892,6 @@ ball_nearest (const arb_t b, double *x)
   return a == c;
 }
 
-/* The distance in ulps between two finite doubles (the number of doubles
-   from one to the other; +0 and -0 are the same), or infinity. */
-static double
-ulps_between (double a, double b)
-{
-  if (a == b)
-    return 0.0;
-  if (!isfinite (a) || !isfinite (b))
-    return INFINITY;
-  long long ia, ib;
-  memcpy (&ia, &a, sizeof ia);
-  memcpy (&ib, &b, sizeof ib);
-  ia = ia < 0 ? -(ia & 0x7fffffffffffffffLL) : ia;
-  ib = ib < 0 ? -(ib & 0x7fffffffffffffffLL) : ib;
-  /* the difference in integers: converting each to double first would
-     round both to the same double (they are above 2^53) */
-  const __int128 d = (__int128) ia - ib;
-  return (double) (d < 0 ? -d : d);
-}
-
 /* One certified output LIB of quantity Q against the oracle's ball REF. */
 static void
 cert_cmp (int q, int set, double lib, const arb_t ref, const char *where)

@@ -6,6 +6,8 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <math.h>
 
 static int tap_n = 0, tap_failed = 0;
 
@@ -82,6 +84,28 @@ tap_done (void)
 {
   printf ("1..%d\n", tap_n);
   return tap_failed;
+}
+
+/* The distance in ulps between two finite doubles (the number of doubles
+   from one to the other; +0 and -0 are the same), or infinity: the
+   oracle's and make bench's instrument (the oracle checks it on known
+   cases). */
+static inline double
+ulps_between (double a, double b)
+{
+  if (a == b)
+    return 0.0;
+  if (!isfinite (a) || !isfinite (b))
+    return INFINITY;
+  long long ia, ib;
+  memcpy (&ia, &a, sizeof ia);
+  memcpy (&ib, &b, sizeof ib);
+  ia = ia < 0 ? -(ia & 0x7fffffffffffffffLL) : ia;
+  ib = ib < 0 ? -(ib & 0x7fffffffffffffffLL) : ib;
+  /* the difference in integers: converting each to double first would
+     round both to the same double (they are above 2^53) */
+  const __int128 d = (__int128) ia - ib;
+  return (double) (d < 0 ? -d : d);
 }
 
 #endif

@@ -766,11 +766,7 @@ step_case (eq_ctx *c, int reversal)
                     "chaplygin_printed_discrete_f3");
     }
   if (ev.reversal != reversal)
-    c->note = reversal
-      ? "this segment does not reverse: the step is (B.3)'s, and C1, C2 "
-      "above are (B.4)'s, for a reversing segment from the same end"
-      : "this segment reverses: the step is (B.4)'s, and C1, C2 above are "
-      "(B.3)'s, for a segment from the same end without reversal";
+    c->note = eq_step_note (reversal);
   return 0;
 }
 

@@ -296,6 +296,16 @@ eq_real_opt (eq_ctx *c, const char *name, double deflt, double *x)
   return 0;
 }
 
+const char *
+eq_step_note (int reversal)
+{
+  return reversal
+    ? "this segment does not reverse: the step is (B.3)'s, and C1, C2 "
+    "above are (B.4)'s, for a reversing segment from the same end"
+    : "this segment reverses: the step is (B.4)'s, and C1, C2 above are "
+    "(B.3)'s, for a segment from the same end without reversal";
+}
+
 /* The input NAME as read: "1/3" as 1/3, a double as %.17g. */
 static void
 show_ratio (eq_ctx *c, const char *name, const double r[2], const char *how)

@@ -128,4 +128,9 @@ void eq_printed_real (eq_ctx *c, const char *name, int status, double x,
 void eq_printed_int (eq_ctx *c, const char *name, int status, long n,
                      const char *erratum, const char *function);
 
+/* The note of (B.3) and (B.4) where the segment asked for with REVERSAL
+   (0: B.3, 1: B.4) turns out otherwise: which step was taken, and what C1
+   and C2 are; shared by the ordinary and the certified evaluators. */
+const char *eq_step_note (int reversal);
+
 #endif /* CHAPLYGIN_SCENE_EQ_H */
