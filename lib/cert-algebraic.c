@@ -4,8 +4,8 @@
    (3.9) of the return map.  Every input is an
    exact rational, the ratio of two doubles; every double returned is the
    one nearest (ties to even) to the exact value of the formula, every
-   integer returned the exact decision.  Uses cert-round.h and the public
-   types; built only with Arb.
+   integer returned the exact decision.  Uses cert-eval.h, cert-round.h
+   and the public types; built only with Arb.
 
    Method.
    - Rational values (all but three: the turning points of (B.5) and the
@@ -19,7 +19,7 @@
      rational T, by the signs of T and of R - T^2.
    - The turning points -L0 -+ sqrt(R), R = H^2/(2E) - 1: exact where R is
      the square of a rational, else irrational, and rounded by Ziv's loop
-     (ziv_round: the ball at 64 bits, then twice that, until
+     (chp_cert_ziv_round: the ball at 64 bits, then twice that, until
      chp_cert_round_arb decides; an irrational number is no double and no
      midpoint of two, so the loop ends).
    - xi4 = (|V*|/Delta) log(sigma4): 0 where sigma4 = 1 exactly; else
@@ -35,9 +35,10 @@
      by q = 1 - h^2 exactly; at q = 0 by the primitive of sqrt(1 + l^2)/|l|^3,
      -sqrt(1 + x^2)/(2 x^2) - asinh(1/x)/2 at x = |l|; by Ziv's loop (0
      exactly for df3/dE at H = 0).
-   - The loop stops at PREC_CAP bits with CHAPLYGIN_ECAP: a value that
-     close to a rounding boundary has not been met (nor can be, for the
-     values above, except through a cap too small for their size).  */
+   - The loop (cert-eval.c) stops at CHP_CERT_PREC_CAP bits with
+     CHAPLYGIN_ECAP: a value that close to a rounding boundary has not
+     been met (nor can be, for the values above, except through a cap too
+     small for their size).  */
 #include <config.h>
 
 #include <math.h>
@@ -52,66 +53,10 @@
 
 #include "chaplygin.h"
 #include "cert-leg.h"
+#include "cert-eval.h"
 #include "cert-round.h"
 
-/* Ziv's loop: the first working precision and the cap (bits). */
-enum { PREC_START = 64, PREC_CAP = 1 << 16 };
-
 /* ---- exact numbers ---------------------------------------------------- */
-
-/* The exact rationals of one call, cleared together. */
-enum { NQ = 12 };
-typedef struct
-{
-  fmpq_t q[NQ];
-} qset;
-
-static void
-qset_init (qset *s)
-{
-  for (int i = 0; i < NQ; i++)
-    fmpq_init (s->q[i]);
-}
-
-static void
-qset_clear (qset *s)
-{
-  for (int i = 0; i < NQ; i++)
-    fmpq_clear (s->q[i]);
-}
-
-/* *Q = R[0]/R[1]: CHAPLYGIN_SUCCESS, or CHAPLYGIN_EDOM (not finite, or
-   R[1] = 0). */
-static int
-in (fmpq_t q, const double r[2])
-{
-  return chp_cert_q_of_ratio (q, r) ? CHAPLYGIN_SUCCESS : CHAPLYGIN_EDOM;
-}
-
-/* T = 1 + A^2. */
-static void
-one_plus_sq (fmpq_t t, const fmpq_t a)
-{
-  fmpq_mul (t, a, a);
-  fmpq_add_ui (t, t, 1);
-}
-
-/* *X = Q rounded (CHAPLYGIN_SUCCESS or CHAPLYGIN_ERANGE). */
-static int
-out (const fmpq_t q, double *x)
-{
-  return chp_cert_round_fmpq (q, x);
-}
-
-/* The checks of the slot parameters shared by most functions: L0, Delta
-   exact, Delta > 0. */
-static int
-slot_in (fmpq_t L0, fmpq_t Delta, const double L0r[2], const double Deltar[2])
-{
-  if (in (L0, L0r) || in (Delta, Deltar) || fmpq_sgn (Delta) <= 0)
-    return CHAPLYGIN_EDOM;
-  return CHAPLYGIN_SUCCESS;
-}
 
 /* l at the ends of the slot: L[0] = L0, L[1] = L0 + Delta. */
 static void
@@ -119,95 +64,6 @@ ends (fmpq_t l0, fmpq_t l1, const fmpq_t L0, const fmpq_t Delta)
 {
   fmpq_set (l0, L0);
   fmpq_add (l1, L0, Delta);
-}
-
-/* ---- Ziv's loop ------------------------------------------------------- */
-
-/* A value as a ball at a working precision. */
-typedef void (*ball_fn) (arb_t r, const void *data, slong prec);
-
-/* *X = the double nearest to the value that F encloses, raising the
-   precision until its ball decides (CHAPLYGIN_SUCCESS), or CHAPLYGIN_ERANGE
-   (the ball lies beyond the rounding boundary of DBL_MAX), or
-   CHAPLYGIN_ECAP (not decided at PREC_CAP bits). */
-static int
-ziv_round (ball_fn f, const void *data, double *x)
-{
-  arb_t b;
-  arb_init (b);
-  int status = CHAPLYGIN_ECAP;
-  for (slong prec = PREC_START; prec <= PREC_CAP; prec *= 2)
-    {
-      f (b, data, prec);
-      const int r = chp_cert_round_ball (b, x);
-      if (r == CHP_CERT_ROUNDED)
-        status = CHAPLYGIN_SUCCESS;
-      else if (r == CHP_CERT_BEYOND)
-        status = CHAPLYGIN_ERANGE;
-      else
-        continue;
-      break;
-    }
-  arb_clear (b);
-  return status;
-}
-
-/* A + S sqrt(R) for rationals A, R >= 0 and S = +-1. */
-typedef struct
-{
-  const fmpq *a, *r;
-  int s;
-} sqrt_expr;
-
-static void
-sqrt_ball (arb_t b, const void *data, slong prec)
-{
-  const sqrt_expr *e = data;
-  arb_t t;
-  arb_init (t);
-  arb_set_fmpq (b, e->r, prec);
-  arb_sqrt (b, b, prec);
-  if (e->s < 0)
-    arb_neg (b, b);
-  arb_set_fmpq (t, e->a, prec);
-  arb_add (b, b, t, prec);
-  arb_clear (t);
-}
-
-/* *X = A + S sqrt(R) rounded: exactly where R is the square of a
-   rational, else by Ziv's loop. */
-static int
-round_sqrt_expr (const fmpq_t a, const fmpq_t r, int s, double *x)
-{
-  if (fmpz_is_square (fmpq_numref (r)) && fmpz_is_square (fmpq_denref (r)))
-    {
-      fmpq_t t;
-      fmpq_init (t);
-      fmpz_sqrt (fmpq_numref (t), fmpq_numref (r));
-      fmpz_sqrt (fmpq_denref (t), fmpq_denref (r));
-      if (s < 0)
-        fmpq_neg (t, t);
-      fmpq_add (t, t, a);
-      const int status = out (t, x);
-      fmpq_clear (t);
-      return status;
-    }
-  sqrt_expr e = { a, r, s };
-  return ziv_round (sqrt_ball, &e, x);
-}
-
-/* The sign of sqrt(R) - T (R >= 0), exactly. */
-static int
-cmp_sqrt (const fmpq_t r, const fmpq_t t)
-{
-  if (fmpq_sgn (t) < 0)
-    return 1;
-  fmpq_t t2;
-  fmpq_init (t2);
-  fmpq_mul (t2, t, t);
-  const int c = fmpq_cmp (r, t2);
-  fmpq_clear (t2);
-  return c;
 }
 
 /* ---- (3.3), (3.4) ----------------------------------------------------- */
@@ -219,23 +75,24 @@ chaplygin_certified_energy (const double L0[2], const double D[2],
 {
   if (!L0 || !D || !V || !Omega || !E)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *l = s.q[0], *v = s.q[1], *w = s.q[2], *t = s.q[3];
   int status = CHAPLYGIN_EDOM;
-  if (!in (l, L0) && !in (t, D) && !in (v, V) && !in (w, Omega))
+  if (!chp_cert_in (l, L0) && !chp_cert_in (t, D) && !chp_cert_in (v, V)
+      && !chp_cert_in (w, Omega))
     {
       /* E = [V^2 + (1 + l^2) Omega^2]/2 */
       fmpq_add (l, l, t);
-      one_plus_sq (t, l);
+      chp_cert_one_plus_sq (t, l);
       fmpq_mul (w, w, w);
       fmpq_mul (t, t, w);
       fmpq_mul (v, v, v);
       fmpq_add (t, t, v);
       fmpq_div_2exp (t, t, 1);
-      status = out (t, E);
+      status = chp_cert_round_fmpq (t, E);
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -245,19 +102,19 @@ chaplygin_certified_momentum (const double L0[2], const double D[2],
 {
   if (!L0 || !D || !Omega || !H)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *l = s.q[0], *w = s.q[1], *t = s.q[2];
   int status = CHAPLYGIN_EDOM;
-  if (!in (l, L0) && !in (t, D) && !in (w, Omega))
+  if (!chp_cert_in (l, L0) && !chp_cert_in (t, D) && !chp_cert_in (w, Omega))
     {
       /* H = (1 + l^2) Omega */
       fmpq_add (l, l, t);
-      one_plus_sq (t, l);
+      chp_cert_one_plus_sq (t, l);
       fmpq_mul (t, t, w);
-      status = out (t, H);
+      status = chp_cert_round_fmpq (t, H);
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -272,7 +129,7 @@ momentum_ratio (fmpq_t c, const fmpq_t L0, const fmpq_t Delta,
   fmpq_add (c, L0, Delta);
   fmpq_mul (c, c, L0);
   fmpq_add_ui (c, c, 1);
-  one_plus_sq (t, b);
+  chp_cert_one_plus_sq (t, b);
   fmpq_div (c, c, t);
 }
 
@@ -283,13 +140,14 @@ chaplygin_certified_collide (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !V || !Omega || !theta || !qplus)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *v = s.q[2], *w = s.q[3], *th = s.q[4];
   fmpq *Dp = s.q[5], *b = s.q[6], *c = s.q[7], *t = s.q[8];
   double r[4];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && (in (v, V) || in (w, Omega) || in (th, theta)))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status && (chp_cert_in (v, V) || chp_cert_in (w, Omega)
+                  || chp_cert_in (th, theta)))
     status = CHAPLYGIN_EDOM;
   if (!status && fmpq_is_zero (v))
     status = CHAPLYGIN_ESTATE;
@@ -306,18 +164,18 @@ chaplygin_certified_collide (const double L0[2], const double Delta[2],
       fmpq_add (b, qL, Dp);     /* b' */
       momentum_ratio (c, qL, qD, b, t);
       fmpq_mul (c, c, w);
-      status = out (Dp, &r[CHAPLYGIN_D]);
+      status = chp_cert_round_fmpq (Dp, &r[CHAPLYGIN_D]);
       if (!status)
-        status = out (v, &r[CHAPLYGIN_V]);
+        status = chp_cert_round_fmpq (v, &r[CHAPLYGIN_V]);
       if (!status)
-        status = out (th, &r[CHAPLYGIN_THETA]);
+        status = chp_cert_round_fmpq (th, &r[CHAPLYGIN_THETA]);
       if (!status)
-        status = out (c, &r[CHAPLYGIN_OMEGA]);
+        status = chp_cert_round_fmpq (c, &r[CHAPLYGIN_OMEGA]);
     }
   if (!status)
     for (int i = 0; i < 4; i++)
       qplus[i] = r[i];
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -329,15 +187,16 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !Dminus || !E || !theta || !H || !pplus)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *Dm = s.q[2], *e = s.q[3], *th = s.q[4];
   fmpq *h = s.q[5], *b = s.q[6], *bp = s.q[7], *t = s.q[8], *u = s.q[9];
   fmpq *Dp = s.q[10];
   double r[4];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && (in (Dm, Dminus) || in (e, E) || in (th, theta)
-                  || in (h, H) || fmpq_sgn (e) < 0))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status && (chp_cert_in (Dm, Dminus) || chp_cert_in (e, E)
+                  || chp_cert_in (th, theta)
+                  || chp_cert_in (h, H) || fmpq_sgn (e) < 0))
     status = CHAPLYGIN_EDOM;
   if (!status && !fmpq_is_zero (Dm) && !fmpq_equal (Dm, qD))
     status = CHAPLYGIN_ESTATE;
@@ -347,7 +206,7 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
       fmpq_sub (Dp, qD, Dm);
       fmpq_add (bp, qL, Dp);             /* the end it arrives at */
       /* (V-)^2 > 0: 2E (1 + b^2) - H^2 > 0 */
-      one_plus_sq (t, b);
+      chp_cert_one_plus_sq (t, b);
       fmpq_mul (t, t, e);
       fmpq_mul_2exp (t, t, 1);
       fmpq_mul (u, h, h);
@@ -357,9 +216,9 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
   if (!status)
     {
       /* E+ = E- - Delta^2 H^2/(2 (1 + b^2)^2 (1 + b'^2)) */
-      one_plus_sq (t, b);
+      chp_cert_one_plus_sq (t, b);
       fmpq_mul (t, t, t);
-      one_plus_sq (u, bp);
+      chp_cert_one_plus_sq (u, bp);
       fmpq_mul (t, t, u);
       fmpq_mul_2exp (t, t, 1);
       fmpq_mul (u, qD, h);
@@ -369,18 +228,18 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
       /* H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H- */
       momentum_ratio (u, qL, qD, b, t);
       fmpq_mul (h, h, u);
-      status = out (Dp, &r[CHAPLYGIN_D]);
+      status = chp_cert_round_fmpq (Dp, &r[CHAPLYGIN_D]);
       if (!status)
-        status = out (e, &r[CHAPLYGIN_E]);
+        status = chp_cert_round_fmpq (e, &r[CHAPLYGIN_E]);
       if (!status)
-        status = out (th, &r[CHAPLYGIN_THETA]);
+        status = chp_cert_round_fmpq (th, &r[CHAPLYGIN_THETA]);
       if (!status)
-        status = out (h, &r[CHAPLYGIN_H]);
+        status = chp_cert_round_fmpq (h, &r[CHAPLYGIN_H]);
     }
   if (!status)
     for (int i = 0; i < 4; i++)
       pplus[i] = r[i];
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -392,11 +251,11 @@ chaplygin_certified_spin_ratio (const double E[2], const double H[2],
 {
   if (!E || !H || !ratio)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *e = s.q[0], *h = s.q[1];
   int status = CHAPLYGIN_EDOM;
-  if (!in (e, E) && !in (h, H) && fmpq_sgn (e) >= 0)
+  if (!chp_cert_in (e, E) && !chp_cert_in (h, H) && fmpq_sgn (e) >= 0)
     {
       if (fmpq_is_zero (h))
         status = CHAPLYGIN_ERANGE;
@@ -405,10 +264,10 @@ chaplygin_certified_spin_ratio (const double E[2], const double H[2],
           fmpq_mul (h, h, h);
           fmpq_div (e, e, h);
           fmpq_mul_2exp (e, e, 1);
-          status = out (e, ratio);
+          status = chp_cert_round_fmpq (e, ratio);
         }
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -419,11 +278,12 @@ chaplygin_certified_spins (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !E || !H || !spins || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *e = s.q[2], *h = s.q[3], *l1 = s.q[4];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && (in (e, E) || in (h, H) || fmpq_sgn (e) <= 0))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status
+      && (chp_cert_in (e, E) || chp_cert_in (h, H) || fmpq_sgn (e) <= 0))
     status = CHAPLYGIN_EDOM;
   if (!status)
     {
@@ -438,7 +298,7 @@ chaplygin_certified_spins (const double L0[2], const double Delta[2],
         : fmpq_sgn (qL) <= 0 && fmpq_sgn (l1) > 0;
       *spins = fmpq_equal (e, h) && reaches;
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -462,16 +322,16 @@ chaplygin_certified_sigma4 (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !sigma4 || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *sg = s.q[2], *t = s.q[3];
-  int status = slot_in (qL, qD, L0, Delta);
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
   if (!status)
     {
       sigma4_q (sg, qL, qD, dir, t);
-      status = out (sg, sigma4);
+      status = chp_cert_round_fmpq (sg, sigma4);
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -481,10 +341,10 @@ chaplygin_certified_stable (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !stable || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *sg = s.q[2], *t = s.q[3];
-  int status = slot_in (qL, qD, L0, Delta);
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
   if (!status)
     {
       /* |sigma4| < 1, exactly */
@@ -493,7 +353,7 @@ chaplygin_certified_stable (const double L0[2], const double Delta[2],
       fmpq_one (t);
       *stable = fmpq_cmp (sg, t) < 0;
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -517,19 +377,19 @@ chaplygin_certified_ratio_lower_bound (const double L0[2],
 {
   if (!L0 || !Delta || !rmin || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *ls = s.q[2], *lf = s.q[3], *t = s.q[4];
-  int status = slot_in (qL, qD, L0, Delta);
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
   if (!status)
     {
       /* 1/(1 + l_s^2) */
       path_ends (ls, lf, qL, qD, dir);
-      one_plus_sq (t, ls);
+      chp_cert_one_plus_sq (t, ls);
       fmpq_inv (t, t);
-      status = out (t, rmin);
+      status = chp_cert_round_fmpq (t, rmin);
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -541,18 +401,18 @@ chaplygin_certified_reversal_range (const double L0[2],
   if (!L0 || !Delta || !rlo || !rhi || !nonempty
       || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *ls = s.q[2], *lf = s.q[3];
   fmpq *lo = s.q[4], *hi = s.q[5];
-  int status = slot_in (qL, qD, L0, Delta);
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
   double x, y;
   if (!status)
     {
       /* rlo = 1/(1 + l_s^2); toward l = 0 (dir l_s < 0): rhi = 1/(1 + m^2),
          m = 0 if the path reaches l = 0, else |l_f|; away: rhi = rlo */
       path_ends (ls, lf, qL, qD, dir);
-      one_plus_sq (lo, ls);
+      chp_cert_one_plus_sq (lo, ls);
       fmpq_inv (lo, lo);
       const int toward = dir * fmpq_sgn (ls) < 0;
       const int crosses = fmpq_sgn (ls) * fmpq_sgn (lf) <= 0;
@@ -562,12 +422,12 @@ chaplygin_certified_reversal_range (const double L0[2],
         fmpq_one (hi);
       else
         {
-          one_plus_sq (hi, lf);
+          chp_cert_one_plus_sq (hi, lf);
           fmpq_inv (hi, hi);
         }
-      status = out (lo, &x);
+      status = chp_cert_round_fmpq (lo, &x);
       if (!status)
-        status = out (hi, &y);
+        status = chp_cert_round_fmpq (hi, &y);
       if (!status)
         {
           *rlo = x;
@@ -575,7 +435,7 @@ chaplygin_certified_reversal_range (const double L0[2],
           *nonempty = toward;
         }
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -585,11 +445,11 @@ chaplygin_certified_c3 (const double L0[2], const double Delta[2], int dir,
 {
   if (!L0 || !Delta || !C3 || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *ls = s.q[2], *lf = s.q[3];
   fmpq *c = s.q[4], *t = s.q[5];
-  int status = slot_in (qL, qD, L0, Delta);
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
   if (!status)
     {
       /* dir Delta (2 L0 + Delta)/(1 + l_f^2) */
@@ -599,11 +459,11 @@ chaplygin_certified_c3 (const double L0[2], const double Delta[2], int dir,
       fmpq_mul (c, c, qD);
       if (dir < 0)
         fmpq_neg (c, c);
-      one_plus_sq (t, lf);
+      chp_cert_one_plus_sq (t, lf);
       fmpq_div (c, c, t);
-      status = out (c, C3);
+      status = chp_cert_round_fmpq (c, C3);
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -642,11 +502,11 @@ chaplygin_certified_xi4 (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !Vstar || !xi4)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *v = s.q[2], *sg = s.q[3], *t = s.q[4];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && in (v, Vstar))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status && chp_cert_in (v, Vstar))
     status = CHAPLYGIN_EDOM;
   if (!status && fmpq_is_zero (v))
     status = CHAPLYGIN_ESTATE;
@@ -669,10 +529,10 @@ chaplygin_certified_xi4 (const double L0[2], const double Delta[2],
           fmpq_abs (t, sg);
           fmpq_mul_2exp (t, t, 1);      /* 2 |U| */
           xi4_expr e = { sg, v, fmpq_cmp_ui (t, 1) < 0 };
-          status = ziv_round (xi4_ball, &e, xi4);
+          status = chp_cert_ziv_round (xi4_ball, &e, xi4);
         }
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -681,11 +541,11 @@ chaplygin_certified_xi4_taylor (const double L0[2], int dir, double c[3])
 {
   if (!L0 || !c || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *a = s.q[1], *l2 = s.q[2], *t = s.q[3];
   fmpq *c0 = s.q[4], *c1 = s.q[5], *c2 = s.q[6];
-  int status = in (qL, L0);
+  int status = chp_cert_in (qL, L0);
   double r[3];
   if (!status)
     {
@@ -717,16 +577,16 @@ chaplygin_certified_xi4_taylor (const double L0[2], int dir, double c[3])
         }
       fmpq_mul_ui (t, t, 3);
       fmpq_div (c2, c2, t);
-      status = out (c0, &r[0]);
+      status = chp_cert_round_fmpq (c0, &r[0]);
       if (!status)
-        status = out (c1, &r[1]);
+        status = chp_cert_round_fmpq (c1, &r[1]);
       if (!status)
-        status = out (c2, &r[2]);
+        status = chp_cert_round_fmpq (c2, &r[2]);
     }
   if (!status)
     for (int i = 0; i < 3; i++)
       c[i] = r[i];
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -739,21 +599,22 @@ chaplygin_certified_flow (const double L0[2], const double D0[2],
 {
   if (!L0 || !D0 || !V0 || !Omega0 || !D || !V2 || !Omega)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *d0 = s.q[1], *v0 = s.q[2], *w0 = s.q[3], *d = s.q[4];
   fmpq *a0 = s.q[5], *a = s.q[6], *t = s.q[7], *v2 = s.q[8], *w = s.q[9];
   int status = CHAPLYGIN_EDOM;
-  if (!in (qL, L0) && !in (d0, D0) && !in (v0, V0) && !in (w0, Omega0)
-      && !in (d, D))
+  if (!chp_cert_in (qL, L0) && !chp_cert_in (d0, D0) && !chp_cert_in (v0, V0)
+      && !chp_cert_in (w0, Omega0)
+      && !chp_cert_in (d, D))
     {
       /* a0 = 1 + (L0 + D0)^2, a = 1 + (L0 + D)^2;
          V^2 = V0^2 + (D - D0)(2 L0 + D + D0) a0 Omega0^2/a,
          Omega = Omega0 a0/a */
       fmpq_add (t, qL, d0);
-      one_plus_sq (a0, t);
+      chp_cert_one_plus_sq (a0, t);
       fmpq_add (t, qL, d);
-      one_plus_sq (a, t);
+      chp_cert_one_plus_sq (a, t);
       fmpq_mul (w, w0, a0);
       fmpq_div (w, w, a);
       fmpq_mul_2exp (v2, qL, 1);
@@ -770,9 +631,9 @@ chaplygin_certified_flow (const double L0[2], const double D0[2],
       else
         {
           double x, y;
-          status = out (v2, &x);
+          status = chp_cert_round_fmpq (v2, &x);
           if (!status)
-            status = out (w, &y);
+            status = chp_cert_round_fmpq (w, &y);
           if (!status)
             {
               *V2 = x;
@@ -780,7 +641,7 @@ chaplygin_certified_flow (const double L0[2], const double D0[2],
             }
         }
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -792,12 +653,12 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
   if (!L0 || !Delta || !Dplus || !C1 || !C2
       || (reversal != 0 && reversal != 1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *Dp = s.q[2], *Dm = s.q[3], *b = s.q[4];
   fmpq *bp = s.q[5], *c1 = s.q[6], *c2 = s.q[7], *t = s.q[8], *u = s.q[9];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && in (Dp, Dplus))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status && chp_cert_in (Dp, Dplus))
     status = CHAPLYGIN_EDOM;
   if (!status && !fmpq_is_zero (Dp) && !fmpq_equal (Dp, qD))
     status = CHAPLYGIN_ESTATE;
@@ -814,25 +675,25 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
       fmpq_add (bp, qL, qD);
       fmpq_sub (bp, bp, Dm);
       momentum_ratio (c2, qL, qD, b, t);
-      one_plus_sq (t, b);
+      chp_cert_one_plus_sq (t, b);
       fmpq_mul (t, t, t);
-      one_plus_sq (u, bp);
+      chp_cert_one_plus_sq (u, bp);
       fmpq_mul (t, t, u);
       fmpq_mul_2exp (t, t, 1);
       fmpq_mul (c1, qD, qD);
       fmpq_div (c1, c1, t);
       fmpq_neg (c1, c1);
       double x, y;
-      status = out (c1, &x);
+      status = chp_cert_round_fmpq (c1, &x);
       if (!status)
-        status = out (c2, &y);
+        status = chp_cert_round_fmpq (c2, &y);
       if (!status)
         {
           *C1 = x;
           *C2 = y;
         }
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -847,19 +708,19 @@ in_slot (const fmpq_t L0, const fmpq_t Delta, const fmpq_t r, int s)
   int lo, hi;
   if (s > 0)
     {
-      lo = cmp_sqrt (r, L0) >= 0;
+      lo = chp_cert_cmp_sqrt (r, L0) >= 0;
       fmpq_add (t, L0, Delta);
-      hi = cmp_sqrt (r, t) <= 0;
+      hi = chp_cert_cmp_sqrt (r, t) <= 0;
     }
   else
     {
       /* -sqrt(R) >= L0 iff sqrt(R) <= -L0; -sqrt(R) <= L0 + Delta iff
          sqrt(R) >= -(L0 + Delta) */
       fmpq_neg (t, L0);
-      lo = cmp_sqrt (r, t) <= 0;
+      lo = chp_cert_cmp_sqrt (r, t) <= 0;
       fmpq_add (t, L0, Delta);
       fmpq_neg (t, t);
-      hi = cmp_sqrt (r, t) >= 0;
+      hi = chp_cert_cmp_sqrt (r, t) >= 0;
     }
   fmpq_clear (t);
   return lo && hi;
@@ -873,12 +734,13 @@ chaplygin_certified_turning_points (const double L0[2],
 {
   if (!L0 || !Delta || !E || !H || !n_real || !Dc || !n_in_slot)
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *e = s.q[2], *h = s.q[3], *r = s.q[4];
   fmpq *m = s.q[5];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && (in (e, E) || in (h, H) || fmpq_sgn (e) < 0))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status
+      && (chp_cert_in (e, E) || chp_cert_in (h, H) || fmpq_sgn (e) < 0))
     status = CHAPLYGIN_EDOM;
   if (!status && fmpq_is_zero (e))
     status = CHAPLYGIN_ESTATE;
@@ -897,7 +759,7 @@ chaplygin_certified_turning_points (const double L0[2],
       for (int i = 0; i < n && !status; i++)
         {
           const int sg = n == 1 ? 1 : i == 0 ? -1 : 1;
-          status = round_sqrt_expr (m, r, sg, &d[i]);
+          status = chp_cert_round_sqrt_expr (m, r, sg, &d[i]);
           k += in_slot (qL, qD, r, sg);
         }
       if (!status)
@@ -908,7 +770,7 @@ chaplygin_certified_turning_points (const double L0[2],
           *n_in_slot = k;
         }
     }
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }
 
@@ -930,7 +792,7 @@ jac_boundary (arb_t b, const fmpq_t l, const fmpq_t q, slong prec)
   fmpq_t a, g;
   fmpq_init (a);
   fmpq_init (g);
-  one_plus_sq (a, l);
+  chp_cert_one_plus_sq (a, l);
   fmpq_mul (g, l, l);
   fmpq_add (g, g, q);
   fmpq_div (a, a, g);
@@ -1018,19 +880,20 @@ chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
 {
   if (!L0 || !Delta || !E || !H || !J || (dir != 1 && dir != -1))
     return CHAPLYGIN_EINVAL;
-  qset s;
-  qset_init (&s);
+  chp_cert_qset s;
+  chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *e = s.q[2], *h = s.q[3], *ls = s.q[4];
   fmpq *lf = s.q[5], *q = s.q[6], *t = s.q[7], *c1 = s.q[8], *c2 = s.q[9];
   fmpq *u = s.q[10];
-  int status = slot_in (qL, qD, L0, Delta);
-  if (!status && (in (e, E) || in (h, H) || fmpq_sgn (e) < 0))
+  int status = chp_cert_slot_in (qL, qD, L0, Delta);
+  if (!status
+      && (chp_cert_in (e, E) || chp_cert_in (h, H) || fmpq_sgn (e) < 0))
     status = CHAPLYGIN_EDOM;
   if (!status)
     {
       /* a valid start: 2E (1 + l_s^2) - H^2 > 0 */
       path_ends (ls, lf, qL, qD, dir);
-      one_plus_sq (t, ls);
+      chp_cert_one_plus_sq (t, ls);
       fmpq_mul (t, t, e);
       fmpq_mul_2exp (t, t, 1);
       fmpq_mul (u, h, h);
@@ -1060,35 +923,35 @@ chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
       /* the collision at the far end: b = l_f, b' = l_s;
          J[7] = 2 C1 H, J[15] = C2 */
       momentum_ratio (c2, qL, qD, lf, t);
-      one_plus_sq (t, lf);
+      chp_cert_one_plus_sq (t, lf);
       fmpq_mul (t, t, t);
-      one_plus_sq (u, ls);
+      chp_cert_one_plus_sq (u, ls);
       fmpq_mul (t, t, u);
       fmpq_mul (c1, qD, qD);
       fmpq_div (c1, c1, t);
       fmpq_neg (c1, c1);                /* 2 C1 */
       fmpq_mul (c1, c1, h);
       r[5] = r[10] = 1.0;
-      status = out (c1, &r[7]);
+      status = chp_cert_round_fmpq (c1, &r[7]);
       if (!status)
-        status = out (c2, &r[15]);
+        status = chp_cert_round_fmpq (c2, &r[15]);
     }
   if (!status)
     {
       const fmpq *lo = dir > 0 ? ls : lf, *hi = dir > 0 ? lf : ls;
       jac_expr x = { q, lo, hi, e, h, 0 };
-      status = ziv_round (jac_ball, &x, &r[11]);
+      status = chp_cert_ziv_round (jac_ball, &x, &r[11]);
       if (!status && fmpq_is_zero (h))
         r[9] = 0.0;
       else if (!status)
         {
           x.which = 1;
-          status = ziv_round (jac_ball, &x, &r[9]);
+          status = chp_cert_ziv_round (jac_ball, &x, &r[9]);
         }
     }
   if (!status)
     for (int i = 0; i < 16; i++)
       J[i] = r[i];
-  qset_clear (&s);
+  chp_cert_qset_clear (&s);
   return status;
 }

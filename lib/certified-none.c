@@ -412,3 +412,12 @@ chaplygin_certified_orbit_omega (const chaplygin_certified_orbit *orbit,
   (void) Omega;
   return CHAPLYGIN_EINVAL;
 }
+
+/* ---- the smooth sleigh, (2.1), (2.4), (A.1)-(A.6) (cert-smooth.c) ---- */
+
+/* ---- the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) (cert-series.c) ---- */
+
+/* ---- the massless skate, (B.14)-(B.17) (cert-massless.c) ---- */
+
+/* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) (cert-units.c) ---- */
+

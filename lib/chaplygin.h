@@ -1724,6 +1724,15 @@ int chaplygin_certified_turning_points (const double L0[2],
 int chaplygin_certified_c3 (const double L0[2], const double Delta[2],
                             int dir, double *C3);
 
+/* Certified: the smooth sleigh, (2.1), (2.4), (A.1)-(A.6) (lib/cert-smooth.c). */
+
+/* Certified: the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) (lib/cert-series.c). */
+
+/* Certified: the massless skate, (B.14)-(B.17) (lib/cert-massless.c). */
+
+/* Certified: the units and fields, (2.2), (2.3), (3.1), (3.2) (lib/cert-units.c). */
+
+
 /** @section Stability
    @brief (3.9)--(3.12), (4.1), (B.14), Figure 2.
    @cindex stability

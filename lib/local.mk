@@ -49,7 +49,13 @@ lib_libchaplygin_core_la_SOURCES += \
 	lib/cert-leg.h \
 	lib/cert-leg.c \
 	lib/certified.c \
-	lib/cert-algebraic.c
+	lib/cert-eval.h \
+	lib/cert-eval.c \
+	lib/cert-algebraic.c \
+	lib/cert-smooth.c \
+	lib/cert-series.c \
+	lib/cert-massless.c \
+	lib/cert-units.c
 else
 lib_libchaplygin_core_la_SOURCES += lib/certified-none.c
 endif

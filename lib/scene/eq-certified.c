@@ -472,6 +472,14 @@ eq_cert_B_7 (eq_ctx *c)
   return 0;
 }
 
+/* ---- the smooth sleigh, (2.1), (2.4), (A.1)-(A.6) ---- */
+
+/* ---- the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) ---- */
+
+/* ---- the massless skate, (B.14)-(B.17) ---- */
+
+/* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) ---- */
+
 #else /* !HAVE_ARB: no certified evaluators (eq-table.c names none) */
 
 typedef int eq_certified_none;

@@ -1,0 +1,58 @@
+/* cert-eval.h -- the shared mechanisms of the certified closed forms
+   (issue 28): exact inputs as FLINT rationals, Ziv's loop on an Arb ball,
+   and exact work with square roots.  Used by cert-algebraic.c and the
+   other certified evaluators (cert-smooth.c, cert-massless.c,
+   cert-series.c, cert-units.c).  Internal to libchaplygin; built only
+   with Arb. */
+#ifndef CHAPLYGIN_CERT_EVAL_H
+#define CHAPLYGIN_CERT_EVAL_H
+
+#include <arb.h>
+#include <flint/fmpq.h>
+
+/* Ziv's loop: the first working precision and the cap (bits). */
+enum { CHP_CERT_PREC_START = 64, CHP_CERT_PREC_CAP = 1 << 16 };
+
+/* The exact rationals of one call, initialised and cleared together. */
+enum { CHP_CERT_NQ = 12 };
+typedef struct
+{
+  fmpq_t q[CHP_CERT_NQ];
+} chp_cert_qset;
+
+void chp_cert_qset_init (chp_cert_qset *s);
+void chp_cert_qset_clear (chp_cert_qset *s);
+
+/* *Q = R[0]/R[1]: CHAPLYGIN_SUCCESS, or CHAPLYGIN_EDOM (not finite, or
+   R[1] = 0). */
+int chp_cert_in (fmpq_t q, const double r[2]);
+
+/* The slot's parameters: L0, Delta exact, Delta > 0 (CHAPLYGIN_EDOM
+   otherwise). */
+int chp_cert_slot_in (fmpq_t L0, fmpq_t Delta, const double L0r[2],
+                      const double Deltar[2]);
+
+/* T = 1 + A^2. */
+void chp_cert_one_plus_sq (fmpq_t t, const fmpq_t a);
+
+/* A value as a ball at the working precision PREC. */
+typedef void (*chp_cert_ball_fn) (arb_t r, const void *data, slong prec);
+
+/* *X = the double nearest to the value F encloses (F's balls must shrink
+   to it as PREC grows), raising the precision from CHP_CERT_PREC_START
+   until a ball decides: CHAPLYGIN_SUCCESS, CHAPLYGIN_ERANGE (the ball lies
+   beyond DBL_MAX's rounding boundary), or CHAPLYGIN_ECAP (undecided at
+   CHP_CERT_PREC_CAP bits: a value that is a double or a midpoint must be
+   recognised exactly before, never left to this loop). */
+int chp_cert_ziv_round (chp_cert_ball_fn f, const void *data, double *x);
+
+/* *X = A + S sqrt(R) rounded (R >= 0, S = +-1): exactly where R is the
+   square of a rational, else by Ziv's loop (the value is then
+   irrational: no double and no midpoint). */
+int chp_cert_round_sqrt_expr (const fmpq_t a, const fmpq_t r, int s,
+                              double *x);
+
+/* The sign of sqrt(R) - T (R >= 0), exactly: -1, 0 or 1. */
+int chp_cert_cmp_sqrt (const fmpq_t r, const fmpq_t t);
+
+#endif

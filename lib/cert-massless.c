@@ -1,0 +1,3 @@
+/* cert-massless.c -- the certified method (issue 28) for the massless skate, (B.14)-(B.17).
+   (Being written.) */
+#include <config.h>
