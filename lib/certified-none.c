@@ -421,3 +421,125 @@ chaplygin_certified_orbit_omega (const chaplygin_certified_orbit *orbit,
 
 /* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) (cert-units.c) ---- */
 
+int
+chaplygin_certified_smooth_nondimensionalize (const double rho[2],
+                                              const double v0[2],
+                                              const double ell[2],
+                                              const double s[2],
+                                              const double v[2],
+                                              const double theta[2],
+                                              const double omega[2],
+                                              const double t[2],
+                                              chaplygin_smooth_nondim *nd)
+{
+  (void) rho;
+  (void) v0;
+  (void) ell;
+  (void) s;
+  (void) v;
+  (void) theta;
+  (void) omega;
+  (void) t;
+  (void) nd;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_dimensionalize (const double rho[2],
+                                           const double v0[2],
+                                           const double L[2],
+                                           const double S[2],
+                                           const double V[2],
+                                           const double theta[2],
+                                           const double Omega[2],
+                                           const double tau[2],
+                                           chaplygin_smooth_dim *dim)
+{
+  (void) rho;
+  (void) v0;
+  (void) L;
+  (void) S;
+  (void) V;
+  (void) theta;
+  (void) Omega;
+  (void) tau;
+  (void) dim;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_radius_of_gyration (const double m[2],
+                                        const double I[2],
+                                        double *rho)
+{
+  (void) m;
+  (void) I;
+  (void) rho;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_field (const double L0[2],
+                           const double D[2],
+                           const double V[2],
+                           const double Omega[2],
+                           double dq[4])
+{
+  (void) L0;
+  (void) D;
+  (void) V;
+  (void) Omega;
+  (void) dq;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_discrete_nondimensionalize (const double rho[2],
+                                                const double v0[2],
+                                                const double ell0[2],
+                                                const double delta[2],
+                                                const double d[2],
+                                                const double v[2],
+                                                const double theta[2],
+                                                const double omega[2],
+                                                const double t[2],
+                                                chaplygin_discrete_nondim *nd)
+{
+  (void) rho;
+  (void) v0;
+  (void) ell0;
+  (void) delta;
+  (void) d;
+  (void) v;
+  (void) theta;
+  (void) omega;
+  (void) t;
+  (void) nd;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_discrete_dimensionalize (const double rho[2],
+                                             const double v0[2],
+                                             const double L0[2],
+                                             const double Delta[2],
+                                             const double D[2],
+                                             const double V[2],
+                                             const double theta[2],
+                                             const double Omega[2],
+                                             const double tau[2],
+                                             chaplygin_discrete_dim *dim)
+{
+  (void) rho;
+  (void) v0;
+  (void) L0;
+  (void) Delta;
+  (void) D;
+  (void) V;
+  (void) theta;
+  (void) Omega;
+  (void) tau;
+  (void) dim;
+  return CHAPLYGIN_EINVAL;
+}
+

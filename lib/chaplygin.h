@@ -1732,6 +1732,103 @@ int chaplygin_certified_c3 (const double L0[2], const double Delta[2],
 
 /* Certified: the units and fields, (2.2), (2.3), (3.1), (3.2) (lib/cert-units.c). */
 
+/** (2.2), certified: chaplygin_smooth_nondimensionalize for exact inputs
+   (each field and scale the ratio `[0]/[1]` of two doubles):
+     L = ell/rho,  S = s/rho,  V = v/v0,  Omega = omega rho/v0,
+     tau = t v0/rho,  theta unchanged (the input ratio, rounded),
+   every field the double nearest to its exact value.
+
+   Domain: $rho > 0$, $v_0 > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE (a field
+   beyond the doubles).
+ */
+int chaplygin_certified_smooth_nondimensionalize (const double rho[2],
+                                                  const double v0[2],
+                                                  const double ell[2],
+                                                  const double s[2],
+                                                  const double v[2],
+                                                  const double theta[2],
+                                                  const double omega[2],
+                                                  const double t[2],
+                                                  chaplygin_smooth_nondim
+                                                  *nd);
+
+/** The inverse of (2.2), certified: chaplygin_smooth_dimensionalize for
+   exact inputs, each field the double nearest to
+     ell = L rho,  s = S rho,  v = V v0,  omega = Omega v0/rho,
+     t = tau rho/v0,  theta unchanged.
+   Domain and errors: as chaplygin_certified_smooth_nondimensionalize.
+ */
+int chaplygin_certified_smooth_dimensionalize (const double rho[2],
+                                               const double v0[2],
+                                               const double L[2],
+                                               const double S[2],
+                                               const double V[2],
+                                               const double theta[2],
+                                               const double Omega[2],
+                                               const double tau[2],
+                                               chaplygin_smooth_dim *dim);
+
+/** (2.3), certified: `*@rho` = the double nearest to
+     rho = sqrt(I/m),
+   exactly rounded where $I/m$ is the square of a rational.
+
+   Domain: $m > 0$, $I >= 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_radius_of_gyration (const double m[2],
+                                            const double I[2], double *rho);
+
+/** (3.1), certified: chaplygin_discrete_field's
+     dD/dtau = V,   dV/dtau = (L0 + D) Omega^2,   dtheta/dtau = Omega,
+     dOmega/dtau = -2 (L0 + D) V Omega/(1 + (L0 + D)^2)
+   at the exact state, into @dq (indexed by CHAPLYGIN_D, ...), each
+   component the double nearest to its exact value.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE (a component
+   beyond the doubles).
+ */
+int chaplygin_certified_field (const double L0[2], const double D[2],
+                               const double V[2], const double Omega[2],
+                               double dq[4]);
+
+/** (3.2), certified: chaplygin_discrete_nondimensionalize for exact inputs,
+   each field the double nearest to
+     L0 = ell0/rho,  Delta = delta/rho,  D = d/rho,  V = v/v0,
+     Omega = omega rho/v0,  tau = t v0/rho,  theta unchanged.
+   Domain: $rho > 0$, $v_0 > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_discrete_nondimensionalize (const double rho[2],
+                                                    const double v0[2],
+                                                    const double ell0[2],
+                                                    const double delta[2],
+                                                    const double d[2],
+                                                    const double v[2],
+                                                    const double theta[2],
+                                                    const double omega[2],
+                                                    const double t[2],
+                                                    chaplygin_discrete_nondim
+                                                    *nd);
+
+/** The inverse of (3.2), certified: chaplygin_discrete_dimensionalize for
+   exact inputs.  Domain and errors: as
+   chaplygin_certified_discrete_nondimensionalize.
+ */
+int chaplygin_certified_discrete_dimensionalize (const double rho[2],
+                                                 const double v0[2],
+                                                 const double L0[2],
+                                                 const double Delta[2],
+                                                 const double D[2],
+                                                 const double V[2],
+                                                 const double theta[2],
+                                                 const double Omega[2],
+                                                 const double tau[2],
+                                                 chaplygin_discrete_dim *dim);
+
 
 /** @section Stability
    @brief (3.9)--(3.12), (4.1), (B.14), Figure 2.

@@ -105,6 +105,7 @@ tests_test_carlson_arb_LDADD = $(TEST_LDADD) -lquadmath $(ARB_LIBS)
 # orbits against Arb's rigorous integration of the integrands and the
 # exact model
 if HAVE_ARB
+check_LIBRARIES += tests/libcertref.a
 check_PROGRAMS += tests/test_cert_round tests/test_certified \
 	tests/test_cert_algebraic tests/test_cert_smooth tests/test_cert_series \
 	tests/test_cert_massless tests/test_cert_units
@@ -112,6 +113,9 @@ TESTS += tests/test_cert_round tests/test_certified \
 	tests/test_cert_algebraic tests/test_cert_smooth tests/test_cert_series \
 	tests/test_cert_massless tests/test_cert_units
 endif
+tests_libcertref_a_SOURCES = tests/certref.c tests/certref.h
+tests_libcertref_a_CFLAGS = $(TEST_CFLAGS)
+CERT_LDADD = tests/libcertref.a $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 tests_test_cert_round_SOURCES = tests/test_cert_round.c
 tests_test_cert_round_CFLAGS = $(TEST_CFLAGS)
 tests_test_cert_round_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
@@ -121,23 +125,23 @@ tests_test_certified_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 # the certified closed forms against GMP's exact rationals and MPFR
 tests_test_cert_algebraic_SOURCES = tests/test_cert_algebraic.c
 tests_test_cert_algebraic_CFLAGS = $(TEST_CFLAGS)
-tests_test_cert_algebraic_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_cert_algebraic_LDADD = $(CERT_LDADD)
 # the certified smooth sleigh (2.1), (2.4), (A.1)-(A.6)
 tests_test_cert_smooth_SOURCES = tests/test_cert_smooth.c
 tests_test_cert_smooth_CFLAGS = $(TEST_CFLAGS)
-tests_test_cert_smooth_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_cert_smooth_LDADD = $(CERT_LDADD)
 # the certified series (B.2), (B.6), (B.8)-(B.13)
 tests_test_cert_series_SOURCES = tests/test_cert_series.c
 tests_test_cert_series_CFLAGS = $(TEST_CFLAGS)
-tests_test_cert_series_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_cert_series_LDADD = $(CERT_LDADD)
 # the certified massless skate (B.14)-(B.17)
 tests_test_cert_massless_SOURCES = tests/test_cert_massless.c
 tests_test_cert_massless_CFLAGS = $(TEST_CFLAGS)
-tests_test_cert_massless_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_cert_massless_LDADD = $(CERT_LDADD)
 # the certified units and fields (2.2), (2.3), (3.1), (3.2)
 tests_test_cert_units_SOURCES = tests/test_cert_units.c
 tests_test_cert_units_CFLAGS = $(TEST_CFLAGS)
-tests_test_cert_units_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_cert_units_LDADD = $(CERT_LDADD)
 tests_test_quad_SOURCES = tests/test_quad.c
 tests_test_quad_CFLAGS = $(TEST_CFLAGS)
 tests_test_quad_LDADD = $(TEST_LDADD)

@@ -36,157 +36,10 @@
 #include <mpfr.h>
 
 #include "testutil.h"
+#include "certref.h"
 #include "chaplygin.h"
 
 enum { RP = 2000 };             /* the irrational route's precision */
-enum { JP_BITS = 400 };         /* room for the ends of a 300-bit ball */
-
-/* ---- the reference route ---------------------------------------------- */
-
-/* Q = R[0]/R[1] (GMP converts doubles exactly). */
-static void
-q_of (mpq_t q, const double r[2])
-{
-  mpq_t d;
-  mpq_init (d);
-  mpq_set_d (q, r[0]);
-  mpq_set_d (d, r[1]);
-  mpq_div (q, q, d);
-  mpq_clear (d);
-}
-
-/* The double nearest to the MPFR number X (any precision), ties to even,
-   subnormals included: binary64 emulated as MPFR's manual says. */
-static double
-round_fr (const mpfr_t x)
-{
-  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
-  mpfr_t y;
-  mpfr_set_emin (-1073);
-  mpfr_set_emax (1024);
-  mpfr_init2 (y, 53);
-  int t = mpfr_set (y, x, MPFR_RNDN);
-  t = mpfr_subnormalize (y, t, MPFR_RNDN);
-  const double d = mpfr_get_d (y, MPFR_RNDN);
-  mpfr_clear (y);
-  mpfr_set_emin (emin);
-  mpfr_set_emax (emax);
-  return d;
-}
-
-static double
-round_q (const mpq_t q)
-{
-  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
-  mpfr_t y;
-  mpfr_set_emin (-1073);
-  mpfr_set_emax (1024);
-  mpfr_init2 (y, 53);
-  int t = mpfr_set_q (y, q, MPFR_RNDN);
-  t = mpfr_subnormalize (y, t, MPFR_RNDN);
-  const double d = mpfr_get_d (y, MPFR_RNDN);
-  mpfr_clear (y);
-  mpfr_set_emin (emin);
-  mpfr_set_emax (emax);
-  return d;
-}
-
-/* *X = the double nearest to every point of the ball B (both its ends,
-   rounded by MPFR, the same double): 1, else 0. */
-static int
-chp_round (const arb_t b, double *x)
-{
-  arf_t lo, hi;
-  mpfr_t m;
-  arf_init (lo);
-  arf_init (hi);
-  mpfr_init2 (m, 2 * JP_BITS);
-  arb_get_interval_arf (lo, hi, b, ARF_PREC_EXACT);
-  arf_get_mpfr (m, lo, MPFR_RNDD);
-  const double a = round_fr (m);
-  arf_get_mpfr (m, hi, MPFR_RNDU);
-  const double c = round_fr (m);
-  mpfr_clear (m);
-  arf_clear (lo);
-  arf_clear (hi);
-  if (!(a == c && signbit (a) == signbit (c)))
-    return 0;
-  *x = a;
-  return 1;
-}
-
-/* The same doubles, signed zeros told apart. */
-static int
-same (double a, double b)
-{
-  return a == b && signbit (a) == signbit (b);
-}
-
-#define ck_assert_same(got, want)                                           \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (same (g_, w_), "%s = %a (%.17g), want %a (%.17g)",     \
-                     #got, g_, g_, w_, w_);                                 \
-    }                                                                       \
-  while (0)
-
-/* |A - B| in units of the last place of B. */
-static double
-ulps (double a, double b)
-{
-  if (a == b)
-    return 0.0;
-  const double u = nextafter (fabs (b), HUGE_VAL) - fabs (b);
-  return fabs (a - b) / (u > 0.0 ? u : DBL_MIN);
-}
-
-#define ck_assert_ulps(got, want, n)                                        \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (ulps (g_, w_) <= (n), "%s = %.17g, want %.17g "        \
-                     "within %g ulps: %g", #got, g_, w_, (double) (n),      \
-                     ulps (g_, w_));                                        \
-    }                                                                       \
-  while (0)
-
-/* ---- inputs ----------------------------------------------------------- */
-
-/* A random exact input near X: P/(Q 2^k) with Q up to 2^20 (kind 0), up
-   to 2^53 - 1 (kind 1), or the double X itself (kind 2); 2^k brings a
-   small X's significand into P. */
-static void
-ratio_near (tu_rng *g, double x, double r[2])
-{
-  const int kind = (int) tu_uniform (g, 0.0, 3.0);
-  if (kind == 2 || x == 0.0)
-    {
-      r[0] = x;
-      r[1] = 1.0;
-      return;
-    }
-  const int k = ilogb (x) < 0 ? -ilogb (x) : 0;
-  double q = floor (tu_uniform (g, 1.0, kind ? 0x1p53 : 0x1p20));
-  double p = nearbyint (ldexp (x, k) * q);
-  while (!(fabs (p) < 0x1p53))
-    {
-      q = floor (q / 2.0) + 1.0;
-      p = nearbyint (ldexp (x, k) * q);
-    }
-  r[0] = p;
-  r[1] = ldexp (q, k);
-}
-
-/* A random exact input in [A, B). */
-static void
-ratio_in (tu_rng *g, double a, double b, double r[2])
-{
-  ratio_near (g, tu_uniform (g, a, b), r);
-}
-
-/* A double input R taken as the ratio {R, 1}. */
-#define AS_RATIO(x) ((const double[2]) { (x), 1.0 })
 
 /* ---- (3.3), (3.4) ----------------------------------------------------- */
 
@@ -199,16 +52,16 @@ START_TEST (certified_3_3)
   for (int i = 0; i < 4000; i++)
     {
       double l[2], d[2], v[2], w[2], x, y;
-      ratio_in (&g, -6.0, 6.0, l);
-      ratio_in (&g, 0.0, 3.0, d);
-      ratio_in (&g, -4.0, 4.0, v);
-      ratio_in (&g, -4.0, 4.0, w);
+      cr_ratio_in (&g, -6.0, 6.0, l);
+      cr_ratio_in (&g, 0.0, 3.0, d);
+      cr_ratio_in (&g, -4.0, 4.0, v);
+      cr_ratio_in (&g, -4.0, 4.0, w);
       ck_assert_ok (chaplygin_certified_energy (l, d, v, w, &x));
       ck_assert_ok (chaplygin_certified_momentum (l, d, w, &y));
-      q_of (L0, l);
-      q_of (D, d);
-      q_of (V, v);
-      q_of (W, w);
+      cr_q_of (L0, l);
+      cr_q_of (D, d);
+      cr_q_of (V, v);
+      cr_q_of (W, w);
       /* H = Omega + (L0 + D)^2 Omega;  E = (V^2 + H Omega)/2 */
       mpq_add (a, L0, D);
       mpq_mul (a, a, a);
@@ -218,8 +71,8 @@ START_TEST (certified_3_3)
       mpq_mul (t, V, V);
       mpq_add (E, E, t);
       mpq_div_2exp (E, E, 1);
-      ck_assert_same (x, round_q (E));
-      ck_assert_same (y, round_q (H));
+      ck_assert_same (x, cr_round_q (E));
+      ck_assert_same (y, cr_round_q (H));
       if (l[1] == 1.0 && d[1] == 1.0 && v[1] == 1.0 && w[1] == 1.0)
         {
           double xe, ye;
@@ -272,20 +125,20 @@ START_TEST (certified_3_6_3_7)
   for (int i = 0; i < 6000; i++)
     {
       double l[2], dl[2], e[2], h[2], th[2], dm[2], pp[4];
-      ratio_in (&g, -5.0, 5.0, l);
-      ratio_in (&g, 0.01, 4.0, dl);
-      ratio_in (&g, 0.1, 5.0, e);
-      ratio_in (&g, -3.0, 3.0, h);
-      ratio_in (&g, -3.0, 3.0, th);
+      cr_ratio_in (&g, -5.0, 5.0, l);
+      cr_ratio_in (&g, 0.01, 4.0, dl);
+      cr_ratio_in (&g, 0.1, 5.0, e);
+      cr_ratio_in (&g, -3.0, 3.0, h);
+      cr_ratio_in (&g, -3.0, 3.0, th);
       const int rear = i % 2;
       dm[0] = rear ? dl[0] : 0.0;
       dm[1] = rear ? dl[1] : 1.0;
-      q_of (L0, l);
-      q_of (Dl, dl);
-      q_of (E, e);
-      q_of (H, h);
-      q_of (Th, th);
-      q_of (Dm, dm);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
+      cr_q_of (E, e);
+      cr_q_of (H, h);
+      cr_q_of (Th, th);
+      cr_q_of (Dm, dm);
       /* phase route: Omega- = H/(1 + b^2), V-^2 = 2E - H Omega-; after it
          V+ = V-, Omega+ = [1 + L0 (L0 + Delta)] Omega-/(1 + b'^2),
          E+ = (V^2 + (1 + b'^2) Omega+^2)/2, H+ = (1 + b'^2) Omega+ */
@@ -319,10 +172,10 @@ START_TEST (certified_3_6_3_7)
       mpq_add (Ep, Ep, V);
       mpq_div_2exp (Ep, Ep, 1);
       mpq_sub (t, Dl, Dm);
-      ck_assert_same (pp[CHAPLYGIN_D], round_q (t));
-      ck_assert_same (pp[CHAPLYGIN_E], round_q (Ep));
-      ck_assert_same (pp[CHAPLYGIN_THETA], round_q (Th));
-      ck_assert_same (pp[CHAPLYGIN_H], round_q (Hp));
+      ck_assert_same (pp[CHAPLYGIN_D], cr_round_q (t));
+      ck_assert_same (pp[CHAPLYGIN_E], cr_round_q (Ep));
+      ck_assert_same (pp[CHAPLYGIN_THETA], cr_round_q (Th));
+      ck_assert_same (pp[CHAPLYGIN_H], cr_round_q (Hp));
       if (l[1] == 1.0 && dl[1] == 1.0 && e[1] == 1.0 && h[1] == 1.0)
         {
           double pm[4] = { dm[0], e[0], 0.0, h[0] }, lp[4];
@@ -350,14 +203,14 @@ START_TEST (certified_3_6_3_7)
       mpq_div (t, c2, t);
       mpq_mul (H, H, t);
       mpq_sub (t, Dl, Dm);
-      ck_assert_same (qp[CHAPLYGIN_D], round_q (t));
+      ck_assert_same (qp[CHAPLYGIN_D], cr_round_q (t));
       mpq_add (t, L0, t);
       mpq_mul (t, t, t);
       mpq_add (t, t, u);
       mpq_div (Wp, H, t);
       ck_assert_same (qp[CHAPLYGIN_V], v[0]);
-      ck_assert_same (qp[CHAPLYGIN_OMEGA], round_q (Wp));
-      ck_assert_same (qp[CHAPLYGIN_THETA], round_q (Th));
+      ck_assert_same (qp[CHAPLYGIN_OMEGA], cr_round_q (Wp));
+      ck_assert_same (qp[CHAPLYGIN_THETA], cr_round_q (Th));
     }
   ck_assert_int_gt (n, 3000);
   double pp[4] = { 7.0, 7.0, 7.0, 7.0 };
@@ -411,10 +264,10 @@ START_TEST (certified_3_8)
   for (int i = 0; i < 3000; i++)
     {
       double e[2], h[2], x;
-      ratio_in (&g, 0.0, 5.0, e);
-      ratio_in (&g, -3.0, 3.0, h);
-      q_of (E, e);
-      q_of (H, h);
+      cr_ratio_in (&g, 0.0, 5.0, e);
+      cr_ratio_in (&g, -3.0, 3.0, h);
+      cr_q_of (E, e);
+      cr_q_of (H, h);
       if (mpq_sgn (H) == 0)
         continue;
       ck_assert_ok (chaplygin_certified_spin_ratio (e, h, &x));
@@ -422,7 +275,7 @@ START_TEST (certified_3_8)
       mpq_mul (r, H, H);
       mpq_div_2exp (r, r, 1);
       mpq_div (r, E, r);
-      ck_assert_same (x, round_q (r));
+      ck_assert_same (x, cr_round_q (r));
     }
   /* spins: 2E = H^2 exactly (E = 9/50, H = 3/5) and the path reaching
      l = 0, with the ends of the half-open ranges */
@@ -511,15 +364,15 @@ START_TEST (certified_3_10)
   for (int i = 0; i < 20000; i++)
     {
       double l[2], dl[2];
-      ratio_in (&g, -8.0, 4.0, l);
-      ratio_in (&g, 1e-3, 6.0, dl);
-      q_of (L0, l);
-      q_of (Dl, dl);
+      cr_ratio_in (&g, -8.0, 4.0, l);
+      cr_ratio_in (&g, 1e-3, 6.0, dl);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
       for (int dir = -1; dir <= 1; dir += 2)
         {
           ck_assert_ok (chaplygin_certified_sigma4 (l, dl, dir, &x));
           ref_sigma4 (s, L0, Dl, dir);
-          ck_assert_same (x, round_q (s));
+          ck_assert_same (x, cr_round_q (s));
           if (l[1] == 1.0 && dl[1] == 1.0)
             {
               ck_assert_ok (chaplygin_discrete_sigma4 (l[0], dl[0], dir, &y,
@@ -589,10 +442,10 @@ START_TEST (certified_3_11_3_12)
   for (int i = 0; i < 20000; i++)
     {
       double l[2], dl[2];
-      ratio_in (&g, -6.0, 3.0, l);
-      ratio_in (&g, 0.05, 6.0, dl);
-      q_of (L0, l);
-      q_of (Dl, dl);
+      cr_ratio_in (&g, -6.0, 3.0, l);
+      cr_ratio_in (&g, 0.05, 6.0, dl);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
       for (int dir = -1; dir <= 1; dir += 2)
         {
           int s = -1;
@@ -632,8 +485,8 @@ START_TEST (certified_3_11_3_12)
   for (size_t i = 0; i < NELEM (c); i++)
     {
       int s = -1;
-      q_of (L0, c[i].L0);
-      q_of (Dl, c[i].Delta);
+      cr_q_of (L0, c[i].L0);
+      cr_q_of (Dl, c[i].Delta);
       ck_assert_ok (chaplygin_certified_stable (c[i].L0, c[i].Delta,
                                                 c[i].dir, &s));
       ck_assert_msg (s == c[i].want && s == ref_stable (L0, Dl, c[i].dir),
@@ -669,8 +522,8 @@ START_TEST (certified_3_13_3_15)
   for (int i = 0; i < 12000; i++)
     {
       double l[2], dl[2];
-      ratio_in (&g, -6.0, 4.0, l);
-      ratio_in (&g, 0.01, 5.0, dl);
+      cr_ratio_in (&g, -6.0, 4.0, l);
+      cr_ratio_in (&g, 0.01, 5.0, dl);
       if (i % 50 == 0)
         {
           l[0] = 0.0;         /* a path that starts or ends at l = 0 */
@@ -681,8 +534,8 @@ START_TEST (certified_3_13_3_15)
           l[0] = -dl[0];
           l[1] = dl[1];
         }
-      q_of (L0, l);
-      q_of (Dl, dl);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
       for (int dir = -1; dir <= 1; dir += 2)
         {
           double rmin, rlo, rhi, c3;
@@ -700,7 +553,7 @@ START_TEST (certified_3_13_3_15)
           mpq_add (lo, t, one);
           mpq_div (lo, t, lo);
           mpq_sub (lo, one, lo);
-          ck_assert_same (rmin, round_q (lo));
+          ck_assert_same (rmin, cr_round_q (lo));
           ck_assert_same (rlo, rmin);
           /* m = min |l| over [min(ls, lf), max(ls, lf)]; nonempty iff
              m < |l_s| */
@@ -719,14 +572,14 @@ START_TEST (certified_3_13_3_15)
           mpq_mul (hi, m, m);
           mpq_add (hi, hi, one);
           mpq_inv (hi, hi);
-          ck_assert_same (rhi, want ? round_q (hi) : rmin);
+          ck_assert_same (rhi, want ? cr_round_q (hi) : rmin);
           /* C3 = (l_f^2 - l_s^2)/(1 + l_f^2) */
           mpq_mul (t, lf, lf);
           mpq_mul (m, ls, ls);
           mpq_sub (m, t, m);
           mpq_add (t, t, one);
           mpq_div (m, m, t);
-          ck_assert_same (c3, round_q (m));
+          ck_assert_same (c3, cr_round_q (m));
           if (l[1] == 1.0 && dl[1] == 1.0)
             {
               double a, b, c;
@@ -765,15 +618,15 @@ START_TEST (certified_4_1)
   for (int i = 0; i < 3000; i++)
     {
       double l[2], dl[2], v[2], x;
-      ratio_in (&g, -4.0, 4.0, l);
+      cr_ratio_in (&g, -4.0, 4.0, l);
       /* slots from 2^-60 to 4: log1p's cancellation-free range */
-      ratio_near (&g, ldexp (tu_uniform (&g, 1.0, 2.0),
+      cr_ratio_near (&g, ldexp (tu_uniform (&g, 1.0, 2.0),
                              (int) tu_uniform (&g, -60.0, 2.0)), dl);
-      ratio_in (&g, -3.0, 3.0, v);
+      cr_ratio_in (&g, -3.0, 3.0, v);
       if (v[0] == 0.0)
         continue;
-      q_of (L0, l);
-      q_of (Dl, dl);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
       const int dir = v[0] > 0.0 ? 1 : -1;
       ref_sigma4 (s, L0, Dl, dir);
       const int st = chaplygin_certified_xi4 (l, dl, v, &x);
@@ -791,11 +644,11 @@ START_TEST (certified_4_1)
       mpfr_set_z (b, mpq_denref (s), MPFR_RNDN);
       mpfr_log (b, b, MPFR_RNDN);
       mpfr_sub (a, a, b, MPFR_RNDN);
-      q_of (t, v);
+      cr_q_of (t, v);
       mpq_abs (t, t);
       mpq_div (t, t, Dl);
       mpfr_mul_q (a, a, t, MPFR_RNDN);
-      ck_assert_same (x, round_fr (a));
+      ck_assert_same (x, cr_round_fr (a));
       if (l[1] == 1.0 && dl[1] == 1.0 && v[1] == 1.0)
         {
           double y;
@@ -845,8 +698,8 @@ START_TEST (certified_4_1_taylor)
   for (int i = 0; i < 6000; i++)
     {
       double l[2], c[3];
-      ratio_in (&g, -30.0, 30.0, l);
-      q_of (L0, l);
+      cr_ratio_in (&g, -30.0, 30.0, l);
+      cr_q_of (L0, l);
       mpq_mul (a, L0, L0);
       mpq_set_ui (t, 1, 1);
       mpq_add (a, a, t);
@@ -895,9 +748,9 @@ START_TEST (certified_4_1_taylor)
               mpq_div (c2, c2, a);
               mpq_neg (c2, c2);
             }
-          ck_assert_same (c[0], round_q (c0));
-          ck_assert_same (c[1], round_q (c1));
-          ck_assert_same (c[2], round_q (c2));
+          ck_assert_same (c[0], cr_round_q (c0));
+          ck_assert_same (c[1], cr_round_q (c1));
+          ck_assert_same (c[2], cr_round_q (c2));
           if (l[1] == 1.0)
             {
               /* the library's within its documented 8 eps, relative:
@@ -934,16 +787,16 @@ START_TEST (certified_B_1)
   for (int i = 0; i < 6000; i++)
     {
       double l[2], d0[2], v0[2], w0[2], d[2], v2, w;
-      ratio_in (&g, -4.0, 4.0, l);
-      ratio_in (&g, 0.0, 3.0, d0);
-      ratio_in (&g, -3.0, 3.0, v0);
-      ratio_in (&g, -3.0, 3.0, w0);
-      ratio_in (&g, -1.0, 4.0, d);
-      q_of (L0, l);
-      q_of (D0, d0);
-      q_of (V0, v0);
-      q_of (W0, w0);
-      q_of (D, d);
+      cr_ratio_in (&g, -4.0, 4.0, l);
+      cr_ratio_in (&g, 0.0, 3.0, d0);
+      cr_ratio_in (&g, -3.0, 3.0, v0);
+      cr_ratio_in (&g, -3.0, 3.0, w0);
+      cr_ratio_in (&g, -1.0, 4.0, d);
+      cr_q_of (L0, l);
+      cr_q_of (D0, d0);
+      cr_q_of (V0, v0);
+      cr_q_of (W0, w0);
+      cr_q_of (D, d);
       /* H = a0 Omega0, 2E = V0^2 + H Omega0; V^2 = 2E - H^2/a,
          Omega = H/a */
       mpq_add (a, L0, D0);
@@ -970,8 +823,8 @@ START_TEST (certified_B_1)
         }
       n++;
       ck_assert_ok (st);
-      ck_assert_same (v2, round_q (E));
-      ck_assert_same (w, round_q (H));
+      ck_assert_same (v2, cr_round_q (E));
+      ck_assert_same (w, cr_round_q (H));
     }
   ck_assert_int_gt (n, 3000);
   mpq_clears (L0, D0, V0, W0, D, E, H, a, t, NULL);
@@ -987,10 +840,10 @@ START_TEST (certified_B_3_B_4)
   for (int i = 0; i < 8000; i++)
     {
       double l[2], dl[2], C1, C2;
-      ratio_in (&g, -5.0, 5.0, l);
-      ratio_in (&g, 0.01, 5.0, dl);
-      q_of (L0, l);
-      q_of (Dl, dl);
+      cr_ratio_in (&g, -5.0, 5.0, l);
+      cr_ratio_in (&g, 0.01, 5.0, dl);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
       const int rev = i % 2, rear = (i / 2) % 2;
       const double dp[2] = { rear ? dl[0] : 0.0, rear ? dl[1] : 1.0 };
       ck_assert_ok (chaplygin_certified_coefficients (l, dl, dp, rev, &C1,
@@ -1015,8 +868,8 @@ START_TEST (certified_B_3_B_4)
       mpq_inv (t, ab);
       mpq_sub (c1, c1, t);
       mpq_div_2exp (c1, c1, 1);
-      ck_assert_same (C1, round_q (c1));
-      ck_assert_same (C2, round_q (c2));
+      ck_assert_same (C1, cr_round_q (c1));
+      ck_assert_same (C2, cr_round_q (c2));
       if (l[1] == 1.0 && dl[1] == 1.0)
         {
           double x, y;
@@ -1056,14 +909,14 @@ START_TEST (certified_B_5)
     {
       double l[2], dl[2], e[2], h[2], Dc[2];
       int nr = -1, ns = -1;
-      ratio_in (&g, -4.0, 2.0, l);
-      ratio_in (&g, 0.1, 4.0, dl);
-      ratio_in (&g, 0.05, 3.0, e);
-      ratio_in (&g, -4.0, 4.0, h);
-      q_of (L0, l);
-      q_of (Dl, dl);
-      q_of (E, e);
-      q_of (H, h);
+      cr_ratio_in (&g, -4.0, 2.0, l);
+      cr_ratio_in (&g, 0.1, 4.0, dl);
+      cr_ratio_in (&g, 0.05, 3.0, e);
+      cr_ratio_in (&g, -4.0, 4.0, h);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
+      cr_q_of (E, e);
+      cr_q_of (H, h);
       ck_assert_ok (chaplygin_certified_turning_points (l, dl, e, h, &nr, Dc,
                                                         &ns));
       /* H^2 - 2E: its sign the number of roots; sqrt(H^2 - 2E)/sqrt(2E) */
@@ -1089,7 +942,7 @@ START_TEST (certified_B_5)
           else
             mpfr_sub (x, x, s, MPFR_RNDN);
           mpfr_neg (x, x, MPFR_RNDN);
-          ck_assert_same (Dc[k], round_fr (x));
+          ck_assert_same (Dc[k], cr_round_fr (x));
           /* in [0, Delta]: far from the ends here (the ends exactly are
              the named cases below) */
           mpfr_set_q (d, Dl, MPFR_RNDN);
@@ -1249,16 +1102,16 @@ START_TEST (certified_3_9)
     {
       double l[2], dl[2], e[2], hh[2], J[16];
       const int dir = i % 2 ? 1 : -1;
-      ratio_in (&g, -3.0, 3.0, l);
-      ratio_in (&g, 0.05, 2.0, dl);
-      ratio_in (&g, 0.2, 2.0, e);
-      ratio_in (&g, -2.0, 2.0, hh);
+      cr_ratio_in (&g, -3.0, 3.0, l);
+      cr_ratio_in (&g, 0.05, 2.0, dl);
+      cr_ratio_in (&g, 0.2, 2.0, e);
+      cr_ratio_in (&g, -2.0, 2.0, hh);
       if (i % 10 == 0)
         hh[0] = 0.0;
-      q_of (L0, l);
-      q_of (Dl, dl);
-      q_of (E, e);
-      q_of (H, hh);
+      cr_q_of (L0, l);
+      cr_q_of (Dl, dl);
+      cr_q_of (E, e);
+      cr_q_of (H, hh);
       const int st = chaplygin_certified_jacobian (l, dl, dir, e, hh, J);
       /* valid, and no turning point on the path: V^2 = 2E - H^2/a > 0 at
          its least, where |l| is least (h^2 = H^2/(2E) < 1 + m^2) */
@@ -1304,7 +1157,7 @@ START_TEST (certified_3_9)
       arb_rsqrt (x, y, JP);
       arb_mul (x, x, dphi, JP);
       double want;
-      ck_assert_msg (chp_round (x, &want), "the route does not decide");
+      ck_assert_msg (cr_round_ball (x, &want), "the route does not decide");
       ck_assert_same (J[11], want);
       fmpq_set_mpq (fq, H);
       arb_set_fmpq (dphi, fq, JP);
@@ -1315,14 +1168,14 @@ START_TEST (certified_3_9)
         ck_assert_same (J[9], 0.0);
       else
         {
-          ck_assert_msg (chp_round (x, &want), "the route does not decide");
+          ck_assert_msg (cr_round_ball (x, &want), "the route does not decide");
           ck_assert_same (J[9], want);
         }
       /* the rational entries: C1 from the phase form, C2 = 1 - Delta b/
          (1 + b^2) (ref_sigma4: the collision at the far end) */
       mpq_set_ui (t, 1, 1);
       ref_sigma4 (m, L0, Dl, dir);
-      ck_assert_same (J[15], round_q (m));
+      ck_assert_same (J[15], cr_round_q (m));
       /* 2 C1 H = [C2^2/(1 + b'^2) - 1/(1 + b^2)] H, b = l_f, b' = l_s */
       mpq_mul (m, m, m);
       mpq_mul (t, ls, ls);
@@ -1334,7 +1187,7 @@ START_TEST (certified_3_9)
       mpq_inv (t, t);
       mpq_sub (m, m, t);
       mpq_mul (m, m, H);
-      ck_assert_same (J[7], round_q (m));
+      ck_assert_same (J[7], cr_round_q (m));
       ck_assert (J[5] == 1.0 && J[10] == 1.0 && J[0] == 0.0 && J[13] == 0.0);
       if (l[1] == 1.0 && dl[1] == 1.0 && e[1] == 1.0 && hh[1] == 1.0)
         {
@@ -1371,7 +1224,7 @@ START_TEST (certified_3_9)
     mpfr_div_ui (b, b, 5, MPFR_RNDN);
     mpfr_sqrt (b, b, MPFR_RNDN);
     mpfr_div (a, a, b, MPFR_RNDN);
-    ck_assert_same (J[11], round_fr (a));
+    ck_assert_same (J[11], cr_round_fr (a));
     ck_assert_same (J[9], 0.0);
     mpfr_clears (a, b, NULL);
   }
@@ -1388,9 +1241,9 @@ START_TEST (certified_3_9)
                                                 AS_RATIO (1.0), J));
     ref_dphi (dphi, L0, Dl, h2);
     double want;
-    ck_assert (chp_round (dphi, &want));
+    ck_assert (cr_round_ball (dphi, &want));
     ck_assert_same (J[11], want);
-    ck_assert (chp_round (dphi, &want));
+    ck_assert (cr_round_ball (dphi, &want));
     ck_assert_same (J[9], -want);       /* -H/(2E) = -1 */
   }
   /* errors: a reversing segment; the spinning state; an invalid start */
@@ -1509,8 +1362,8 @@ START_TEST (certified_orbit_phase)
   mpq_mul (t, t, H);
   mpq_add (E, E, t);
   mpq_div_2exp (E, E, 1);                /* E+ */
-  ck_assert_same (s.E, round_q (E));
-  ck_assert_same (s.H, round_q (H));
+  ck_assert_same (s.E, cr_round_q (E));
+  ck_assert_same (s.H, cr_round_q (H));
   mpq_clears (E, t, H, NULL);
   ck_assert_status (chaplygin_certified_orbit_new_phase_exact (AS_RATIO (0.0),
                                                          AS_RATIO (1.0),

@@ -480,6 +480,144 @@ eq_cert_B_7 (eq_ctx *c)
 
 /* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) ---- */
 
+/* The scales rho, v0 of (2.2), (3.2), and whether the inputs are the
+   dimensional ones (*DIM: DIM_NAME given, or NONDIM_NAME not given). */
+static int
+scales_in (eq_ctx *c, const char *dim_name, const char *nondim_name,
+           double rho[2], double v0[2], int *dim)
+{
+  *dim = eq_given (c, dim_name) || !eq_given (c, nondim_name);
+  return eq_ratio_in (c, "rho", rho) || eq_ratio_in (c, "v0", v0);
+}
+
+/* Optional exact inputs NAMES[i] (default 0) into X[i], i < N. */
+static int
+ratios_opt (eq_ctx *c, size_t n, const char *const names[], double x[][2])
+{
+  for (size_t i = 0; i < n; i++)
+    if (eq_ratio_opt (c, names[i], 0.0, x[i]))
+      return -1;
+  return 0;
+}
+
+int
+eq_cert_2_2 (eq_ctx *c)
+{
+  double rho[2], v0[2], x[6][2];
+  int dim;
+  if (scales_in (c, "ell", "L", rho, v0, &dim))
+    return -1;
+  if (dim)
+    {
+      static const char fn[] = "chaplygin_certified_smooth_nondimensionalize";
+      static const char *const names[] = { "s", "v", "theta", "omega", "t" };
+      chaplygin_smooth_nondim nd;
+      if (eq_ratio_in (c, "ell", x[0]) || ratios_opt (c, 5, names, x + 1)
+          || eq_lib (c, fn, chaplygin_certified_smooth_nondimensionalize
+                     (rho, v0, x[0], x[1], x[2], x[3], x[4], x[5], &nd)))
+        return -1;
+      put (c, "L", nd.L, fn);
+      put (c, "S", nd.S, fn);
+      put (c, "V", nd.V, fn);
+      put (c, "theta", nd.theta, fn);
+      put (c, "Omega", nd.Omega, fn);
+      put (c, "tau", nd.tau, fn);
+      return 0;
+    }
+  static const char fn[] = "chaplygin_certified_smooth_dimensionalize";
+  static const char *const names[] = { "S", "V", "theta", "Omega", "tau" };
+  chaplygin_smooth_dim d;
+  if (eq_ratio_in (c, "L", x[0]) || ratios_opt (c, 5, names, x + 1)
+      || eq_lib (c, fn, chaplygin_certified_smooth_dimensionalize
+                 (rho, v0, x[0], x[1], x[2], x[3], x[4], x[5], &d)))
+    return -1;
+  put (c, "ell", d.ell, fn);
+  put (c, "s", d.s, fn);
+  put (c, "v", d.v, fn);
+  put (c, "theta", d.theta, fn);
+  put (c, "omega", d.omega, fn);
+  put (c, "t", d.t, fn);
+  return 0;
+}
+
+int
+eq_cert_2_3 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_radius_of_gyration";
+  double m[2], I[2], rho;
+  if (eq_ratio_in (c, "m", m) || eq_ratio_in (c, "I", I)
+      || eq_lib (c, fn, chaplygin_certified_radius_of_gyration (m, I, &rho)))
+    return -1;
+  put (c, "rho", rho, fn);
+  return 0;
+}
+
+int
+eq_cert_3_1 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_field";
+  static const char *const out[4] = { "dD/dtau", "dV/dtau", "dtheta/dtau",
+                                      "dOmega/dtau" };
+  double L0[2], D[2], V[2], Omega[2], theta[2], dq[4];
+  /* theta is read (the label's input) but the field does not depend on
+     it */
+  if (eq_ratio_in (c, "L0", L0) || eq_ratio_in (c, "D", D)
+      || eq_ratio_in (c, "V", V) || eq_ratio_in (c, "Omega", Omega)
+      || eq_ratio_opt (c, "theta", 0.0, theta)
+      || eq_lib (c, fn, chaplygin_certified_field (L0, D, V, Omega, dq)))
+    return -1;
+  for (int i = 0; i < 4; i++)
+    put (c, out[i], dq[i], fn);
+  return 0;
+}
+
+int
+eq_cert_3_2 (eq_ctx *c)
+{
+  double rho[2], v0[2], x[7][2];
+  int dim;
+  if (scales_in (c, "ell0", "L0", rho, v0, &dim))
+    return -1;
+  if (dim)
+    {
+      static const char fn[] =
+        "chaplygin_certified_discrete_nondimensionalize";
+      static const char *const names[] = { "d", "v", "theta", "omega", "t" };
+      chaplygin_discrete_nondim nd;
+      if (eq_ratio_in (c, "ell0", x[0]) || eq_ratio_in (c, "delta", x[1])
+          || ratios_opt (c, 5, names, x + 2)
+          || eq_lib (c, fn, chaplygin_certified_discrete_nondimensionalize
+                     (rho, v0, x[0], x[1], x[2], x[3], x[4], x[5], x[6],
+                      &nd)))
+        return -1;
+      put (c, "L0", nd.L0, fn);
+      put (c, "Delta", nd.Delta, fn);
+      put (c, "D", nd.D, fn);
+      put (c, "V", nd.V, fn);
+      put (c, "theta", nd.theta, fn);
+      put (c, "Omega", nd.Omega, fn);
+      put (c, "tau", nd.tau, fn);
+      return 0;
+    }
+  static const char fn[] = "chaplygin_certified_discrete_dimensionalize";
+  static const char *const names[] = { "D", "V", "theta", "Omega", "tau" };
+  chaplygin_discrete_dim d;
+  if (eq_ratio_in (c, "L0", x[0]) || eq_ratio_in (c, "Delta", x[1])
+      || ratios_opt (c, 5, names, x + 2)
+      || eq_lib (c, fn, chaplygin_certified_discrete_dimensionalize
+                 (rho, v0, x[0], x[1], x[2], x[3], x[4], x[5], x[6], &d)))
+    return -1;
+  put (c, "ell0", d.ell0, fn);
+  put (c, "delta", d.delta, fn);
+  put (c, "d", d.d, fn);
+  put (c, "v", d.v, fn);
+  put (c, "theta", d.theta, fn);
+  put (c, "omega", d.omega, fn);
+  put (c, "t", d.t, fn);
+  return 0;
+}
+
+
 #else /* !HAVE_ARB: no certified evaluators (eq-table.c names none) */
 
 typedef int eq_certified_none;

@@ -1,0 +1,138 @@
+/* certref.c -- the reference route's instruments of the certified tests:
+   see certref.h. */
+#include <config.h>
+
+#include <float.h>
+#include <math.h>
+
+#include "certref.h"
+
+enum { BALL_BITS = 400 };       /* room for the ends of a 300-bit ball */
+
+/* Q = R[0]/R[1] (GMP converts doubles exactly). */
+void
+cr_q_of (mpq_t q, const double r[2])
+{
+  mpq_t d;
+  mpq_init (d);
+  mpq_set_d (q, r[0]);
+  mpq_set_d (d, r[1]);
+  mpq_div (q, q, d);
+  mpq_clear (d);
+}
+
+/* The double nearest to the value SET writes to a 53-bit MPFR number in
+   binary64's exponent range (SET returns its ternary value). */
+typedef int (*set_fn) (mpfr_t y, const void *x);
+
+static double
+binary64 (set_fn set, const void *x)
+{
+  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
+  mpfr_t y;
+  mpfr_set_emin (-1073);
+  mpfr_set_emax (1024);
+  mpfr_init2 (y, 53);
+  int t = set (y, x);
+  t = mpfr_subnormalize (y, t, MPFR_RNDN);
+  const double d = mpfr_get_d (y, MPFR_RNDN);
+  mpfr_clear (y);
+  mpfr_set_emin (emin);
+  mpfr_set_emax (emax);
+  return d;
+}
+
+static int
+set_fr (mpfr_t y, const void *x)
+{
+  return mpfr_set (y, (mpfr_srcptr) x, MPFR_RNDN);
+}
+
+static int
+set_q (mpfr_t y, const void *x)
+{
+  return mpfr_set_q (y, (mpq_srcptr) x, MPFR_RNDN);
+}
+
+double
+cr_round_fr (const mpfr_t x)
+{
+  return binary64 (set_fr, x);
+}
+
+double
+cr_round_q (const mpq_t q)
+{
+  return binary64 (set_q, q);
+}
+
+int
+cr_round_ball (const arb_t b, double *x)
+{
+  arf_t lo, hi;
+  mpfr_t m;
+  arf_init (lo);
+  arf_init (hi);
+  mpfr_init2 (m, 2 * BALL_BITS);
+  arb_get_interval_arf (lo, hi, b, ARF_PREC_EXACT);
+  arf_get_mpfr (m, lo, MPFR_RNDD);
+  const double a = cr_round_fr (m);
+  arf_get_mpfr (m, hi, MPFR_RNDU);
+  const double c = cr_round_fr (m);
+  mpfr_clear (m);
+  arf_clear (lo);
+  arf_clear (hi);
+  if (!(a == c && signbit (a) == signbit (c)))
+    return 0;
+  *x = a;
+  return 1;
+}
+
+int
+cr_same (double a, double b)
+{
+  return a == b && signbit (a) == signbit (b);
+}
+
+
+double
+cr_ulps (double a, double b)
+{
+  if (a == b)
+    return 0.0;
+  const double u = nextafter (fabs (b), HUGE_VAL) - fabs (b);
+  return fabs (a - b) / (u > 0.0 ? u : DBL_MIN);
+}
+
+
+
+/* A random exact input near X: P/(Q 2^k) with Q up to 2^20 (kind 0), up
+   to 2^53 - 1 (kind 1), or the double X itself (kind 2); 2^k brings a
+   small X's significand into P. */
+void
+cr_ratio_near (tu_rng *g, double x, double r[2])
+{
+  const int kind = (int) tu_uniform (g, 0.0, 3.0);
+  if (kind == 2 || x == 0.0)
+    {
+      r[0] = x;
+      r[1] = 1.0;
+      return;
+    }
+  const int k = ilogb (x) < 0 ? -ilogb (x) : 0;
+  double q = floor (tu_uniform (g, 1.0, kind ? 0x1p53 : 0x1p20));
+  double p = nearbyint (ldexp (x, k) * q);
+  while (!(fabs (p) < 0x1p53))
+    {
+      q = floor (q / 2.0) + 1.0;
+      p = nearbyint (ldexp (x, k) * q);
+    }
+  r[0] = p;
+  r[1] = ldexp (q, k);
+}
+
+void
+cr_ratio_in (tu_rng *g, double a, double b, double r[2])
+{
+  cr_ratio_near (g, tu_uniform (g, a, b), r);
+}
