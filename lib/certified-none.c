@@ -543,3 +543,25 @@ chaplygin_certified_discrete_dimensionalize (const double rho[2],
   return CHAPLYGIN_EINVAL;
 }
 
+/* ---- the sweeps of Figure 2 (cert-sweep.c) ---- */
+
+int
+chaplygin_certified_sweep_sigma4 (int dir, const double y[2],
+                                  const double x[2], double *sigma4)
+{
+  (void) dir;
+  (void) y;
+  (void) x;
+  (void) sigma4;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_sweep_stability (const double x[2], const double y[2],
+                                     unsigned char *region)
+{
+  (void) x;
+  (void) y;
+  (void) region;
+  return CHAPLYGIN_EINVAL;
+}

@@ -1829,6 +1829,37 @@ int chaplygin_certified_discrete_dimensionalize (const double rho[2],
                                                  const double tau[2],
                                                  chaplygin_discrete_dim *dim);
 
+/** Figure 2(a), certified: chaplygin_sweep_sigma4's (3.10) at one exact point
+   of the plane $x = L_0/Delta$, $y = (1/Delta)^2$,
+     dir +1:  sigma4 = [y + x (x + 1)]/[y + (x + 1)^2],
+     dir -1:  sigma4 = [y + x (x + 1)]/[y + x^2],
+   the double nearest to its exact value.  ($Delta = 1/sqrt(y)$ is irrational
+   in general: the sweeps take $x$ and $y$, not $L_0$ and $Delta$.)
+
+   Domain: $y >= 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE (a zero
+   denominator, $y = 0$ with $x = -1$ for $dir = +1$ or $x = 0$ for
+   $dir = -1$, or a value beyond the doubles).
+ */
+int chaplygin_certified_sweep_sigma4 (int dir, const double y[2],
+                                      const double x[2], double *sigma4);
+
+/** Figure 2(b), certified: chaplygin_sweep_stability's region at one exact
+   point, `*@region` = (1 if (3.11) holds) + (2 if (3.12) holds),
+     (3.11): x > -1 and 2y + (1 + 2x)(1 + x) > 0,
+     (3.12): x < 0  and 2y + x (1 + 2x) > 0,
+   each decided exactly; a point on a boundary ($|sigma_4| = 1$) is neutral,
+   not stable.
+
+   Domain: $y >= 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_sweep_stability (const double x[2],
+                                         const double y[2],
+                                         unsigned char *region);
+
 
 /** @section Stability
    @brief (3.9)--(3.12), (4.1), (B.14), Figure 2.

@@ -55,7 +55,8 @@ lib_libchaplygin_core_la_SOURCES += \
 	lib/cert-smooth.c \
 	lib/cert-series.c \
 	lib/cert-massless.c \
-	lib/cert-units.c
+	lib/cert-units.c \
+	lib/cert-sweep.c
 else
 lib_libchaplygin_core_la_SOURCES += lib/certified-none.c
 endif

@@ -108,10 +108,10 @@ if HAVE_ARB
 check_LIBRARIES += tests/libcertref.a
 check_PROGRAMS += tests/test_cert_round tests/test_certified \
 	tests/test_cert_algebraic tests/test_cert_smooth tests/test_cert_series \
-	tests/test_cert_massless tests/test_cert_units
+	tests/test_cert_massless tests/test_cert_units tests/test_cert_sweep
 TESTS += tests/test_cert_round tests/test_certified \
 	tests/test_cert_algebraic tests/test_cert_smooth tests/test_cert_series \
-	tests/test_cert_massless tests/test_cert_units
+	tests/test_cert_massless tests/test_cert_units tests/test_cert_sweep
 endif
 tests_libcertref_a_SOURCES = tests/certref.c tests/certref.h
 tests_libcertref_a_CFLAGS = $(TEST_CFLAGS)
@@ -142,6 +142,10 @@ tests_test_cert_massless_LDADD = $(CERT_LDADD)
 tests_test_cert_units_SOURCES = tests/test_cert_units.c
 tests_test_cert_units_CFLAGS = $(TEST_CFLAGS)
 tests_test_cert_units_LDADD = $(CERT_LDADD)
+# the certified sweeps of Figure 2
+tests_test_cert_sweep_SOURCES = tests/test_cert_sweep.c
+tests_test_cert_sweep_CFLAGS = $(TEST_CFLAGS)
+tests_test_cert_sweep_LDADD = $(CERT_LDADD)
 tests_test_quad_SOURCES = tests/test_quad.c
 tests_test_quad_CFLAGS = $(TEST_CFLAGS)
 tests_test_quad_LDADD = $(TEST_LDADD)

@@ -19,6 +19,11 @@ method_line (FILE *out, const chaplygin_scene *sc, int compare)
   else if (strcmp (kind, "basins") == 0)
     fputs ("# method: the return map on (V+^2, H) "
            "(chaplygin_discrete_fate_phase)\n", out);
+  else if (kind[0] && strcmp (method, "certified") == 0)
+    fprintf (out, "# method: certified: the formulas in exact rationals, "
+             "every value the nearest double to its exact value at the "
+             "grid's doubles, every region decided exactly "
+             "(chaplygin_certified_sweep_%s)\n", kind);
   else if (kind[0])
     fputs ("# method: formulas (no integration)\n", out);
   else if (compare || chaplygin_scene_model (sc) != CHAPLYGIN_SCENE_DISCRETE)

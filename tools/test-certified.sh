@@ -15,7 +15,7 @@ top_builddir=${top_builddir:-.}
 prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-certified 10
+tap_start test-certified 13
 
 # scene NAME EXTRA-RUN-LINES: Figure 3's line (L0 = -1/2, Delta = 1) from
 # V = 0.3, Omega = 0.8 (a reversal, then forward motion), 30 collisions.
@@ -33,7 +33,7 @@ run run "$tmp/cert.ini"
 if test "$rc" -ne 0 && grep "no certified method" "$tmp/err" >/dev/null; then
   result 0 "a build without Arb refuses method = certified, saying why"
   i=2
-  while test $i -le 10; do
+  while test $i -le 13; do
     echo "ok $i # SKIP no certified method in this build"
     i=$((i + 1))
   done
@@ -182,6 +182,91 @@ run sweep "$tmp/bode.ini"
 ok=1
 test "$rc" -eq 2 && grep "method closed-form (the default) or certified" "$tmp/err" >/dev/null && ok=0
 result "$ok" "a basins sweep with method = ode: exit 2, saying which methods apply"
+
+# a sigma4 sweep (Figure 2(a)'s grid, both directions): every sigma4
+# the double nearest to (3.10)'s exact value at the grid's doubles,
+# [y + x (x + 1)]/[y + (x + 1)^2] (dir +1) or /[y + x^2] (dir -1), in
+# fractions
+sigma4_scene () {
+  {
+    printf '[scene]\nmodel = discrete\n[run]\nmethod = %s\n' "$2"
+    printf '[sweep]\nkind = sigma4\nx_min = -4\nx_max = 2\nnx = 1201\n'
+    printf 'y = 0, 0.01, 0.1, 0.25, 0.5, 1\ndir = %s\n' "$3"
+  } >"$tmp/$1.ini"
+}
+if command -v python3 >/dev/null 2>&1; then
+  ok=0
+  for dir in 1 -1; do
+    sigma4_scene s4 certified "$dir"
+    run sweep "$tmp/s4.ini"
+    { test "$rc" -eq 0 && grep '^# method: certified' "$tmp/raw" >/dev/null \
+      && python3 - "$tmp/out" "$dir" >"$tmp/py" 2>&1 <<'EOF'; } || ok=1
+import csv, sys
+from fractions import Fraction as F
+rows = list(csv.DictReader(open(sys.argv[1])))
+d = int(sys.argv[2])
+bad = 0
+for r in rows:
+    x, y = F(float(r['x'])), F(float(r['y']))
+    den = y + ((x + 1) ** 2 if d > 0 else x * x)
+    if den == 0:
+        ok = r['status'] == 'ERANGE' and r['sigma4'] == ''
+    else:
+        ok = r['status'] == 'SUCCESS' \
+            and float(r['sigma4']) == float((y + x * (x + 1)) / den)
+    if not ok:
+        print('dir %d, x = %r, y = %r: %s' % (d, float(x), float(y), r))
+        bad += 1
+sys.exit(1 if bad or len(rows) != 6 * 1201 else 0)
+EOF
+    sed 's/^/# /' "$tmp/py"
+  done
+  result "$ok" "a certified sigma4 sweep: every value (3.10)'s exact value rounded, both directions (ERANGE where infinite)"
+else
+  count=$((count + 1))
+  echo "ok $count # SKIP no python3"
+fi
+
+# a stability sweep on a grid through the boundaries (y = 0 with
+# x = -1/2, where (3.11) and (3.12) are both 0): every region decided
+# exactly, a boundary point neutral
+{
+  printf '[scene]\nmodel = discrete\n[run]\nmethod = certified\n'
+  printf '[sweep]\nkind = stability\nx_min = -2\nx_max = 1\nnx = 49\n'
+  printf 'y_min = 0\ny_max = 0.5\nny = 33\n'
+} >"$tmp/stab.ini"
+run sweep "$tmp/stab.ini"
+if command -v python3 >/dev/null 2>&1; then
+  ok=1
+  test "$rc" -eq 0 && python3 - "$tmp/out" >"$tmp/py" 2>&1 <<'EOF' && ok=0
+import csv, sys
+from fractions import Fraction as F
+rows = list(csv.DictReader(open(sys.argv[1])))
+bad = boundary = 0
+for r in rows:
+    x, y = F(float(r['x'])), F(float(r['y']))
+    a, b = 2 * y + (1 + 2 * x) * (1 + x), 2 * y + x * (1 + 2 * x)
+    boundary += (x > -1 and a == 0) + (x < 0 and b == 0)
+    fwd, bwd = int(x > -1 and a > 0), int(x < 0 and b > 0)
+    if (int(r['region']), int(r['forward']), int(r['backward'])) \
+            != (fwd + 2 * bwd, fwd, bwd):
+        print('x = %r, y = %r: %s' % (float(x), float(y), r))
+        bad += 1
+print('boundary points: %d' % boundary)
+sys.exit(1 if bad or boundary < 2 or len(rows) != 49 * 33 else 0)
+EOF
+  sed 's/^/# /' "$tmp/py"
+  result "$ok" "a certified stability sweep: every region decided exactly, the boundary points neutral"
+else
+  count=$((count + 1))
+  echo "ok $count # SKIP no python3"
+fi
+
+sigma4_scene s4ode ode 1
+run sweep "$tmp/s4ode.ini"
+ok=1
+test "$rc" -eq 2 && grep "a sigma4 sweep evaluates rational closed forms" "$tmp/err" >/dev/null && ok=0
+result "$ok" "a sigma4 sweep with method = ode: exit 2, saying which methods apply"
 
 if test "$count" -ne "$plan"; then
   echo "# ran $count tests, planned $plan" >&2

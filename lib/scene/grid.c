@@ -26,13 +26,19 @@
                is infinite, at y = 0 with x = -1 for dir +1 or x = 0 for
                dir -1)
 
+     (method certified: sigma4 the double nearest to (3.10)'s exact value
+     at the grid's doubles x and y, chaplygin_certified_sweep_sigma4)
+
    stability (Fig. 2(b)), k = i nx + j for y = y_i, x = x_j:
      k,x,y,region,forward,backward
        region    forward + 2 backward (0..3)
        forward   1 if the straight-line motion V* > 0 is stable by (3.11)
        backward  1 if V* < 0 is stable by (3.12)
      (the three are missing if the library rejects the point; that cannot
-     happen for a grid of finite x and y >= 0)
+     happen for a grid of finite x and y >= 0; method certified: each
+     decided exactly at the grid's doubles
+     (chaplygin_certified_sweep_stability), a point on a boundary
+     neutral)
 
    basins (Fig. 3), k = j for the initial V+ = x_j, the post-collision
    state {D+, V+, theta+ = 0, Omega+ = [initial] Omega} of the skate with
@@ -147,7 +153,10 @@ sigma4_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
   double y = sc->y[k / plan->nx];
   double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
   double sigma4 = 0.0;
-  int status = chaplygin_sweep_sigma4 (sc->dir, y, 1, &x, &sigma4, NULL);
+  int status = sc->method == CHAPLYGIN_CERTIFIED
+    ? chaplygin_certified_sweep_sigma4 (sc->dir, (const double[2]) { y, 1 },
+                                        (const double[2]) { x, 1 }, &sigma4)
+    : chaplygin_sweep_sigma4 (sc->dir, y, 1, &x, &sigma4, NULL);
   put_int (&row[0], (long long) k);
   put_real (&row[1], y);
   put_real (&row[2], x);
@@ -167,7 +176,11 @@ stability_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
   double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
   double y = grid_value (sc->y_min, sc->y_max, ny, k / plan->nx);
   unsigned char region = 0;
-  int status = chaplygin_sweep_stability (1, &x, 1, &y, &region);
+  int status = sc->method == CHAPLYGIN_CERTIFIED
+    ? chaplygin_certified_sweep_stability ((const double[2]) { x, 1 },
+                                           (const double[2]) { y, 1 },
+                                           &region)
+    : chaplygin_sweep_stability (1, &x, 1, &y, &region);
   put_int (&row[0], (long long) k);
   put_real (&row[1], x);
   put_real (&row[2], y);

@@ -261,7 +261,7 @@ static const key_spec keys[K_COUNT] = {
   [K_METHOD] = { SEC_RUN, "method", V_WORD, F (method),
                  WORDS (method_names, 0,
                         "closed-form, quadrature, ode, certified"), 0,
-                 0, 0, { O, O, O }, { NULL, NULL, NULL }, { N, N, O },
+                 0, 0, { O, O, O }, { NULL, NULL, NULL }, { O, O, O },
                  { NULL, NULL, NULL } },
   [K_TOLERANCE] = { SEC_RUN, "tolerance", V_INTERVAL, F (tolerance), NULL,
                     0, 0, "(1e-15 <= tolerance < 1)", 1e-15, 1.0, 1,
@@ -1034,7 +1034,8 @@ last_of_pair (const parse_ctx *c, int k, int a, int b)
 /* method = certified: what this build and the certified method cover (a
    discrete run with per-collision rows, where stop_H and stop_tau read its
    certified states and stop_fate decides on its exact state; a basins
-   sweep, whose fates it decides exactly). */
+   sweep, whose fates it decides exactly; sigma4 and stability sweeps,
+   their values correctly rounded and their regions decided exactly). */
 static void
 check_certified (parse_ctx *c, int k, long line)
 {
@@ -1074,6 +1075,12 @@ check_key (parse_ctx *c, int k)
     fail_key (c, k, line, "value '" RAW_FMT "': a basins sweep iterates "
               "the (E, H) map, with no integral: method closed-form (the "
               "default) or certified", RAW (c, k));
+  else if (k == K_METHOD && sc->sweep != SWEEP_NONE
+           && sc->method != CHAPLYGIN_CLOSED_FORM)
+    fail_key (c, k, line, "value '" RAW_FMT "': a %s sweep evaluates "
+              "rational closed forms, with no integral: method closed-form "
+              "(the default) or certified", RAW (c, k),
+              sc->sweep == SWEEP_SIGMA4 ? "sigma4" : "stability");
   else if (k == K_OUTPUTS && (sc->outputs & SCENE_OUT_PEG)
            && sc->model == SCENE_SMOOTH)
     fail_key (c, k, line, "'peg' is not an output of model smooth");
