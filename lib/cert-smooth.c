@@ -97,6 +97,9 @@ round_all (fmpq *const *q, double *x, int n)
 
 /* ---- (2.1) ------------------------------------------------------------ */
 
+/* (2.1): dS/dtau = |V|, dV/dtau = L Omega^2, dtheta/dtau = Omega,
+   dOmega/dtau = -L V Omega/(1 + L^2) (S arc length: erratum E1);
+   rational. */
 int
 chaplygin_certified_smooth_field (const double L[2], const double V[2],
                                   const double Omega[2], double dq[4])
@@ -139,6 +142,8 @@ chaplygin_certified_smooth_field (const double L[2], const double V[2],
 
 /* ---- (2.4), (A.5) ----------------------------------------------------- */
 
+/* (2.4): q* = (|V*| tau, V*, theta*, 0), E* = (V*)^2/2, H*_C = 0
+   (erratum E2); rational. */
 int
 chaplygin_certified_smooth_steady (const double Vstar[2],
                                    const double theta_star[2],
@@ -177,6 +182,7 @@ chaplygin_certified_smooth_steady (const double Vstar[2],
   return status;
 }
 
+/* Section 2.1: xi4 = -L V* /(1 + L^2); rational. */
 int
 chaplygin_certified_smooth_eigenvalue (const double L[2],
                                        const double Vstar[2], double *xi4)
@@ -202,6 +208,7 @@ chaplygin_certified_smooth_eigenvalue (const double L[2],
   return status;
 }
 
+/* (A.5): H*_C = 0, E* = (V*)^2/2; rational. */
 int
 chaplygin_certified_smooth_steady_eh (const double Vstar[2], double *E,
                                       double *H)
@@ -265,6 +272,9 @@ sc_round (const fmpq_t S0, const fmpq_t L, const fmpq_t w, fmpq_t k,
   return chp_cert_ziv_round (sc_ball, &e, Sc);
 }
 
+/* (A.1), erratum E3: a reversal iff L V0 < 0 and Omega0 != 0, at
+   S_c = S0 + (1 + L^2)/(2|L|) log1p(V0^2/(Omega0^2 (1 + L^2)));
+   transcendental: Ziv's loop. */
 int
 chaplygin_certified_smooth_reversal (const double L[2], const double S0[2],
                                      const double V0[2],
@@ -316,6 +326,10 @@ v0_squared (fmpq_t v2, const fmpq_t E0, const fmpq_t H0, const fmpq_t B2)
   fmpq_add (v2, v2, E0);
 }
 
+/* (A.6), erratum E3: V0^2 = 2 E0 - H0^2/(1 + L^2); a reversal iff
+   L dir0 < 0, H0 != 0, V0 != 0, at
+   S_c = S0 + (1 + L^2)/(2|L|) log(2 E0 (1 + L^2)/H0^2),
+   the logarithm as log1p(V0^2 (1 + L^2)/H0^2); Ziv's loop. */
 int
 chaplygin_certified_smooth_reversal_eh (const double L[2],
                                         const double S0[2],
@@ -805,6 +819,12 @@ motion_phase (motion *m, const double L[2], const double S0[2],
   return motion_classify (m);
 }
 
+/* (A.2) with (A.3), errata E4-E7: V(S) = K s0 sqrt(V0^2 + Omega0^2
+   (1 + L^2)(1 - exp(-2 a x))), Omega(S) = Omega0 exp(-a x),
+   theta(S) = theta0 + sgn(Omega0) (sqrt(1 + L^2)/L) (psi(S) - psi0), and
+   tau(S) - tau(S0); x = s0 (S - S0) before S_c, s0 (2 S_c - S - S0)
+   after it.  Exact at S = S0, on the line and the circle; else the forms
+   of the file comment by Ziv's loop. */
 int
 chaplygin_certified_smooth_closed_form (const double L[2],
                                         const double S0[2],
@@ -843,6 +863,8 @@ chaplygin_certified_smooth_closed_form (const double L[2],
   return status;
 }
 
+/* (A.3), erratum E7: K = -1 if the motion reverses and S > S_c, else 1;
+   S against S_c by the sign of a ball (never equal). */
 int
 chaplygin_certified_smooth_branch (const double L[2], const double S0[2],
                                    const double V0[2],
@@ -886,6 +908,9 @@ motion_eh (motion *m, const double L[2], const double S0[2],
   return motion_classify (m);
 }
 
+/* (A.4), errata E5, E6: E(S) = E0, H_C(S) = H0 exp(-a x), theta(S) of
+   (A.2) with Omega0 = H0/(1 + L^2), V0 = dir0 sqrt(2 E0 - H0^2/(1 +
+   L^2)) (a ball where not rational). */
 int
 chaplygin_certified_smooth_closed_form_eh (const double L[2],
                                            const double S0[2],
