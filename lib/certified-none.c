@@ -415,6 +415,153 @@ chaplygin_certified_orbit_omega (const chaplygin_certified_orbit *orbit,
 
 /* ---- the smooth sleigh, (2.1), (2.4), (A.1)-(A.6) (cert-smooth.c) ---- */
 
+int
+chaplygin_certified_smooth_field (const double L[2],
+                                  const double V[2],
+                                  const double Omega[2],
+                                  double dq[4])
+{
+  (void) L;
+  (void) V;
+  (void) Omega;
+  (void) dq;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_steady (const double Vstar[2],
+                                   const double theta_star[2],
+                                   const double tau[2],
+                                   double q[4],
+                                   double *E,
+                                   double *H)
+{
+  (void) Vstar;
+  (void) theta_star;
+  (void) tau;
+  (void) q;
+  (void) E;
+  (void) H;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_eigenvalue (const double L[2],
+                                       const double Vstar[2],
+                                       double *xi4)
+{
+  (void) L;
+  (void) Vstar;
+  (void) xi4;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_reversal (const double L[2],
+                                     const double S0[2],
+                                     const double V0[2],
+                                     const double Omega0[2],
+                                     int *reverses,
+                                     double *Sc)
+{
+  (void) L;
+  (void) S0;
+  (void) V0;
+  (void) Omega0;
+  (void) reverses;
+  (void) Sc;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_reversal_eh (const double L[2],
+                                        const double S0[2],
+                                        const double E0[2],
+                                        const double H0[2],
+                                        int dir0,
+                                        int *reverses,
+                                        double *Sc)
+{
+  (void) L;
+  (void) S0;
+  (void) E0;
+  (void) H0;
+  (void) dir0;
+  (void) reverses;
+  (void) Sc;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_closed_form (const double L[2],
+                                        const double S0[2],
+                                        const double V0[2],
+                                        const double theta0[2],
+                                        const double Omega0[2],
+                                        const double S[2],
+                                        double q[4],
+                                        double *dtau)
+{
+  (void) L;
+  (void) S0;
+  (void) V0;
+  (void) theta0;
+  (void) Omega0;
+  (void) S;
+  (void) q;
+  (void) dtau;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_branch (const double L[2],
+                                   const double S0[2],
+                                   const double V0[2],
+                                   const double Omega0[2],
+                                   const double S[2],
+                                   int *K)
+{
+  (void) L;
+  (void) S0;
+  (void) V0;
+  (void) Omega0;
+  (void) S;
+  (void) K;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_closed_form_eh (const double L[2],
+                                           const double S0[2],
+                                           const double E0[2],
+                                           const double theta0[2],
+                                           const double H0[2],
+                                           int dir0,
+                                           const double S[2],
+                                           double p[4])
+{
+  (void) L;
+  (void) S0;
+  (void) E0;
+  (void) theta0;
+  (void) H0;
+  (void) dir0;
+  (void) S;
+  (void) p;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_smooth_steady_eh (const double Vstar[2],
+                                      double *E,
+                                      double *H)
+{
+  (void) Vstar;
+  (void) E;
+  (void) H;
+  return CHAPLYGIN_EINVAL;
+}
+
 /* ---- the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) (cert-series.c) ---- */
 
 /* ---- the massless skate, (B.14)-(B.17) (cert-massless.c) ---- */

@@ -1726,6 +1726,146 @@ int chaplygin_certified_c3 (const double L0[2], const double Delta[2],
 
 /* Certified: the smooth sleigh, (2.1), (2.4), (A.1)-(A.6) (lib/cert-smooth.c). */
 
+/** (2.1), certified: chaplygin_smooth_field's
+     dS/dtau = |V|,   dV/dtau = L Omega^2,   dtheta/dtau = Omega,
+     dOmega/dtau = -L V Omega/(1 + L^2),
+   @noindent
+   written to @dq (indices CHAPLYGIN_S, CHAPLYGIN_V, CHAPLYGIN_THETA,
+   CHAPLYGIN_OMEGA); the field does not depend on $S$ and $theta$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_smooth_field (const double L[2], const double V[2],
+                                      const double Omega[2], double dq[4]);
+
+/** (2.4), certified: chaplygin_smooth_steady's steady solution at time
+   @tau and its invariants,
+     q* = (|V*| tau, V*, theta*, 0),   E* = (V*)^2/2,   H*_C = 0.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_smooth_steady (const double Vstar[2],
+                                       const double theta_star[2],
+                                       const double tau[2], double q[4],
+                                       double *E, double *H);
+
+/** Section 2.1, certified: chaplygin_smooth_eigenvalue's
+     xi4 = -L V* /(1 + L^2).
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_smooth_eigenvalue (const double L[2],
+                                           const double Vstar[2],
+                                           double *xi4);
+
+/** (A.1), certified: chaplygin_smooth_reversal's decision and arc length
+   for the start ($S_0$, $V_0$, $Omega_0$): `*@reverses` = 1 exactly when
+   $L V_0 < 0$ and $Omega_0 != 0$, and then
+     S_c = S0 + (1 + L^2)/(2|L|) log1p(V0^2/(Omega0^2 (1 + L^2)))
+   @noindent
+   is written to `*@Sc` (transcendental: by Ziv's strategy); otherwise
+   `*@reverses` = 0 and `*@Sc` is left untouched.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE,
+   CHAPLYGIN_ECAP.
+
+   @Sc: (if=reverses)
+ */
+int chaplygin_certified_smooth_reversal (const double L[2],
+                                         const double S0[2],
+                                         const double V0[2],
+                                         const double Omega0[2],
+                                         int *reverses, double *Sc);
+
+/** (A.6), certified: chaplygin_smooth_reversal_eh's decision and arc
+   length, $V_0^2 = 2 E_0 - H_0^2/(1 + L^2)$ exact: a reversal exactly when
+   $L dir_0 < 0$, $H_0 != 0$ and $V_0 != 0$, at
+     S_c = S0 + (1 + L^2)/(2|L|) log(2 E0 (1 + L^2)/H0^2).
+   `*@reverses` and `*@Sc` as for chaplygin_certified_smooth_reversal.
+
+   Domain: $E_0 >= 0$, $V_0^2 >= 0$.
+
+   Errors: CHAPLYGIN_EINVAL (also @dir0 not $+1$ or $-1$), CHAPLYGIN_EDOM
+   (also $E_0 < 0$), CHAPLYGIN_ESTATE ($V_0^2 < 0$), CHAPLYGIN_ERANGE,
+   CHAPLYGIN_ECAP.
+
+   @Sc: (if=reverses)
+ */
+int chaplygin_certified_smooth_reversal_eh (const double L[2],
+                                            const double S0[2],
+                                            const double E0[2],
+                                            const double H0[2], int dir0,
+                                            int *reverses, double *Sc);
+
+/** (A.2) with (A.3), certified: chaplygin_smooth_closed_form's state @q at
+   arc length $S >= S_0$ from the start ($S_0$, $V_0$, $theta_0$,
+   $Omega_0$), through the reversal if there is one,
+     V(S)     = K s0 sqrt(V0^2 + Omega0^2 (1 + L^2)(1 - exp(-2 a x))),
+     Omega(S) = Omega0 exp(-a x),
+     theta(S) = theta0 + sgn(Omega0) (sqrt(1 + L^2)/L) (psi(S) - psi0),
+   @noindent
+   $a$, $x$, $s_0$, $psi$ as there, and (@dtau not null) the elapsed time
+   $tau(S) - tau(S_0)$; `@q[CHAPLYGIN_S]` is $S$'s nearest double.  Exact
+   at $S = S_0$, on the line ($Omega_0 = 0$) and on the circle ($L = 0$);
+   elsewhere transcendental, by Ziv's strategy, the side of $S_c$ decided
+   by Arb balls (never equal: $S_c$ is transcendental).
+
+   Domain: $S >= S_0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $S < S_0$),
+   CHAPLYGIN_ESTATE ($S > S_0$ and $V_0 = 0$ with $Omega_0 = 0$ or
+   $L = 0$), CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+
+   @dtau: (optional=True)
+ */
+int chaplygin_certified_smooth_closed_form (const double L[2],
+                                            const double S0[2],
+                                            const double V0[2],
+                                            const double theta0[2],
+                                            const double Omega0[2],
+                                            const double S[2], double q[4],
+                                            double *dtau);
+
+/** (A.3), certified: chaplygin_smooth_branch's
+     K(S) = sgn(V(S)/V0):  -1 if the motion reverses and S > S_c, else +1,
+   @noindent
+   decided exactly (Arb balls for $S$ against $S_c$).
+
+   Domain and errors: as chaplygin_certified_smooth_closed_form.
+ */
+int chaplygin_certified_smooth_branch (const double L[2], const double S0[2],
+                                       const double V0[2],
+                                       const double Omega0[2],
+                                       const double S[2], int *K);
+
+/** (A.4), certified: chaplygin_smooth_closed_form_eh's
+   $p = (S, E, theta, H_C)$ at arc length $S >= S_0$,
+     E(S) = E0,   H_C(S) = H0 exp(-a x),
+   @noindent
+   $theta(S)$ and $x$ those of chaplygin_certified_smooth_closed_form
+   with $Omega_0 = H_0/(1 + L^2)$, $V_0 = dir_0 sqrt(2 E_0 - H_0^2/(1 +
+   L^2))$ (exact where the square root is rational, else an Arb ball).
+
+   Domain: $S >= S_0$; $E_0 >= 0$; $V_0^2 >= 0$; $dir_0 = +1$ or $-1$
+   (any value where $V_0 = 0$).
+
+   Errors: CHAPLYGIN_EINVAL (also @dir0), CHAPLYGIN_EDOM (also $S < S_0$,
+   $E_0 < 0$), CHAPLYGIN_ESTATE ($V_0^2 < 0$, or a motion that cannot
+   advance), CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_smooth_closed_form_eh (const double L[2],
+                                               const double S0[2],
+                                               const double E0[2],
+                                               const double theta0[2],
+                                               const double H0[2], int dir0,
+                                               const double S[2],
+                                               double p[4]);
+
+/** (A.5), certified: chaplygin_smooth_steady_eh's
+     H*_C = 0,   E* = (V*)^2/2.
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_smooth_steady_eh (const double Vstar[2], double *E,
+                                          double *H);
+
 /* Certified: the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) (lib/cert-series.c). */
 
 /* Certified: the massless skate, (B.14)-(B.17) (lib/cert-massless.c). */

@@ -474,6 +474,213 @@ eq_cert_B_7 (eq_ctx *c)
 
 /* ---- the smooth sleigh, (2.1), (2.4), (A.1)-(A.6) ---- */
 
+static const char *const dq_smooth[4] = {
+  "dS/dtau", "dV/dtau", "dtheta/dtau", "dOmega/dtau"
+};
+
+int
+eq_cert_2_1 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_field";
+  double L[2], V[2], Omega[2], S[2], theta[2], dq[4];
+  /* S and theta are read (and checked) but do not enter the field */
+  if (eq_ratio_in (c, "L", L) || eq_ratio_in (c, "V", V)
+      || eq_ratio_in (c, "Omega", Omega) || eq_ratio_opt (c, "S", 0.0, S)
+      || eq_ratio_opt (c, "theta", 0.0, theta)
+      || eq_lib (c, fn, chaplygin_certified_smooth_field (L, V, Omega, dq)))
+    return -1;
+  for (int i = 0; i < 4; i++)
+    put (c, dq_smooth[i], dq[i], fn);
+  return 0;
+}
+
+int
+eq_cert_2_4 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_steady";
+  static const char fn_xi[] = "chaplygin_certified_smooth_eigenvalue";
+  double Vstar[2], theta[2], tau[2], L[2], q[4], E, H, xi4;
+  if (eq_ratio_in (c, "Vstar", Vstar) || eq_ratio_opt (c, "theta", 0.0, theta)
+      || eq_ratio_opt (c, "tau", 0.0, tau)
+      || eq_lib (c, fn, chaplygin_certified_smooth_steady (Vstar, theta, tau,
+                                                           q, &E, &H)))
+    return -1;
+  put (c, "S", q[CHAPLYGIN_S], fn);
+  put (c, "V", q[CHAPLYGIN_V], fn);
+  put (c, "theta", q[CHAPLYGIN_THETA], fn);
+  put (c, "Omega", q[CHAPLYGIN_OMEGA], fn);
+  put (c, "E", E, fn);
+  put (c, "H_C", H, fn);
+  if (eq_given (c, "L"))
+    {
+      if (eq_ratio_in (c, "L", L)
+          || eq_lib (c, fn_xi, chaplygin_certified_smooth_eigenvalue (L, Vstar,
+                                                                      &xi4)))
+        return -1;
+      put (c, "xi4", xi4, fn_xi);
+    }
+  return 0;
+}
+
+/* The outputs of (A.1), (A.6): whether the motion reverses, and where. */
+static void
+put_reversal (eq_ctx *c, int reverses, double Sc, const char *fn)
+{
+  eq_put_int (c, "reverses", reverses, fn, "exact");
+  if (reverses)
+    put (c, "Sc", Sc, fn);
+  else
+    eq_put_word (c, "Sc", "none", fn, EQ_CERTIFIED);
+}
+
+/* (A.1) from L, V0, Omega0, S0 under the names V, OMEGA, S; DIR (not
+   NULL) an optional direction that must agree with the sign of V0. */
+static int
+reversal_phase (eq_ctx *c, const char *V, const char *Omega, const char *S,
+                const char *dir)
+{
+  static const char fn[] = "chaplygin_certified_smooth_reversal";
+  double L[2], V0[2], Omega0[2], S0[2], Sc;
+  int reverses, d;
+  if (eq_ratio_in (c, "L", L) || eq_ratio_in (c, V, V0)
+      || eq_ratio_in (c, Omega, Omega0) || eq_ratio_opt (c, S, 0.0, S0))
+    return -1;
+  if (dir && eq_given (c, dir))
+    {
+      if (eq_dir_in (c, dir, &d))
+        return -1;
+      if (V0[0] != 0.0 && d != sign_of (V0))
+        return eq_fail_usage (c, "%s and %s disagree: %s is the sign of %s",
+                              V, dir, dir, V);
+    }
+  if (eq_lib (c, fn, chaplygin_certified_smooth_reversal (L, S0, V0, Omega0,
+                                                          &reverses, &Sc)))
+    return -1;
+  put_reversal (c, reverses, Sc, fn);
+  return 0;
+}
+
+int
+eq_cert_A_1 (eq_ctx *c)
+{
+  return reversal_phase (c, "V", "Omega", "S", NULL);
+}
+
+/* The smooth sleigh's start (L, V0, Omega0, [S0]) and arc length S. */
+static int
+smooth_start_in (eq_ctx *c, double L[2], double V0[2], double Omega0[2],
+                 double S0[2], double S[2])
+{
+  return eq_ratio_in (c, "L", L) || eq_ratio_in (c, "V0", V0)
+    || eq_ratio_in (c, "Omega0", Omega0) || eq_ratio_opt (c, "S0", 0.0, S0)
+    || eq_ratio_in (c, "S", S);
+}
+
+int
+eq_cert_A_2 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_closed_form";
+  double L[2], V0[2], Omega0[2], S0[2], S[2], theta0[2], q[4], dtau;
+  if (smooth_start_in (c, L, V0, Omega0, S0, S)
+      || eq_ratio_opt (c, "theta0", 0.0, theta0)
+      || eq_lib (c, fn, chaplygin_certified_smooth_closed_form (L, S0, V0,
+                                                                theta0,
+                                                                Omega0, S, q,
+                                                                &dtau)))
+    return -1;
+  put (c, "V", q[CHAPLYGIN_V], fn);
+  put (c, "theta", q[CHAPLYGIN_THETA], fn);
+  put (c, "Omega", q[CHAPLYGIN_OMEGA], fn);
+  put (c, "dtau", dtau, fn);
+  return 0;
+}
+
+int
+eq_cert_A_3 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_branch";
+  double L[2], V0[2], Omega0[2], S0[2], S[2];
+  int K;
+  if (smooth_start_in (c, L, V0, Omega0, S0, S)
+      || eq_lib (c, fn, chaplygin_certified_smooth_branch (L, S0, V0, Omega0,
+                                                           S, &K)))
+    return -1;
+  eq_put_int (c, "K", K, fn, "exact");
+  return 0;
+}
+
+/* The smooth sleigh's start in energy-momentum form, E0, H0, dir0; V0 and
+   Omega0 are refused (LABEL's). */
+static int
+smooth_eh_in (eq_ctx *c, const char *label, double E0[2], double H0[2],
+              int *dir0)
+{
+  if (eq_given (c, "V0") || eq_given (c, "Omega0"))
+    return eq_fail_usage (c, "with --certified, (%s) takes E and H (E0, "
+                          "H0, dir0): those (A.4) makes of V0 and Omega0 "
+                          "are not ratios of two doubles in general", label);
+  return eq_ratio_in (c, "E0", E0) || eq_ratio_in (c, "H0", H0)
+    || eq_dir_in (c, "dir0", dir0);
+}
+
+int
+eq_cert_A_4 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_closed_form_eh";
+  double L[2], S[2], E0[2], H0[2], S0[2], theta0[2], p[4];
+  int dir0;
+  if (eq_ratio_in (c, "L", L) || eq_ratio_in (c, "S", S)
+      || smooth_eh_in (c, "A.4", E0, H0, &dir0)
+      || eq_ratio_opt (c, "S0", 0.0, S0)
+      || eq_ratio_opt (c, "theta0", 0.0, theta0)
+      || eq_lib (c, fn, chaplygin_certified_smooth_closed_form_eh (L, S0, E0,
+                                                                   theta0,
+                                                                   H0, dir0,
+                                                                   S, p)))
+    return -1;
+  put (c, "E", p[CHAPLYGIN_E], fn);
+  put (c, "theta", p[CHAPLYGIN_THETA], fn);
+  put (c, "H_C", p[CHAPLYGIN_H], fn);
+  return 0;
+}
+
+int
+eq_cert_A_5 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_steady_eh";
+  double Vstar[2], E, H;
+  if (eq_ratio_in (c, "Vstar", Vstar)
+      || eq_lib (c, fn, chaplygin_certified_smooth_steady_eh (Vstar, &E, &H)))
+    return -1;
+  put (c, "E", E, fn);
+  put (c, "H_C", H, fn);
+  return 0;
+}
+
+int
+eq_cert_A_6 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_smooth_reversal_eh";
+  double L[2], E0[2], H0[2], S0[2], Sc;
+  int dir0, reverses;
+  const int eh = eq_choose (c, "E0", "H0", "V0", "Omega0");
+  if (eh < 0)
+    return -1;
+  if (!eh)
+    /* V0, Omega0 exact: (A.6)'s S_c at the E0, H0 (A.4) makes of them is
+       (A.1)'s, exactly */
+    return reversal_phase (c, "V0", "Omega0", "S0", "dir0");
+  if (eq_ratio_in (c, "L", L) || smooth_eh_in (c, "A.6", E0, H0, &dir0)
+      || eq_ratio_opt (c, "S0", 0.0, S0)
+      || eq_lib (c, fn, chaplygin_certified_smooth_reversal_eh (L, S0, E0, H0,
+                                                                dir0,
+                                                                &reverses,
+                                                                &Sc)))
+    return -1;
+  put_reversal (c, reverses, Sc, fn);
+  return 0;
+}
+
 /* ---- the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) ---- */
 
 /* ---- the massless skate, (B.14)-(B.17) ---- */
