@@ -57,6 +57,12 @@ set_q (mpfr_t y, const void *x)
 double
 cr_round_fr (const mpfr_t x)
 {
+  /* far outside binary64's range: infinity or a signed zero (the range
+     binary64 sets must hold X's exponent) */
+  if (mpfr_regular_p (x) && mpfr_get_exp (x) > 1100)
+    return mpfr_signbit (x) ? -HUGE_VAL : HUGE_VAL;
+  if (mpfr_regular_p (x) && mpfr_get_exp (x) < -1100)
+    return mpfr_signbit (x) ? -0.0 : 0.0;
   return binary64 (set_fr, x);
 }
 

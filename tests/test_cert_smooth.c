@@ -31,130 +31,13 @@
 #include <mpfr.h>
 
 #include "testutil.h"
+#include "certref.h"
 #include "chaplygin.h"
 
 enum { RP = 3000 };             /* the transcendental route's precision */
 
 /* ---- the reference route ---------------------------------------------- */
 
-/* Q = R[0]/R[1] (GMP converts doubles exactly). */
-static void
-q_of (mpq_t q, const double r[2])
-{
-  mpq_t d;
-  mpq_init (d);
-  mpq_set_d (q, r[0]);
-  mpq_set_d (d, r[1]);
-  mpq_div (q, q, d);
-  mpq_clear (d);
-}
-
-/* The double nearest to the MPFR number X, ties to even, subnormals
-   included (binary64 emulated as MPFR's manual says). */
-static double
-round_fr (const mpfr_t x)
-{
-  /* far outside binary64's range: infinity or a signed zero (the range
-     set below must hold X's exponent) */
-  if (mpfr_regular_p (x) && mpfr_get_exp (x) > 1100)
-    return mpfr_signbit (x) ? -HUGE_VAL : HUGE_VAL;
-  if (mpfr_regular_p (x) && mpfr_get_exp (x) < -1100)
-    return mpfr_signbit (x) ? -0.0 : 0.0;
-  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
-  mpfr_t y;
-  mpfr_set_emin (-1073);
-  mpfr_set_emax (1024);
-  mpfr_init2 (y, 53);
-  int t = mpfr_set (y, x, MPFR_RNDN);
-  t = mpfr_subnormalize (y, t, MPFR_RNDN);
-  const double d = mpfr_get_d (y, MPFR_RNDN);
-  mpfr_clear (y);
-  mpfr_set_emin (emin);
-  mpfr_set_emax (emax);
-  return d;
-}
-
-static double
-round_q (const mpq_t q)
-{
-  mpfr_t y;
-  mpfr_init2 (y, RP);
-  mpfr_set_q (y, q, MPFR_RNDN);
-  /* exact enough: a rational within 2^-3000 of a midpoint is not one of
-     the cases below unless it is the midpoint, which a 3000-bit
-     significand holds exactly */
-  const double d = round_fr (y);
-  mpfr_clear (y);
-  return d;
-}
-
-/* The same doubles, signed zeros told apart. */
-static int
-same (double a, double b)
-{
-  return a == b && signbit (a) == signbit (b);
-}
-
-#define ck_assert_same(got, want)                                           \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (same (g_, w_), "%s = %a (%.17g), want %a (%.17g)",     \
-                     #got, g_, g_, w_, w_);                                 \
-    }                                                                       \
-  while (0)
-
-/* |A - B| in units of the last place of B. */
-static double
-ulps (double a, double b)
-{
-  if (a == b)
-    return 0.0;
-  const double u = nextafter (fabs (b), HUGE_VAL) - fabs (b);
-  return fabs (a - b) / (u > 0.0 ? u : DBL_MIN);
-}
-
-#define ck_assert_ulps(got, want, n)                                        \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (ulps (g_, w_) <= (n), "%s = %.17g, want %.17g "        \
-                     "within %g ulps: %g", #got, g_, w_, (double) (n),      \
-                     ulps (g_, w_));                                        \
-    }                                                                       \
-  while (0)
-
-/* A random exact input near X: P/(Q 2^k) with Q up to 2^20 (kind 0), up
-   to 2^53 - 1 (kind 1), or the double X itself (kind 2). */
-static void
-ratio_near (tu_rng *g, double x, double r[2])
-{
-  const int kind = (int) tu_uniform (g, 0.0, 3.0);
-  if (kind == 2 || x == 0.0)
-    {
-      r[0] = x;
-      r[1] = 1.0;
-      return;
-    }
-  const int k = ilogb (x) < 0 ? -ilogb (x) : 0;
-  double q = floor (tu_uniform (g, 1.0, kind ? 0x1p53 : 0x1p20));
-  double p = nearbyint (ldexp (x, k) * q);
-  while (!(fabs (p) < 0x1p53))
-    {
-      q = floor (q / 2.0) + 1.0;
-      p = nearbyint (ldexp (x, k) * q);
-    }
-  r[0] = p;
-  r[1] = ldexp (q, k);
-}
-
-static void
-ratio_in (tu_rng *g, double a, double b, double r[2])
-{
-  ratio_near (g, tu_uniform (g, a, b), r);
-}
-
-#define AS_RATIO(x) ((const double[2]) { (x), 1.0 })
 
 /* 1 + L^2. */
 static void
@@ -203,7 +86,7 @@ ref_motion (const mpq_t L, const mpq_t sg, const mpfr_t V0, const mpq_t V0sq,
   mpfr_div_q (sc, sc, t, MPFR_RNDN);
   const int past = approaching && mpfr_cmp_q (sc, sg) < 0;
   mpfr_add_q (y, sc, S0, MPFR_RNDN);
-  r->Sc = round_fr (y);
+  r->Sc = cr_round_fr (y);
   /* x = s0 sigma, or s0 (2 sigma_c - sigma); u = exp(-a x) */
   if (past)
     {
@@ -218,7 +101,7 @@ ref_motion (const mpq_t L, const mpq_t sg, const mpfr_t V0, const mpq_t V0sq,
   mpfr_neg (u, u, MPFR_RNDN);
   mpfr_exp (u, u, MPFR_RNDN);
   mpfr_mul_q (y, u, W, MPFR_RNDN);
-  r->Omega = round_fr (y);
+  r->Omega = cr_round_fr (y);
   /* V = K s0 sqrt(2E - B2 Omega0^2 u^2) */
   mpfr_sqr (f, u, MPFR_RNDN);
   mpfr_mul_q (f, f, bo2, MPFR_RNDN);
@@ -227,7 +110,7 @@ ref_motion (const mpq_t L, const mpq_t sg, const mpfr_t V0, const mpq_t V0sq,
   mpfr_sqrt (f, f, MPFR_RNDN);
   if ((s0 < 0) != past)
     mpfr_neg (f, f, MPFR_RNDN);
-  r->V = round_fr (f);
+  r->V = cr_round_fr (f);
   r->K = past ? -1 : 1;
   /* theta = theta0 + s0 sgn(Omega0) (B/L) [asin k -+ asin(k u) (- pi)] */
   mpq_div (t, bo2, e2);
@@ -251,7 +134,7 @@ ref_motion (const mpq_t L, const mpq_t sg, const mpfr_t V0, const mpq_t V0sq,
   if ((s0 < 0) != (mpq_sgn (Om0) < 0))
     mpfr_neg (y, y, MPFR_RNDN);
   mpfr_add_q (y, y, th0, MPFR_RNDN);
-  r->theta = round_fr (y);
+  r->theta = cr_round_fr (y);
   /* z = sgn(V) log((c + |V|)/(B |Omega|)), dtau = (z - z0)/(a c) */
   mpfr_set_q (c, e2, MPFR_RNDN);
   mpfr_sqrt (c, c, MPFR_RNDN);
@@ -273,7 +156,7 @@ ref_motion (const mpq_t L, const mpq_t sg, const mpfr_t V0, const mpq_t V0sq,
   mpfr_sub (z, z, z0, MPFR_RNDN);
   mpfr_div (z, z, c, MPFR_RNDN);
   mpfr_div_q (z, z, a, MPFR_RNDN);
-  r->dtau = round_fr (z);
+  r->dtau = cr_round_fr (z);
   mpq_clears (B2, a, e2, bo2, t, NULL);
   mpfr_clears (sc, x, u, f, k, ku, B, c, z, z0, y, (mpfr_ptr) 0);
 }
@@ -290,12 +173,12 @@ ref_phase (const double L[2], const double S0[2], const double V0[2],
   mpfr_t v;
   mpq_inits (l, s0, v0, t0, w0, s, v2, NULL);
   mpfr_init2 (v, RP);
-  q_of (l, L);
-  q_of (s0, S0);
-  q_of (v0, V0);
-  q_of (t0, th0);
-  q_of (w0, Om0);
-  q_of (s, S);
+  cr_q_of (l, L);
+  cr_q_of (s0, S0);
+  cr_q_of (v0, V0);
+  cr_q_of (t0, th0);
+  cr_q_of (w0, Om0);
+  cr_q_of (s, S);
   mpq_sub (s, s, s0);
   *general = mpq_sgn (l) != 0 && mpq_sgn (w0) != 0 && mpq_sgn (s) > 0;
   if (*general)
@@ -325,8 +208,8 @@ check_closed_form (const double L[2], const double S0[2], const double V0[2],
   ref_phase (L, S0, V0, th0, Om0, S, &r, &general);
   mpq_t s;
   mpq_init (s);
-  q_of (s, S);
-  ck_assert_same (q[CHAPLYGIN_S], round_q (s));
+  cr_q_of (s, S);
+  ck_assert_same (q[CHAPLYGIN_S], cr_round_q (s));
   if (general)
     {
       ck_assert_same (q[CHAPLYGIN_V], r.V);
@@ -341,22 +224,22 @@ check_closed_form (const double L[2], const double S0[2], const double V0[2],
          dtau (0 and theta0 at the start) */
       mpq_t v, w, t, d;
       mpq_inits (v, w, t, d, NULL);
-      q_of (v, V0);
-      q_of (w, Om0);
-      q_of (t, th0);
-      q_of (d, S0);
+      cr_q_of (v, V0);
+      cr_q_of (w, Om0);
+      cr_q_of (t, th0);
+      cr_q_of (d, S0);
       mpq_sub (d, s, d);
       if (mpq_sgn (d) != 0)
         {
           mpq_div (d, d, v);
           mpq_abs (d, d);
         }
-      ck_assert_same (q[CHAPLYGIN_V], round_q (v));
-      ck_assert_same (q[CHAPLYGIN_OMEGA], round_q (w));
-      ck_assert_same (dtau, round_q (d));
+      ck_assert_same (q[CHAPLYGIN_V], cr_round_q (v));
+      ck_assert_same (q[CHAPLYGIN_OMEGA], cr_round_q (w));
+      ck_assert_same (dtau, cr_round_q (d));
       mpq_mul (d, d, w);
       mpq_add (t, t, d);
-      ck_assert_same (q[CHAPLYGIN_THETA], round_q (t));
+      ck_assert_same (q[CHAPLYGIN_THETA], cr_round_q (t));
       ck_assert_int_eq (K, 1);
       mpq_clears (v, w, t, d, NULL);
     }
@@ -375,21 +258,21 @@ START_TEST (certified_2_1)
   for (int i = 0; i < 3000; i++)
     {
       double l[2], v[2], w[2], dq[4];
-      ratio_in (&g, -5.0, 5.0, l);
-      ratio_in (&g, -4.0, 4.0, v);
-      ratio_in (&g, -4.0, 4.0, w);
+      cr_ratio_in (&g, -5.0, 5.0, l);
+      cr_ratio_in (&g, -4.0, 4.0, v);
+      cr_ratio_in (&g, -4.0, 4.0, w);
       if (i % 50 == 0)
         l[0] = 0.0;
       ck_assert_ok (chaplygin_certified_smooth_field (l, v, w, dq));
-      q_of (L, l);
-      q_of (V, v);
-      q_of (W, w);
+      cr_q_of (L, l);
+      cr_q_of (V, v);
+      cr_q_of (W, w);
       mpq_abs (x, V);
-      ck_assert_same (dq[CHAPLYGIN_S], round_q (x));
+      ck_assert_same (dq[CHAPLYGIN_S], cr_round_q (x));
       mpq_mul (x, W, W);
       mpq_mul (x, x, L);
-      ck_assert_same (dq[CHAPLYGIN_V], round_q (x));
-      ck_assert_same (dq[CHAPLYGIN_THETA], round_q (W));
+      ck_assert_same (dq[CHAPLYGIN_V], cr_round_q (x));
+      ck_assert_same (dq[CHAPLYGIN_THETA], cr_round_q (W));
       /* dOmega = -V Omega/(L + 1/L) (0 at L = 0) */
       mpq_set_ui (x, 0, 1);
       if (mpq_sgn (L) != 0)
@@ -400,7 +283,7 @@ START_TEST (certified_2_1)
           mpq_div (x, x, t);
           mpq_neg (x, x);
         }
-      ck_assert_same (dq[CHAPLYGIN_OMEGA], round_q (x));
+      ck_assert_same (dq[CHAPLYGIN_OMEGA], cr_round_q (x));
       if (l[1] == 1.0 && v[1] == 1.0 && w[1] == 1.0)
         {
           double q[4] = { 0.0, v[0], 0.0, w[0] }, du[4];
@@ -456,33 +339,33 @@ START_TEST (certified_2_4)
   for (int i = 0; i < 3000; i++)
     {
       double l[2], v[2], th[2], tau[2], q[4], E, H, xi;
-      ratio_in (&g, -5.0, 5.0, l);
-      ratio_in (&g, -4.0, 4.0, v);
-      ratio_in (&g, -3.0, 3.0, th);
-      ratio_in (&g, -2.0, 10.0, tau);
+      cr_ratio_in (&g, -5.0, 5.0, l);
+      cr_ratio_in (&g, -4.0, 4.0, v);
+      cr_ratio_in (&g, -3.0, 3.0, th);
+      cr_ratio_in (&g, -2.0, 10.0, tau);
       ck_assert_ok (chaplygin_certified_smooth_steady (v, th, tau, q, &E,
                                                        &H));
       ck_assert_ok (chaplygin_certified_smooth_eigenvalue (l, v, &xi));
-      q_of (L, l);
-      q_of (V, v);
-      q_of (T, tau);
+      cr_q_of (L, l);
+      cr_q_of (V, v);
+      cr_q_of (T, tau);
       mpq_abs (x, V);
       mpq_mul (x, x, T);
-      ck_assert_same (q[CHAPLYGIN_S], round_q (x));
-      ck_assert_same (q[CHAPLYGIN_V], round_q (V));
-      q_of (x, th);
-      ck_assert_same (q[CHAPLYGIN_THETA], round_q (x));
+      ck_assert_same (q[CHAPLYGIN_S], cr_round_q (x));
+      ck_assert_same (q[CHAPLYGIN_V], cr_round_q (V));
+      cr_q_of (x, th);
+      ck_assert_same (q[CHAPLYGIN_THETA], cr_round_q (x));
       ck_assert_same (q[CHAPLYGIN_OMEGA], 0.0);
       ck_assert_same (H, 0.0);
       mpq_mul (x, V, V);
       mpq_div_2exp (x, x, 1);
-      ck_assert_same (E, round_q (x));
+      ck_assert_same (E, cr_round_q (x));
       /* xi4 = -V* /(L + 1/L) */
       mpq_inv (t, L);
       mpq_add (t, t, L);
       mpq_div (x, V, t);
       mpq_neg (x, x);
-      ck_assert_same (xi, round_q (x));
+      ck_assert_same (xi, cr_round_q (x));
       if (l[1] == 1.0 && v[1] == 1.0)
         {
           double xu;
@@ -539,12 +422,12 @@ START_TEST (certified_A_5)
   for (int i = 0; i < 2000; i++)
     {
       double v[2], E, H;
-      ratio_in (&g, -4.0, 4.0, v);
+      cr_ratio_in (&g, -4.0, 4.0, v);
       ck_assert_ok (chaplygin_certified_smooth_steady_eh (v, &E, &H));
-      q_of (V, v);
+      cr_q_of (V, v);
       mpq_mul (x, V, V);
       mpq_div_2exp (x, x, 1);
-      ck_assert_same (E, round_q (x));
+      ck_assert_same (E, cr_round_q (x));
       ck_assert_same (H, 0.0);
       if (v[1] == 1.0)
         {
@@ -564,7 +447,7 @@ START_TEST (certified_A_5)
   ck_assert (mpz_odd_p (mpq_numref (x)));
   ck_assert (mpz_sizeinbase (mpq_numref (x), 2) == 54);
   mpq_div_2exp (x, x, 1);
-  ck_assert_same (E, round_q (x));
+  ck_assert_same (E, cr_round_q (x));
   /* the even neighbour: 2E = n^2 -+ 1, whichever is a multiple of 4 */
   ck_assert (fabs (2.0 * E - n * n) <= 2.0 && fmod (2.0 * E, 4.0) == 0.0);
   ck_assert_status (chaplygin_certified_smooth_steady_eh (AS_RATIO (1e200),
@@ -599,7 +482,7 @@ ref_sc (const mpq_t L, const mpq_t S0, const mpq_t E0, const mpq_t H0)
   mpq_div_2exp (t, t, 1);
   mpfr_mul_q (y, y, t, MPFR_RNDN);
   mpfr_add_q (y, y, S0, MPFR_RNDN);
-  const double d = round_fr (y);
+  const double d = cr_round_fr (y);
   mpq_clears (B2, t, NULL);
   mpfr_clear (y);
   return d;
@@ -631,10 +514,10 @@ START_TEST (certified_A_1)
     {
       double l[2], s0[2], v[2], w[2], Sc = -1.0;
       int rev;
-      ratio_in (&g, -4.0, 4.0, l);
-      ratio_in (&g, -2.0, 2.0, s0);
-      ratio_in (&g, -3.0, 3.0, v);
-      ratio_in (&g, -3.0, 3.0, w);
+      cr_ratio_in (&g, -4.0, 4.0, l);
+      cr_ratio_in (&g, -2.0, 2.0, s0);
+      cr_ratio_in (&g, -3.0, 3.0, v);
+      cr_ratio_in (&g, -3.0, 3.0, w);
       if (i % 40 == 0)
         v[0] = 0.0;
       if (i % 40 == 1)
@@ -645,10 +528,10 @@ START_TEST (certified_A_1)
         w[0] = ldexp (w[0], -700);              /* w huge */
       ck_assert_ok (chaplygin_certified_smooth_reversal (l, s0, v, w, &rev,
                                                          &Sc));
-      q_of (L, l);
-      q_of (S0, s0);
-      q_of (V, v);
-      q_of (W, w);
+      cr_q_of (L, l);
+      cr_q_of (S0, s0);
+      cr_q_of (V, v);
+      cr_q_of (W, w);
       const int want = mpq_sgn (L) * mpq_sgn (V) < 0 && mpq_sgn (W) != 0;
       ck_assert_int_eq (rev, want);
       if (!want)
@@ -719,15 +602,15 @@ START_TEST (certified_A_6)
     {
       double l[2], s0[2], e[2], h[2], Sc = -1.0;
       int rev;
-      ratio_in (&g, -4.0, 4.0, l);
-      ratio_in (&g, -2.0, 2.0, s0);
-      ratio_in (&g, 0.0, 4.0, e);
-      ratio_in (&g, -6.0, 6.0, h);
+      cr_ratio_in (&g, -4.0, 4.0, l);
+      cr_ratio_in (&g, -2.0, 2.0, s0);
+      cr_ratio_in (&g, 0.0, 4.0, e);
+      cr_ratio_in (&g, -6.0, 6.0, h);
       const int dir0 = i % 2 ? 1 : -1;
-      q_of (L, l);
-      q_of (S0, s0);
-      q_of (E, e);
-      q_of (H, h);
+      cr_q_of (L, l);
+      cr_q_of (S0, s0);
+      cr_q_of (E, e);
+      cr_q_of (H, h);
       one_plus_sq (B2, L);
       mpq_mul (v2, H, H);
       mpq_div (v2, v2, B2);
@@ -807,12 +690,12 @@ START_TEST (certified_A_2)
   for (int i = 0; i < 400; i++)
     {
       double l[2], s0[2], v[2], th[2], w[2], s[2];
-      ratio_in (&g, -3.0, 3.0, l);
-      ratio_in (&g, -1.0, 1.0, s0);
-      ratio_in (&g, -2.0, 2.0, v);
-      ratio_in (&g, -1.0, 1.0, th);
-      ratio_in (&g, -2.0, 2.0, w);
-      ratio_in (&g, s0[0] / s0[1], s0[0] / s0[1] + 6.0, s);
+      cr_ratio_in (&g, -3.0, 3.0, l);
+      cr_ratio_in (&g, -1.0, 1.0, s0);
+      cr_ratio_in (&g, -2.0, 2.0, v);
+      cr_ratio_in (&g, -1.0, 1.0, th);
+      cr_ratio_in (&g, -2.0, 2.0, w);
+      cr_ratio_in (&g, s0[0] / s0[1], s0[0] / s0[1] + 6.0, s);
       if (s[0] / s[1] < s0[0] / s0[1])
         memcpy (s, s0, sizeof s);
       if (i % 25 == 0)
@@ -954,14 +837,14 @@ START_TEST (certified_A_3)
     {
       double l[2], v[2], w[2], s[2], Sc;
       int K, rev;
-      ratio_in (&g, -3.0, 3.0, l);
-      ratio_in (&g, -2.0, 2.0, v);
-      ratio_in (&g, -2.0, 2.0, w);
+      cr_ratio_in (&g, -3.0, 3.0, l);
+      cr_ratio_in (&g, -2.0, 2.0, v);
+      cr_ratio_in (&g, -2.0, 2.0, w);
       ck_assert_ok (chaplygin_certified_smooth_reversal (l, AS_RATIO (0.0), v,
                                                          w, &rev, &Sc));
       if (!rev)
         {
-          ratio_in (&g, 0.0, 5.0, s);
+          cr_ratio_in (&g, 0.0, 5.0, s);
           ck_assert_ok (chaplygin_certified_smooth_branch
                         (l, AS_RATIO (0.0), v, w, s, &K));
           ck_assert_int_eq (K, 1);
@@ -1023,12 +906,12 @@ check_eh (const double L[2], const double S0[2], const double E0[2],
   mpfr_t v;
   mpq_inits (l, s0, e, t0, h, s, B2, v2, w0, sg, NULL);
   mpfr_init2 (v, RP);
-  q_of (l, L);
-  q_of (s0, S0);
-  q_of (e, E0);
-  q_of (t0, th0);
-  q_of (h, H0);
-  q_of (s, S);
+  cr_q_of (l, L);
+  cr_q_of (s0, S0);
+  cr_q_of (e, E0);
+  cr_q_of (t0, th0);
+  cr_q_of (h, H0);
+  cr_q_of (s, S);
   one_plus_sq (B2, l);
   mpq_mul (v2, h, h);
   mpq_div (v2, v2, B2);
@@ -1040,16 +923,16 @@ check_eh (const double L[2], const double S0[2], const double E0[2],
     ck_assert_int_eq (st, CHAPLYGIN_ESTATE);
   else if (st == CHAPLYGIN_SUCCESS)
     {
-      ck_assert_same (p[CHAPLYGIN_S], round_q (s));
-      ck_assert_same (p[CHAPLYGIN_E], round_q (e));
+      ck_assert_same (p[CHAPLYGIN_S], cr_round_q (s));
+      ck_assert_same (p[CHAPLYGIN_E], cr_round_q (e));
       mpfr_set_q (v, v2, MPFR_RNDN);
       mpfr_sqrt (v, v, MPFR_RNDN);
       if (dir0 < 0)
         mpfr_neg (v, v, MPFR_RNDN);
       if (mpq_sgn (sg) == 0)
         {
-          ck_assert_same (p[CHAPLYGIN_THETA], round_q (t0));
-          ck_assert_same (p[CHAPLYGIN_H], round_q (h));
+          ck_assert_same (p[CHAPLYGIN_THETA], cr_round_q (t0));
+          ck_assert_same (p[CHAPLYGIN_H], cr_round_q (h));
         }
       else if (mpq_sgn (l) == 0 || mpq_sgn (h) == 0)
         {
@@ -1061,8 +944,8 @@ check_eh (const double L[2], const double S0[2], const double E0[2],
           mpfr_abs (v, v, MPFR_RNDN);
           mpfr_div (y, y, v, MPFR_RNDN);
           mpfr_add_q (y, y, t0, MPFR_RNDN);
-          ck_assert_same (p[CHAPLYGIN_THETA], round_fr (y));
-          ck_assert_same (p[CHAPLYGIN_H], round_q (h));
+          ck_assert_same (p[CHAPLYGIN_THETA], cr_round_fr (y));
+          ck_assert_same (p[CHAPLYGIN_H], cr_round_q (h));
           mpfr_clear (y);
         }
       else
@@ -1087,12 +970,12 @@ START_TEST (certified_A_4)
   for (int i = 0; i < 400; i++)
     {
       double l[2], s0[2], e[2], th[2], h[2], s[2];
-      ratio_in (&g, -3.0, 3.0, l);
-      ratio_in (&g, -1.0, 1.0, s0);
-      ratio_in (&g, 0.0, 3.0, e);
-      ratio_in (&g, -1.0, 1.0, th);
-      ratio_in (&g, -3.0, 3.0, h);
-      ratio_in (&g, s0[0] / s0[1], s0[0] / s0[1] + 6.0, s);
+      cr_ratio_in (&g, -3.0, 3.0, l);
+      cr_ratio_in (&g, -1.0, 1.0, s0);
+      cr_ratio_in (&g, 0.0, 3.0, e);
+      cr_ratio_in (&g, -1.0, 1.0, th);
+      cr_ratio_in (&g, -3.0, 3.0, h);
+      cr_ratio_in (&g, s0[0] / s0[1], s0[0] / s0[1] + 6.0, s);
       if (s[0] / s[1] < s0[0] / s0[1])
         memcpy (s, s0, sizeof s);
       if (i % 20 == 1)
