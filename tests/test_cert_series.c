@@ -1343,12 +1343,9 @@ START_TEST (certified_errors)
   ck_assert_int_eq (chaplygin_certified_heading (one, third, one, one, third,
                                                  &x, &y), 0);
   ck_assert (x == 0.0 && y == 0.0);
-  /* the spinning point: L0 = -1/2, from D0 = 0 (l0 = -1/2) to D = 1/2
-     (l = 0) with 2E = H^2: Omega0 = 4/5 (H = 1), V0^2 = 1 - 4/5 = 1/5:
-     irrational; V0 = 1/2, 1 + l0^2 = 5/4, Omega0 = w: 2E = 1/4 + 5w^2/4,
-     H^2 = 25 w^2/16: w^2 = 4/5 no.  L0 = -3/4: 1 + l0^2 = 25/16:
-     2E = V0^2 + 25 w^2/16 = 625 w^2/256: V0^2 = 225 w^2/256, V0 = 15w/16:
-     w = 16/15, V0 = 1. */
+  /* the spinning point: L0 = -3/4, D0 = 0 (1 + l0^2 = 25/16), V0 = 1,
+     Omega0 = 16/15: 2E = 1 + 25 (16/15)^2/16 = 25/9 = H^2; D = 3/4 is
+     l = 0 (ESPIN), D = 1 beyond it (ESTATE) */
   const double L0s[2] = { -3.0, 4.0 }, w0[2] = { 16.0, 15.0 };
   ck_assert_int_eq (chaplygin_certified_heading (L0s, zero, one, w0,
                                                  (const double[2]) { 3.0,
@@ -1397,8 +1394,7 @@ START_TEST (certified_errors)
                     (mhalf, one, 1, half, one, 0, &x, &y), 0);
   ck_assert_int_eq (chaplygin_certified_energy_after
                     (one, third, 2, one, one, 1, &x, &y), CHAPLYGIN_EINVAL);
-  /* (B.10) diverging: L0 = -2, Delta = 1, dir = +1 (C2 = 3, l_f = -1, away
-     from 0?  dir l_f < 0: |C2| >= 1) */
+  /* (B.10) diverging: L0 = 1, Delta = 1, dir = -1 (C2 = 2: |C2| >= 1) */
   ck_assert_int_eq (chaplygin_certified_final_energy
                     (AS_RATIO (1.0), AS_RATIO (1.0), -1, AS_RATIO (10.0),
                      one, &x), CHAPLYGIN_EDOM);
