@@ -1394,7 +1394,7 @@ START_TEST (certified_errors)
                     (mhalf, one, 1, half, one, 0, &x, &y), 0);
   ck_assert_int_eq (chaplygin_certified_energy_after
                     (one, third, 2, one, one, 1, &x, &y), CHAPLYGIN_EINVAL);
-  /* (B.10) diverging: L0 = 1, Delta = 1, dir = -1 (C2 = 2: |C2| >= 1) */
+  /* (B.10) diverging: L0 = 1, Delta = 1, dir = -1 (C2 = 3/2) */
   ck_assert_int_eq (chaplygin_certified_final_energy
                     (AS_RATIO (1.0), AS_RATIO (1.0), -1, AS_RATIO (10.0),
                      one, &x), CHAPLYGIN_EDOM);
