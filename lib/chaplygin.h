@@ -1817,9 +1817,10 @@ int chaplygin_certified_two_turning_points (const double L0[2],
    rounded once.  The paths of the @n collisions are checked exactly (the
    first and the $(n-1)$-th: the run is monotone), consistently with
    chaplygin_certified_collisions_before_reversal.  $n = 0$ returns the
-   state.  The exact power $C_2^(n-1)$ is formed up to $2^24$ bits
-   (numerator plus denominator, about 0.1 s); beyond, CHAPLYGIN_ECAP,
-   except for $H = 0$ and $C_2 = 0$ or $+-1$, which cost nothing.
+   state.  The exact power $C_2^(n-1)$ is formed up to $2^22$ bits
+   (numerator plus denominator, about 2 s; $n$ up to about 838000 for
+   $C_2 = 3/5$); beyond, CHAPLYGIN_ECAP, except for $H = 0$ and $C_2 = 0$
+   or $+-1$, which cost nothing.
 
    Domain: as chaplygin_discrete_energy_after's, decided exactly.
 
