@@ -56,16 +56,6 @@
 #include "cert-eval.h"
 #include "cert-round.h"
 
-/* ---- exact numbers ---------------------------------------------------- */
-
-/* l at the ends of the slot: L[0] = L0, L[1] = L0 + Delta. */
-static void
-ends (fmpq_t l0, fmpq_t l1, const fmpq_t L0, const fmpq_t Delta)
-{
-  fmpq_set (l0, L0);
-  fmpq_add (l1, L0, Delta);
-}
-
 /* ---- (3.3), (3.4) ----------------------------------------------------- */
 
 int
@@ -120,19 +110,6 @@ chaplygin_certified_momentum (const double L0[2], const double D[2],
 
 /* ---- (3.6), (3.7) ----------------------------------------------------- */
 
-/* C2 = [1 + L0 (L0 + Delta)]/(1 + B^2), B = L0 + D- at the end the peg
-   leaves, into C (T scratch). */
-static void
-momentum_ratio (fmpq_t c, const fmpq_t L0, const fmpq_t Delta,
-                const fmpq_t b, fmpq_t t)
-{
-  fmpq_add (c, L0, Delta);
-  fmpq_mul (c, c, L0);
-  fmpq_add_ui (c, c, 1);
-  chp_cert_one_plus_sq (t, b);
-  fmpq_div (c, c, t);
-}
-
 int
 chaplygin_certified_collide (const double L0[2], const double Delta[2],
                              const double V[2], const double Omega[2],
@@ -162,7 +139,7 @@ chaplygin_certified_collide (const double L0[2], const double Delta[2],
       else
         fmpq_set (Dp, qD);
       fmpq_add (b, qL, Dp);     /* b' */
-      momentum_ratio (c, qL, qD, b, t);
+      chp_cert_momentum_ratio (c, qL, qD, b, t);
       fmpq_mul (c, c, w);
       status = chp_cert_round_fmpq (Dp, &r[CHAPLYGIN_D]);
       if (!status)
@@ -226,7 +203,7 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
       fmpq_div (u, u, t);
       fmpq_sub (e, e, u);
       /* H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H- */
-      momentum_ratio (u, qL, qD, b, t);
+      chp_cert_momentum_ratio (u, qL, qD, b, t);
       fmpq_mul (h, h, u);
       status = chp_cert_round_fmpq (Dp, &r[CHAPLYGIN_D]);
       if (!status)
@@ -311,9 +288,9 @@ sigma4_q (fmpq_t sg, const fmpq_t L0, const fmpq_t Delta, int dir, fmpq_t t)
 {
   fmpq_add (t, L0, Delta);
   if (dir > 0)
-    momentum_ratio (sg, L0, Delta, t, t);
+    chp_cert_momentum_ratio (sg, L0, Delta, t, t);
   else
-    momentum_ratio (sg, L0, Delta, L0, t);
+    chp_cert_momentum_ratio (sg, L0, Delta, L0, t);
 }
 
 int
@@ -359,17 +336,6 @@ chaplygin_certified_stable (const double L0[2], const double Delta[2],
 
 /* ---- (3.13)-(3.15), (B.7) --------------------------------------------- */
 
-/* The path of direction DIR: l at its start LS and far end LF. */
-static void
-path_ends (fmpq_t ls, fmpq_t lf, const fmpq_t L0, const fmpq_t Delta,
-           int dir)
-{
-  if (dir > 0)
-    ends (ls, lf, L0, Delta);
-  else
-    ends (lf, ls, L0, Delta);
-}
-
 int
 chaplygin_certified_ratio_lower_bound (const double L0[2],
                                        const double Delta[2], int dir,
@@ -384,7 +350,7 @@ chaplygin_certified_ratio_lower_bound (const double L0[2],
   if (!status)
     {
       /* 1/(1 + l_s^2) */
-      path_ends (ls, lf, qL, qD, dir);
+      chp_cert_path_ends (ls, lf, qL, qD, dir);
       chp_cert_one_plus_sq (t, ls);
       fmpq_inv (t, t);
       status = chp_cert_round_fmpq (t, rmin);
@@ -411,7 +377,7 @@ chaplygin_certified_reversal_range (const double L0[2],
     {
       /* rlo = 1/(1 + l_s^2); toward l = 0 (dir l_s < 0): rhi = 1/(1 + m^2),
          m = 0 if the path reaches l = 0, else |l_f|; away: rhi = rlo */
-      path_ends (ls, lf, qL, qD, dir);
+      chp_cert_path_ends (ls, lf, qL, qD, dir);
       chp_cert_one_plus_sq (lo, ls);
       fmpq_inv (lo, lo);
       const int toward = dir * fmpq_sgn (ls) < 0;
@@ -453,7 +419,7 @@ chaplygin_certified_c3 (const double L0[2], const double Delta[2], int dir,
   if (!status)
     {
       /* dir Delta (2 L0 + Delta)/(1 + l_f^2) */
-      path_ends (ls, lf, qL, qD, dir);
+      chp_cert_path_ends (ls, lf, qL, qD, dir);
       fmpq_mul_2exp (c, qL, 1);
       fmpq_add (c, c, qD);
       fmpq_mul (c, c, qD);
@@ -656,7 +622,7 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
   chp_cert_qset s;
   chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *Dp = s.q[2], *Dm = s.q[3], *b = s.q[4];
-  fmpq *bp = s.q[5], *c1 = s.q[6], *c2 = s.q[7], *t = s.q[8], *u = s.q[9];
+  fmpq *c1 = s.q[5], *c2 = s.q[6];
   int status = chp_cert_slot_in (qL, qD, L0, Delta);
   if (!status && chp_cert_in (Dp, Dplus))
     status = CHAPLYGIN_EDOM;
@@ -665,24 +631,13 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
   if (!status)
     {
       /* (3.7) at the end the peg leaves, D- = Delta - D+ (B.3) or D+
-         (B.4): b = L0 + D-, b' = L0 + Delta - D-;
-         C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)), C2 of momentum_ratio */
+         (B.4): b = L0 + D- */
       if (reversal)
         fmpq_set (Dm, Dp);
       else
         fmpq_sub (Dm, qD, Dp);
       fmpq_add (b, qL, Dm);
-      fmpq_add (bp, qL, qD);
-      fmpq_sub (bp, bp, Dm);
-      momentum_ratio (c2, qL, qD, b, t);
-      chp_cert_one_plus_sq (t, b);
-      fmpq_mul (t, t, t);
-      chp_cert_one_plus_sq (u, bp);
-      fmpq_mul (t, t, u);
-      fmpq_mul_2exp (t, t, 1);
-      fmpq_mul (c1, qD, qD);
-      fmpq_div (c1, c1, t);
-      fmpq_neg (c1, c1);
+      chp_cert_coefficients (c1, c2, qL, qD, b);
       double x, y;
       status = chp_cert_round_fmpq (c1, &x);
       if (!status)
@@ -892,7 +847,7 @@ chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
   if (!status)
     {
       /* a valid start: 2E (1 + l_s^2) - H^2 > 0 */
-      path_ends (ls, lf, qL, qD, dir);
+      chp_cert_path_ends (ls, lf, qL, qD, dir);
       chp_cert_one_plus_sq (t, ls);
       fmpq_mul (t, t, e);
       fmpq_mul_2exp (t, t, 1);
@@ -902,34 +857,20 @@ chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
     }
   if (!status)
     {
-      /* q = 1 - H^2/(2E); the segment's outcome (certified.c's rule):
-         q = 0 reaching l = 0 spins, q < 0 reverses where it reaches l = 0
-         or l_f^2 + q <= 0 */
-      fmpq_div (q, u, e);
-      fmpq_div_2exp (q, q, 1);
-      fmpq_sub_ui (q, q, 1);
-      fmpq_neg (q, q);
-      const int reaches0 = fmpq_sgn (ls) * fmpq_sgn (lf) <= 0;
-      fmpq_mul (t, lf, lf);
-      fmpq_add (t, t, q);
-      if (fmpq_is_zero (q) && reaches0)
+      /* q = 1 - H^2/(2E) and the segment's outcome (chp_cert_classify) */
+      const int outcome = chp_cert_classify (q, qL, qD, dir, e, h);
+      if (outcome == CHP_CERT_SPIN)
         status = CHAPLYGIN_ESPIN;
-      else if (fmpq_sgn (q) < 0 && (reaches0 || fmpq_sgn (t) <= 0))
+      else if (outcome == CHP_CERT_REVERSE)
         status = CHAPLYGIN_ESTATE;      /* reverses: no (3.9) */
     }
   double r[16] = { 0.0 };
   if (!status)
     {
-      /* the collision at the far end: b = l_f, b' = l_s;
-         J[7] = 2 C1 H, J[15] = C2 */
-      momentum_ratio (c2, qL, qD, lf, t);
-      chp_cert_one_plus_sq (t, lf);
-      fmpq_mul (t, t, t);
-      chp_cert_one_plus_sq (u, ls);
-      fmpq_mul (t, t, u);
-      fmpq_mul (c1, qD, qD);
-      fmpq_div (c1, c1, t);
-      fmpq_neg (c1, c1);                /* 2 C1 */
+      /* the collision at the far end (b = l_f): J[7] = 2 C1 H,
+         J[15] = C2 */
+      chp_cert_coefficients (c1, c2, qL, qD, lf);
+      fmpq_mul_2exp (c1, c1, 1);
       fmpq_mul (c1, c1, h);
       r[5] = r[10] = 1.0;
       status = chp_cert_round_fmpq (c1, &r[7]);

@@ -127,3 +127,105 @@ chp_cert_cmp_sqrt (const fmpq_t r, const fmpq_t t)
   fmpq_clear (t2);
   return c;
 }
+
+/* ---- the discrete skate's exact numbers ------------------------------- */
+
+void
+chp_cert_path_ends (fmpq_t ls, fmpq_t lf, const fmpq_t L0,
+                    const fmpq_t Delta, int dir)
+{
+  fmpq *a = dir > 0 ? ls : lf, *b = dir > 0 ? lf : ls;
+  fmpq_set (a, L0);
+  fmpq_add (b, L0, Delta);
+}
+
+void
+chp_cert_momentum_ratio (fmpq_t c, const fmpq_t L0, const fmpq_t Delta,
+                         const fmpq_t b, fmpq_t t)
+{
+  fmpq_add (c, L0, Delta);
+  fmpq_mul (c, c, L0);
+  fmpq_add_ui (c, c, 1);
+  chp_cert_one_plus_sq (t, b);
+  fmpq_div (c, c, t);
+}
+
+void
+chp_cert_coefficients (fmpq_t C1, fmpq_t C2, const fmpq_t L0,
+                       const fmpq_t Delta, const fmpq_t b)
+{
+  fmpq_t t, u;
+  fmpq_init (t);
+  fmpq_init (u);
+  chp_cert_momentum_ratio (C2, L0, Delta, b, t);
+  /* t = 1 + b^2;  u = b' = 2 L0 + Delta - b */
+  fmpq_mul_2exp (u, L0, 1);
+  fmpq_add (u, u, Delta);
+  fmpq_sub (u, u, b);
+  chp_cert_one_plus_sq (u, u);
+  fmpq_mul (u, u, t);
+  fmpq_mul (u, u, t);
+  fmpq_mul_2exp (u, u, 1);
+  fmpq_mul (C1, Delta, Delta);
+  fmpq_div (C1, C1, u);
+  fmpq_neg (C1, C1);
+  fmpq_clear (t);
+  fmpq_clear (u);
+}
+
+void
+chp_cert_g (fmpq_t g, const fmpq_t E, const fmpq_t H, const fmpq_t l)
+{
+  fmpq_t t;
+  fmpq_init (t);
+  chp_cert_one_plus_sq (g, l);
+  fmpq_mul (g, g, E);
+  fmpq_mul_2exp (g, g, 1);
+  fmpq_mul (t, H, H);
+  fmpq_sub (g, g, t);
+  fmpq_clear (t);
+}
+
+int
+chp_cert_classify (fmpq_t q, const fmpq_t L0, const fmpq_t Delta, int dir,
+                   const fmpq_t E, const fmpq_t H)
+{
+  fmpq_t ls, lf, t;
+  fmpq_init (ls);
+  fmpq_init (lf);
+  fmpq_init (t);
+  chp_cert_path_ends (ls, lf, L0, Delta, dir);
+  fmpq_mul (t, H, H);
+  fmpq_div (t, t, E);
+  fmpq_div_2exp (t, t, 1);
+  fmpq_one (q);
+  fmpq_sub (q, q, t);
+  const int reaches0 = fmpq_sgn (ls) * fmpq_sgn (lf) <= 0;
+  fmpq_mul (t, lf, lf);
+  fmpq_add (t, t, q);
+  int r = CHP_CERT_PASS;
+  if (fmpq_is_zero (q) && reaches0)
+    r = CHP_CERT_SPIN;
+  else if (fmpq_sgn (q) < 0 && (reaches0 || fmpq_sgn (t) <= 0))
+    r = CHP_CERT_REVERSE;
+  fmpq_clear (ls);
+  fmpq_clear (lf);
+  fmpq_clear (t);
+  return r;
+}
+
+void
+chp_cert_final_energy (fmpq_t Ef, const fmpq_t E, const fmpq_t H,
+                       const fmpq_t C1, const fmpq_t C2)
+{
+  fmpq_t t;
+  fmpq_init (t);
+  fmpq_mul (t, C2, C2);
+  fmpq_sub_ui (t, t, 1);
+  fmpq_neg (t, t);              /* 1 - C2^2 */
+  fmpq_mul (Ef, H, H);
+  fmpq_mul (Ef, Ef, C1);
+  fmpq_div (Ef, Ef, t);
+  fmpq_add (Ef, Ef, E);
+  fmpq_clear (t);
+}

@@ -55,4 +55,45 @@ int chp_cert_round_sqrt_expr (const fmpq_t a, const fmpq_t r, int s,
 /* The sign of sqrt(R) - T (R >= 0), exactly: -1, 0 or 1. */
 int chp_cert_cmp_sqrt (const fmpq_t r, const fmpq_t t);
 
+/* ---- the discrete skate's exact numbers ------------------------------- */
+
+/* The path of direction DIR (+1 or -1): l = L0 + D at its start LS and its
+   far end LF (LS = L0, LF = L0 + Delta for DIR = +1). */
+void chp_cert_path_ends (fmpq_t ls, fmpq_t lf, const fmpq_t L0,
+                         const fmpq_t Delta, int dir);
+
+/* C = [1 + L0 (L0 + Delta)]/(1 + B^2), the momentum ratio C2 of (3.7) for
+   the peg leaving the end B = L0 + D- (T scratch). */
+void chp_cert_momentum_ratio (fmpq_t c, const fmpq_t L0, const fmpq_t Delta,
+                              const fmpq_t b, fmpq_t t);
+
+/* The (3.7) coefficients of the collision at which the peg leaves the end
+   B = L0 + D- (B' = 2 L0 + Delta - B the other end):
+   C1 = -Delta^2/(2 (1 + B^2)^2 (1 + B'^2)), C2 of chp_cert_momentum_ratio. */
+void chp_cert_coefficients (fmpq_t C1, fmpq_t C2, const fmpq_t L0,
+                            const fmpq_t Delta, const fmpq_t b);
+
+/* G = 2E (1 + L^2) - H^2: the sign of V^2 at l = L. */
+void chp_cert_g (fmpq_t g, const fmpq_t E, const fmpq_t H, const fmpq_t l);
+
+/* The outcomes of a path (chp_cert_classify). */
+enum
+{
+  CHP_CERT_PASS = 0,            /* reaches the far end: a (B.3) collision */
+  CHP_CERT_REVERSE = 1,         /* turns back: (B.4) */
+  CHP_CERT_SPIN = 2             /* ends in the spinning state (3.8) */
+};
+
+/* The outcome of the path of direction DIR from the state (E > 0, H),
+   exactly, and *Q = 1 - H^2/(2E): q = 0 on a path that reaches l = 0
+   spins; q < 0 reverses where the path reaches l = 0 or lf^2 + q <= 0 (a
+   turning point exactly at the far end is a reversal, the library's
+   convention). */
+int chp_cert_classify (fmpq_t q, const fmpq_t L0, const fmpq_t Delta,
+                       int dir, const fmpq_t E, const fmpq_t H);
+
+/* (B.10): EF = E + C1 H^2/(1 - C2^2) (C2^2 != 1). */
+void chp_cert_final_energy (fmpq_t Ef, const fmpq_t E, const fmpq_t H,
+                            const fmpq_t C1, const fmpq_t C2);
+
 #endif

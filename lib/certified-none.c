@@ -564,6 +564,120 @@ chaplygin_certified_smooth_steady_eh (const double Vstar[2],
 
 /* ---- the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) (cert-series.c) ---- */
 
+int
+chaplygin_certified_heading (const double L0[2], const double D0[2],
+                             const double V0[2], const double Omega0[2],
+                             const double D[2], double *dtheta,
+                             double *dtau)
+{
+  (void) L0;
+  (void) D0;
+  (void) V0;
+  (void) Omega0;
+  (void) D;
+  (void) dtheta;
+  (void) dtau;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_collisions_before_reversal (const double L0[2],
+                                                const double Delta[2],
+                                                int dir, const double E[2],
+                                                const double H[2],
+                                                int *reverses,
+                                                unsigned long *n)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) E;
+  (void) H;
+  (void) reverses;
+  (void) n;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_two_turning_points (const double L0[2],
+                                        const double Delta[2],
+                                        const double E[2], const double H[2],
+                                        int *two)
+{
+  (void) L0;
+  (void) Delta;
+  (void) E;
+  (void) H;
+  (void) two;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_energy_after (const double L0[2], const double Delta[2],
+                                  int dir, const double E[2],
+                                  const double H[2], unsigned long n,
+                                  double *En, double *Hn)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) E;
+  (void) H;
+  (void) n;
+  (void) En;
+  (void) Hn;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_final_energy (const double L0[2], const double Delta[2],
+                                  int dir, const double E[2],
+                                  const double H[2], double *Ef)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) E;
+  (void) H;
+  (void) Ef;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_energy_converges (const double L0[2],
+                                      const double Delta[2], int dir,
+                                      int *converges)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) converges;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_final_velocity (const double L0[2],
+                                    const double Delta[2], const double V[2],
+                                    const double Omega[2], double *Vf)
+{
+  (void) L0;
+  (void) Delta;
+  (void) V;
+  (void) Omega;
+  (void) Vf;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_spin_sequence (const double Delta[2], unsigned long n,
+                                   double *v2_over_omega2)
+{
+  (void) Delta;
+  (void) n;
+  (void) v2_over_omega2;
+  return CHAPLYGIN_EINVAL;
+}
+
 /* ---- the massless skate, (B.14)-(B.17) (cert-massless.c) ---- */
 
 /* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) (cert-units.c) ---- */

@@ -44,6 +44,7 @@
 #pragma GCC diagnostic ignored "-Wstringop-overflow"
 
 #include "chaplygin.h"
+#include "cert-eval.h"
 #include "cert-leg.h"
 #include "cert-round.h"
 #include "certified.h"
@@ -108,28 +109,13 @@ q_sqrt_exact (fmpq_t s, const fmpq_t q)
   return 1;
 }
 
-/* 2E (1 + l^2) - H^2: the sign of V^2 at l (exact). */
-static void
-g_at (fmpq_t g, const fmpq_t E, const fmpq_t H, const fmpq_t l)
-{
-  fmpq_t t;
-  fmpq_init (t);
-  fmpq_mul (t, l, l);
-  fmpq_add_ui (t, t, 1);
-  fmpq_mul (g, t, E);
-  fmpq_mul_2exp (g, g, 1);
-  fmpq_mul (t, H, H);
-  fmpq_sub (g, g, t);
-  fmpq_clear (t);
-}
-
 /* V^2 = [2E (1 + l^2) - H^2]/(1 + l^2) at l. */
 static void
 v2_at (fmpq_t v2, const fmpq_t E, const fmpq_t H, const fmpq_t l)
 {
   fmpq_t n;
   fmpq_init (n);
-  g_at (v2, E, H, l);
+  chp_cert_g (v2, E, H, l);
   fmpq_mul (n, l, l);
   fmpq_add_ui (n, n, 1);
   fmpq_div (v2, v2, n);
@@ -227,31 +213,12 @@ plan_clear (step_plan *p)
 }
 
 /* The (3.7) coefficients C1, C2 of the collision at which the peg leaves
-   the end LEAVE (computed once per orbit): b = l[leave], b' the other end,
-   C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)), C2 = (1 + b b')/(1 + b^2). */
+   the end LEAVE (computed once per orbit): chp_cert_coefficients. */
 static void
 coefficients (const chaplygin_certified_orbit *o, int leave, fmpq_t C1,
               fmpq_t C2)
 {
-  const fmpq *b = o->l[leave], *bp = o->l[1 - leave];
-  fmpq_t n, t;
-  fmpq_init (n);
-  fmpq_init (t);
-  fmpq_mul (n, b, b);
-  fmpq_add_ui (n, n, 1);        /* 1 + b^2 */
-  fmpq_mul (C2, b, bp);
-  fmpq_add_ui (C2, C2, 1);
-  fmpq_div (C2, C2, n);
-  fmpq_mul (t, bp, bp);
-  fmpq_add_ui (t, t, 1);
-  fmpq_mul (t, t, n);
-  fmpq_mul (t, t, n);
-  fmpq_mul_2exp (t, t, 1);      /* 2 (1 + b^2)^2 (1 + b'^2) */
-  fmpq_mul (C1, o->Delta, o->Delta);
-  fmpq_div (C1, C1, t);
-  fmpq_neg (C1, C1);
-  fmpq_clear (n);
-  fmpq_clear (t);
+  chp_cert_coefficients (C1, C2, o->L0, o->Delta, o->l[leave]);
 }
 
 /* Plan the step of O from (DIR, E, H): CHAPLYGIN_SUCCESS or ESPIN. */
@@ -473,7 +440,7 @@ orbit_make (const fmpq_t L0, const fmpq_t Delta, int dir, const fmpq_t E,
   /* (V+)^2 > 0 at the start, exactly */
   fmpq_t g;
   fmpq_init (g);
-  g_at (g, E, H, o->l[dir > 0 ? 0 : 1]);
+  chp_cert_g (g, E, H, o->l[dir > 0 ? 0 : 1]);
   const int ok = fmpq_sgn (g) > 0;
   fmpq_clear (g);
   if (!ok)
@@ -1128,11 +1095,9 @@ fate_now (const chaplygin_certified_orbit *o, fmpq_t Ef)
     }
   const int s = o->dir > 0 ? 0 : 1;
   const fmpq *l0 = o->l[s], *l1 = o->l[1 - s];
-  fmpq_t g, t, C1, C2;
+  fmpq_t g, t;
   fmpq_init (g);
   fmpq_init (t);
-  fmpq_init (C1);
-  fmpq_init (C2);
   /* the least V^2 on the segment, at its point of least |l| */
   const int crosses = fmpq_sgn (l0) * fmpq_sgn (l1) <= 0;
   fmpq_zero (t);
@@ -1142,7 +1107,7 @@ fate_now (const chaplygin_certified_orbit *o, fmpq_t Ef)
       const int nearer0 = (fmpq_sgn (l0) > 0) == (fmpq_cmp (l0, l1) < 0);
       fmpq_set (t, nearer0 ? l0 : l1);
     }
-  g_at (g, o->E, o->H, t);
+  chp_cert_g (g, o->E, o->H, t);
   int kind = CHAPLYGIN_FATE_UNDECIDED;
   if (fmpq_is_zero (g) && crosses)
     kind = CHAPLYGIN_FATE_SPIN;
@@ -1154,23 +1119,14 @@ fate_now (const chaplygin_certified_orbit *o, fmpq_t Ef)
       fmpq_add_ui (t, t, 2);
       if (o->dir * fmpq_sgn (l1) > 0 && fmpq_sgn (t) > 0)
         {
-          /* (B.10): Ef = E + C1 H^2/(1 - C2^2), the far end's C1, C2 */
-          fmpq_set (C1, o->C1[1 - s]);
-          fmpq_mul (C2, o->C2[1 - s], o->C2[1 - s]);
-          fmpq_one (t);
-          fmpq_sub (t, t, C2);
-          fmpq_mul (Ef, o->H, o->H);
-          fmpq_mul (Ef, Ef, C1);
-          fmpq_div (Ef, Ef, t);
-          fmpq_add (Ef, Ef, o->E);
+          /* (B.10) with the far end's C1, C2 */
+          chp_cert_final_energy (Ef, o->E, o->H, o->C1[1 - s], o->C2[1 - s]);
           if (fmpq_sgn (Ef) > 0)
             kind = o->dir;
         }
     }
   fmpq_clear (g);
   fmpq_clear (t);
-  fmpq_clear (C1);
-  fmpq_clear (C2);
   return kind;
 }
 

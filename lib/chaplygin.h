@@ -1868,6 +1868,182 @@ int chaplygin_certified_smooth_steady_eh (const double Vstar[2], double *E,
 
 /* Certified: the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) (lib/cert-series.c). */
 
+/** (B.2), certified: chaplygin_discrete_heading's heading and time along
+   the leg from @D0 to @D of the phase state (@V0, @Omega0) at @D0
+   (@ref{Erratum E9}):
+     dtheta = sgn(Omega0) |Int_D0^D dD'/sqrt((1 + l^2)(2E (1 + l^2)/H^2 - 1))|,
+     dtau   = |Int_D0^D dD'/V(D')|,   l = L0 + D',
+   @noindent
+   with $E$, $H$ of (3.3), (3.4) at @D0 exact; by cert-leg.c's Carlson forms
+   ($I_1$, $I_2$: $dtheta = H I_1/sqrt(2E)$, $dtau = I_2/sqrt(2E)$) and
+   Ziv's strategy.  $D = D_0$ gives 0 and 0; $Omega_0 = 0$ gives
+   $dtheta = 0$ and the exact $dtau = |D - D_0|/|V_0|$.  The checks that
+   @D is reached (the side $V_0$ points to, or for $V_0 = 0$ the side
+   $(L_0 + D_0) Omega_0^2$ accelerates towards; no turning point and no
+   spinning point before @D, which may be the turning point itself) are
+   exact.  Either output may be null, not both.
+
+   Errors: CHAPLYGIN_EINVAL (also both outputs null), CHAPLYGIN_EDOM,
+   CHAPLYGIN_ESTATE (@D on the wrong side, beyond a turning point or the
+   spinning point, or the skate at rest), CHAPLYGIN_ESPIN (@D the spinning
+   point $l = 0$ with $2E = H^2$, or the start the spinning equilibrium),
+   CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+
+   @dtheta: (optional=True)
+   @dtau: (optional=True)
+ */
+int chaplygin_certified_heading (const double L0[2], const double D0[2],
+                                 const double V0[2], const double Omega0[2],
+                                 const double D[2], double *dtheta,
+                                 double *dtau);
+
+/** (B.6), corrected (@ref{Erratum E20}), certified:
+   chaplygin_discrete_collisions_before_reversal's `*@reverses` and `*@n`,
+   the number of collisions without reversal before the path that reverses,
+   for the post-collision state (@dir, @E, @H), exactly.  With
+   $r = 2E/H^2$, $C_1$, $C_2$ of (B.3) for @dir, $r^* = 2 C_1/(C_2^2 - 1)$
+   and $rho_c = 1/(1 + m^2)$ ($m$ the least $|l|$ on the path), the path
+   after $k$ collisions reverses iff
+     r_k = r* + (r - r*)/C2^(2k) <= rho_c,
+   @noindent
+   so $n$ is the least $k >= 1$ with $B^k >= Z$ for exact rationals
+   $B$, $Z > 1$ ($r_k = r - 2 |C_1| k$ for $C_2^2 = 1$): Arb balls of
+   $log Z/log B$ decide the ceiling, and where a ball holds an integer $j$,
+   $B^j = Z$ is decided exactly (the case $r_n = rho_c$: a turning point
+   exactly at the far end, a reversal; on a path through $l = 0$, the
+   spinning state).  Any count up to $2^62$, at no cost that grows with it.
+
+   Domain: as chaplygin_discrete_collisions_before_reversal's: $E > 0$,
+   $(V^+)^2 > 0$, decided exactly.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$),
+   CHAPLYGIN_ESTATE ($E = 0$, or $(V^+)^2 <= 0$), CHAPLYGIN_ESPIN (the
+   current path, or the path after $n$ collisions, ends in the spinning
+   state), CHAPLYGIN_ERANGE ($n > 2^62$), CHAPLYGIN_ECAP.
+
+   @n: (if=reverses)
+ */
+int chaplygin_certified_collisions_before_reversal (const double L0[2],
+                                                    const double Delta[2],
+                                                    int dir,
+                                                    const double E[2],
+                                                    const double H[2],
+                                                    int *reverses,
+                                                    unsigned long *n);
+
+/** (B.8), corrected (@ref{Erratum E21}), certified:
+   chaplygin_discrete_two_turning_points' `*@two`,
+     max{1/(1 + L0^2), 1/(1 + (L0 + Delta)^2)} < 2E/H^2 < 1,
+     -Delta < L0 < 0,
+   @noindent
+   decided exactly (both turning points of (B.5) strictly inside the slot).
+
+   Domain: $E > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$),
+   CHAPLYGIN_ESTATE ($E = 0$).
+ */
+int chaplygin_certified_two_turning_points (const double L0[2],
+                                            const double Delta[2],
+                                            const double E[2],
+                                            const double H[2], int *two);
+
+/** (B.9), corrected (@ref{Erratum E22}), certified:
+   chaplygin_discrete_energy_after's state after @n collisions without
+   reversal,
+     E_n = E + C1 H^2 (1 - C2^(2n))/(1 - C2^2),   H_n = C2^n H,
+   @noindent
+   ($n$ terms; $E_n = E + n C_1 H^2$ for $C_2^2 = 1$), exact rationals
+   rounded once.  The paths of the @n collisions are checked exactly (the
+   first and the $(n-1)$-th: the run is monotone), consistently with
+   chaplygin_certified_collisions_before_reversal.  $n = 0$ returns the
+   state.  The exact power $C_2^(n-1)$ is formed up to $2^22$ bits
+   (numerator plus denominator, about 2 s; $n$ up to about 838000 for
+   $C_2 = 3/5$); beyond, CHAPLYGIN_ECAP, except for $H = 0$ and $C_2 = 0$
+   or $+-1$, which cost nothing.
+
+   Domain: as chaplygin_discrete_energy_after's, decided exactly.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$),
+   CHAPLYGIN_ESTATE ($E = 0$, $(V^+)^2 <= 0$, or one of the @n paths
+   reverses), CHAPLYGIN_ESPIN (one of them ends in the spinning state),
+   CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_energy_after (const double L0[2],
+                                      const double Delta[2], int dir,
+                                      const double E[2], const double H[2],
+                                      unsigned long n, double *En,
+                                      double *Hn);
+
+/** (B.10), certified: chaplygin_discrete_final_energy's
+     E_f = E + C1 H^2/(1 - C2^2),
+   @noindent
+   exact and rounded once; $E_f = E$ for $H = 0$.
+
+   Domain: as chaplygin_discrete_final_energy's, decided exactly: the
+   current path is classified first, then $|C_2| < 1$, then $E_f >= 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$; $H != 0$ with
+   $|C_2| >= 1$), CHAPLYGIN_ESTATE ($E = 0$, $(V^+)^2 <= 0$, or the motion
+   reverses: now, or later, $E_f < 0$), CHAPLYGIN_ESPIN (the current path
+   ends in the spinning state), CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_final_energy (const double L0[2],
+                                      const double Delta[2], int dir,
+                                      const double E[2], const double H[2],
+                                      double *Ef);
+
+/** (B.11), corrected (@ref{Erratum E23}), certified:
+   chaplygin_discrete_energy_converges' `*@converges`, $|C_2| < 1$ for the
+   (B.3) coefficient of @dir, exactly.  That $C_2$ is $sigma_4$ of (3.10),
+   and the corrected (B.11) is (3.11) for $dir = +1$, (3.12) for $dir = -1$:
+   the decision is chaplygin_certified_stable's.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_energy_converges (const double L0[2],
+                                          const double Delta[2], int dir,
+                                          int *converges);
+
+/** (B.12) and its counterpart for $V < 0$ (@ref{Erratum E24}), certified:
+   chaplygin_discrete_final_velocity's
+     Vf = sgn(V) sqrt(V^2 + kappa (1 + l_s^2) Omega^2) = sgn(V) sqrt(2 E_f),
+   @noindent
+   for the post-collision phase state (@V, @Omega), the peg at the end $V$
+   leaves, with $E_f$ of (B.10) from the exact (3.3), (3.4): exact where
+   $2 E_f$ is the square of a rational, else by Ziv's strategy.
+   $Omega = 0$ gives $V_f = V$.
+
+   Domain: $V != 0$; as chaplygin_discrete_final_velocity's, decided
+   exactly.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $Omega != 0$ with
+   $|C_2| >= 1$), CHAPLYGIN_ESTATE ($V = 0$, or the motion reverses),
+   CHAPLYGIN_ESPIN, CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_final_velocity (const double L0[2],
+                                        const double Delta[2],
+                                        const double V[2],
+                                        const double Omega[2], double *Vf);
+
+/** (B.13), $L_0 = -Delta/2$, with its left side the initial ratio
+   (@ref{Erratum E15}), certified: chaplygin_discrete_spin_sequence's
+     V^2/Omega^2 = a (1 + a) C2^(2n),   a = Delta^2/4,   C2 = (1 - a)/(1 + a),
+   @noindent
+   rational in $Delta$.  $n = 0$: exact, rounded once.  $n >= 1$: the value
+   is not dyadic (so no double and no midpoint) for any $Delta != 2$; by
+   Ziv's strategy on an Arb ball of the power, for any @n.
+
+   Domain: $Delta > 0$; for $Delta = 2$ ($C_2 = 0$) only $n = 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $Delta = 2$ with
+   $n > 0$), CHAPLYGIN_ERANGE (the value rounds to 0, or beyond the
+   doubles), CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_spin_sequence (const double Delta[2],
+                                       unsigned long n,
+                                       double *v2_over_omega2);
+
 /* Certified: the massless skate, (B.14)-(B.17) (lib/cert-massless.c). */
 
 /* Certified: the units and fields, (2.2), (2.3), (3.1), (3.2) (lib/cert-units.c). */

@@ -18,6 +18,7 @@
    file is then empty, and the table names no certified evaluator. */
 #include <config.h>
 
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -682,6 +683,145 @@ eq_cert_A_6 (eq_ctx *c)
 }
 
 /* ---- the energy series of Appendix B, (B.2), (B.6), (B.8)-(B.13) ---- */
+
+int
+eq_cert_B_2 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_heading";
+  double L0[2], D0[2], V0[2], Omega0[2], D[2], dtheta, dtau;
+  if (no_method (c) || eq_ratio_in (c, "L0", L0) || eq_ratio_in (c, "D0", D0)
+      || eq_ratio_in (c, "V0", V0) || eq_ratio_in (c, "Omega0", Omega0)
+      || eq_ratio_in (c, "D", D)
+      || eq_lib (c, fn, chaplygin_certified_heading (L0, D0, V0, Omega0, D,
+                                                     &dtheta, &dtau)))
+    return -1;
+  put (c, "dtheta", dtheta, fn);
+  put (c, "dtau", dtau, fn);
+  return 0;
+}
+
+/* The post-collision state of the series' labels: L0, Delta, dir, and E,
+   H (V, Omega refused by eh_in, LABEL's). */
+static int
+series_state_in (eq_ctx *c, const char *label, double L0[2],
+                 double Delta[2], int *dir, double E[2], double H[2])
+{
+  return slot_in (c, L0, Delta) || eh_in (c, label, E, H)
+    || eq_dir_in (c, "dir", dir);
+}
+
+int
+eq_cert_B_6 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_collisions_before_reversal";
+  double L0[2], Delta[2], E[2], H[2];
+  int dir, reverses;
+  unsigned long n = 0;
+  if (series_state_in (c, "B.6", L0, Delta, &dir, E, H)
+      || eq_lib (c, fn, chaplygin_certified_collisions_before_reversal
+                 (L0, Delta, dir, E, H, &reverses, &n)))
+    return -1;
+  eq_put_int (c, "reverses", reverses, fn, "exact");
+  if (reverses)
+    eq_put_int (c, "n", (long) n, fn, "exact");
+  else
+    eq_put_word (c, "n", "none", fn, "exact");
+  return 0;
+}
+
+int
+eq_cert_B_8 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_two_turning_points";
+  double L0[2], Delta[2], E[2], H[2];
+  int two;
+  if (slot_in (c, L0, Delta) || eh_in (c, "B.8", E, H)
+      || eq_lib (c, fn, chaplygin_certified_two_turning_points (L0, Delta, E,
+                                                                H, &two)))
+    return -1;
+  eq_put_int (c, "two", two, fn, "exact");
+  return 0;
+}
+
+int
+eq_cert_B_9 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_energy_after";
+  double L0[2], Delta[2], E[2], H[2], En, Hn;
+  int dir;
+  long n;
+  if (series_state_in (c, "B.9", L0, Delta, &dir, E, H)
+      || eq_int_in (c, "n", 0, LONG_MAX, &n)
+      || eq_lib (c, fn, chaplygin_certified_energy_after
+                 (L0, Delta, dir, E, H, (unsigned long) n, &En, &Hn)))
+    return -1;
+  put (c, "E_n", En, fn);
+  put (c, "H_n", Hn, fn);
+  return 0;
+}
+
+int
+eq_cert_B_10 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_final_energy";
+  double L0[2], Delta[2], E[2], H[2], Ef;
+  int dir;
+  if (series_state_in (c, "B.10", L0, Delta, &dir, E, H)
+      || eq_lib (c, fn, chaplygin_certified_final_energy (L0, Delta, dir, E,
+                                                          H, &Ef)))
+    return -1;
+  put (c, "E_f", Ef, fn);
+  return 0;
+}
+
+int
+eq_cert_B_11 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_energy_converges";
+  double L0[2], Delta[2];
+  int dir, converges;
+  if (slot_in (c, L0, Delta) || eq_dir_in (c, "dir", &dir)
+      || eq_lib (c, fn, chaplygin_certified_energy_converges (L0, Delta, dir,
+                                                              &converges)))
+    return -1;
+  eq_put_int (c, "converges", converges, fn, "exact");
+  return 0;
+}
+
+int
+eq_cert_B_12 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_final_velocity";
+  double L0[2], Delta[2], V[2], Omega[2], Vf;
+  if (eq_given (c, "E") || eq_given (c, "H") || eq_given (c, "dir"))
+    return eq_fail_usage (c, "with --certified, (B.12) takes V and Omega: "
+                          "the phase state that E, H and dir give is not "
+                          "a ratio of two doubles in general");
+  if (slot_in (c, L0, Delta) || eq_ratio_in (c, "V", V)
+      || eq_ratio_in (c, "Omega", Omega)
+      || eq_lib (c, fn, chaplygin_certified_final_velocity (L0, Delta, V,
+                                                            Omega, &Vf)))
+    return -1;
+  put (c, "V_f", Vf, fn);
+  if (sign_of (V) < 0)
+    c->note = "V < 0: the paper gives no form for this case (erratum E24); "
+      "the library's is the reflection of the printed V > 0 form";
+  return 0;
+}
+
+int
+eq_cert_B_13 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_spin_sequence";
+  double Delta[2], v;
+  long n;
+  if (eq_ratio_in (c, "Delta", Delta) || eq_int_in (c, "n", 0, LONG_MAX, &n)
+      || eq_lib (c, fn, chaplygin_certified_spin_sequence
+                 (Delta, (unsigned long) n, &v)))
+    return -1;
+  put (c, "V2_over_Omega2", v, fn);
+  return 0;
+}
 
 /* ---- the massless skate, (B.14)-(B.17) ---- */
 
