@@ -8,6 +8,7 @@
 #include "certref.h"
 
 enum { BALL_BITS = 400 };       /* room for the ends of a 300-bit ball */
+enum { SQRT_BITS = 3000 };      /* the irrational square roots */
 
 /* Q = R[0]/R[1] (GMP converts doubles exactly). */
 void
@@ -141,4 +142,34 @@ void
 cr_ratio_in (tu_rng *g, double a, double b, double r[2])
 {
   cr_ratio_near (g, tu_uniform (g, a, b), r);
+}
+
+double
+cr_round_sqrt_q (const mpq_t q, int sgn)
+{
+  mpq_t r;
+  mpq_init (r);
+  double d;
+  if (mpz_perfect_square_p (mpq_numref (q))
+      && mpz_perfect_square_p (mpq_denref (q)))
+    {
+      mpz_sqrt (mpq_numref (r), mpq_numref (q));
+      mpz_sqrt (mpq_denref (r), mpq_denref (q));
+      if (sgn < 0)
+        mpq_neg (r, r);
+      d = cr_round_q (r);
+    }
+  else
+    {
+      mpfr_t m;
+      mpfr_init2 (m, SQRT_BITS);
+      mpfr_set_q (m, q, MPFR_RNDN);
+      mpfr_sqrt (m, m, MPFR_RNDN);
+      if (sgn < 0)
+        mpfr_neg (m, m, MPFR_RNDN);
+      d = cr_round_fr (m);
+      mpfr_clear (m);
+    }
+  mpq_clear (r);
+  return d;
 }

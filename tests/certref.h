@@ -22,6 +22,12 @@ void cr_q_of (mpq_t q, const double r[2]);
 double cr_round_fr (const mpfr_t x);
 double cr_round_q (const mpq_t q);
 
+/* SGN sqrt(Q) rounded (Q >= 0): exactly where Q is the square of a
+   rational (GMP's mpz_perfect_square_p), else from MPFR at 3000 bits
+   (an irrational number: no double and no midpoint, and 3000 bits far
+   from both). */
+double cr_round_sqrt_q (const mpq_t q, int sgn);
+
 /* *X = the double nearest to every point of the ball B (both its ends,
    rounded by MPFR, the same double): 1, else 0. */
 int cr_round_ball (const arb_t b, double *x);

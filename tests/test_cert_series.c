@@ -36,153 +36,18 @@
 #include <mpfr.h>
 
 #include "testutil.h"
+#include "certref.h"
 #include "chaplygin.h"
 
 enum { RP = 300 };              /* the integration route's precision */
 
-/* ---- rounding by MPFR ------------------------------------------------- */
-
-/* The double nearest to X (ties to even, subnormals included). */
-static double
-round_fr (const mpfr_t x)
-{
-  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
-  mpfr_t y;
-  mpfr_set_emin (-1073);
-  mpfr_set_emax (1024);
-  mpfr_init2 (y, 53);
-  int t = mpfr_set (y, x, MPFR_RNDN);
-  t = mpfr_subnormalize (y, t, MPFR_RNDN);
-  const double d = mpfr_get_d (y, MPFR_RNDN);
-  mpfr_clear (y);
-  mpfr_set_emin (emin);
-  mpfr_set_emax (emax);
-  return d;
-}
-
-static double
-round_q (const mpq_t q)
-{
-  const mpfr_exp_t emin = mpfr_get_emin (), emax = mpfr_get_emax ();
-  mpfr_t y;
-  mpfr_set_emin (-1073);
-  mpfr_set_emax (1024);
-  mpfr_init2 (y, 53);
-  int t = mpfr_set_q (y, q, MPFR_RNDN);
-  t = mpfr_subnormalize (y, t, MPFR_RNDN);
-  const double d = mpfr_get_d (y, MPFR_RNDN);
-  mpfr_clear (y);
-  mpfr_set_emin (emin);
-  mpfr_set_emax (emax);
-  return d;
-}
-
-/* sgn * sqrt(Q) rounded (Q >= 0): exactly where Q is a square, else by
-   MPFR at 3000 bits (an irrational number: no double, no midpoint). */
-static double
-round_sqrt_q (const mpq_t q, int sgn)
-{
-  mpq_t r;
-  mpq_init (r);
-  double d;
-  if (mpz_perfect_square_p (mpq_numref (q))
-      && mpz_perfect_square_p (mpq_denref (q)))
-    {
-      mpz_sqrt (mpq_numref (r), mpq_numref (q));
-      mpz_sqrt (mpq_denref (r), mpq_denref (q));
-      if (sgn < 0)
-        mpq_neg (r, r);
-      d = round_q (r);
-    }
-  else
-    {
-      mpfr_t m;
-      mpfr_init2 (m, 3000);
-      mpfr_set_q (m, q, MPFR_RNDN);
-      mpfr_sqrt (m, m, MPFR_RNDN);
-      if (sgn < 0)
-        mpfr_neg (m, m, MPFR_RNDN);
-      d = round_fr (m);
-      mpfr_clear (m);
-    }
-  mpq_clear (r);
-  return d;
-}
-
-/* *X = the double nearest to every point of the ball B: 1, else 0. */
-static int
-ball_round (const arb_t b, double *x)
-{
-  arf_t lo, hi;
-  mpfr_t m;
-  arf_init (lo);
-  arf_init (hi);
-  mpfr_init2 (m, 2 * RP);
-  arb_get_interval_arf (lo, hi, b, ARF_PREC_EXACT);
-  arf_get_mpfr (m, lo, MPFR_RNDD);
-  const double a = round_fr (m);
-  arf_get_mpfr (m, hi, MPFR_RNDU);
-  const double c = round_fr (m);
-  mpfr_clear (m);
-  arf_clear (lo);
-  arf_clear (hi);
-  if (!(a == c && signbit (a) == signbit (c)))
-    return 0;
-  *x = a;
-  return 1;
-}
-
-static int
-same (double a, double b)
-{
-  return a == b && signbit (a) == signbit (b);
-}
-
-#define ck_assert_same(got, want)                                           \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (same (g_, w_), "%s = %a (%.17g), want %a (%.17g)",     \
-                     #got, g_, g_, w_, w_);                                 \
-    }                                                                       \
-  while (0)
-
-/* |A - B| in units of the last place of B. */
-static double
-ulps (double a, double b)
-{
-  if (a == b)
-    return 0.0;
-  const double u = nextafter (fabs (b), HUGE_VAL) - fabs (b);
-  return fabs (a - b) / (u > 0.0 ? u : DBL_MIN);
-}
-
-#define ck_assert_ulps(got, want, n)                                        \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (ulps (g_, w_) <= (n), "%s = %.17g, want %.17g "        \
-                     "within %g ulps: %g", #got, g_, w_, (double) (n),      \
-                     ulps (g_, w_));                                        \
-    }                                                                       \
-  while (0)
-
 /* ---- exact inputs ----------------------------------------------------- */
 
+/* A random exact input near X: P/Q, Q up to 2^20 (small denominators,
+   which the legs to a turning point need), or X itself (three times in
+   ten). */
 static void
-q_of (mpq_t q, const double r[2])
-{
-  mpq_t d;
-  mpq_init (d);
-  mpq_set_d (q, r[0]);
-  mpq_set_d (d, r[1]);
-  mpq_div (q, q, d);
-  mpq_clear (d);
-}
-
-/* A random exact input near X: P/Q, Q up to 2^20, or X itself. */
-static void
-ratio_near (tu_rng *g, double x, double r[2])
+small_ratio_near (tu_rng *g, double x, double r[2])
 {
   if (tu_uniform (g, 0.0, 1.0) < 0.3 || x == 0.0)
     {
@@ -208,8 +73,6 @@ ratio_of_q (double r[2], const mpq_t q)
              && mpz_sizeinbase (mpq_denref (q), 2) <= 53);
 }
 
-#define AS_RATIO(x) ((const double[2]) { (x), 1.0 })
-
 /* ---- the skate in GMP: the slot and a post-collision state ------------ */
 
 typedef struct
@@ -222,8 +85,8 @@ static void
 slot_init (slot *s, const double L0[2], const double Delta[2], int dir)
 {
   mpq_inits (s->L0, s->Delta, s->ls, s->lf, NULL);
-  q_of (s->L0, L0);
-  q_of (s->Delta, Delta);
+  cr_q_of (s->L0, L0);
+  cr_q_of (s->Delta, Delta);
   s->dir = dir;
   mpq_set (dir > 0 ? s->ls : s->lf, s->L0);
   mpq_add (dir > 0 ? s->lf : s->ls, s->L0, s->Delta);
@@ -451,10 +314,10 @@ route_leg (const mpq_t E, const mpq_t H, const mpq_t l0, const mpq_t l,
   integrate (r, &p, A, B);
   if (mpq_sgn (H) < 0)
     arb_neg (r, r);
-  ok = ok && ball_round (r, th);
+  ok = ok && cr_round_ball (r, th);
   p.kind = 1;
   integrate (r, &p, A, B);
-  ok = ok && ball_round (r, ta);
+  ok = ok && cr_round_ball (r, ta);
   mpq_clear (m);
   arb_clear (p.twoE);
   arb_clear (p.H2);
@@ -491,11 +354,11 @@ check_leg (const double L0[2], const double D0[2], const double V0[2],
 {
   mpq_t qL, d0, d, v0, w0, l0, l, E, H;
   mpq_inits (qL, d0, d, v0, w0, l0, l, E, H, NULL);
-  q_of (qL, L0);
-  q_of (d0, D0);
-  q_of (d, D);
-  q_of (v0, V0);
-  q_of (w0, W0);
+  cr_q_of (qL, L0);
+  cr_q_of (d0, D0);
+  cr_q_of (d, D);
+  cr_q_of (v0, V0);
+  cr_q_of (w0, W0);
   mpq_add (l0, qL, d0);
   mpq_add (l, qL, d);
   phase_eh (E, H, l0, v0, w0);
@@ -529,10 +392,10 @@ START_TEST (certified_B_2)
     {
       double L0[2], V0[2], W0[2], D[2];
       const double D0[2] = { 0.0, 1.0 };
-      ratio_near (&g, tu_uniform (&g, -3.0, 3.0), L0);
-      ratio_near (&g, tu_uniform (&g, 0.2, 2.0), V0);
-      ratio_near (&g, tu_uniform (&g, -1.5, 1.5), W0);
-      ratio_near (&g, tu_uniform (&g, 0.05, 1.5), D);
+      small_ratio_near (&g, tu_uniform (&g, -3.0, 3.0), L0);
+      small_ratio_near (&g, tu_uniform (&g, 0.2, 2.0), V0);
+      small_ratio_near (&g, tu_uniform (&g, -1.5, 1.5), W0);
+      small_ratio_near (&g, tu_uniform (&g, 0.05, 1.5), D);
       int st = chaplygin_certified_heading (L0, D0, V0, W0, D, NULL, NULL);
       ck_assert_int_eq (st, CHAPLYGIN_EINVAL);
       double th;
@@ -571,14 +434,14 @@ START_TEST (certified_B_2_turning)
   for (int i = 0; i < 12; i++)
     {
       double L0[2], D0[2], W0[2], D[2];
-      ratio_near (&g, tu_uniform (&g, -2.0, -0.2), L0);
+      small_ratio_near (&g, tu_uniform (&g, -2.0, -0.2), L0);
       const double lt = tu_uniform (&g, 0.1, 1.0);
       double r[2];
-      ratio_near (&g, lt, r);
+      small_ratio_near (&g, lt, r);
       /* D0 = -L0 + lt, as a ratio: L0 = a/b, lt = c/e: (c b - a e)/(b e) */
       D0[0] = r[0] * L0[1] - L0[0] * r[1];
       D0[1] = L0[1] * r[1];
-      ratio_near (&g, tu_uniform (&g, 0.3, 1.2), W0);
+      small_ratio_near (&g, tu_uniform (&g, 0.3, 1.2), W0);
       D[0] = D0[0] + D0[1] * 0.5;
       D[1] = D0[1];
       if (!(fabs (D0[0]) < 0x1p53 && fabs (D[0]) < 0x1p53
@@ -626,8 +489,8 @@ check_count (const double L0[2], const double Delta[2], int dir,
   mpq_t e, h;
   mpq_inits (e, h, NULL);
   slot_init (&s, L0, Delta, dir);
-  q_of (e, E);
-  q_of (h, H);
+  cr_q_of (e, E);
+  cr_q_of (h, H);
   int rev = -1;
   unsigned long n = 0, rn;
   const int st = chaplygin_certified_collisions_before_reversal
@@ -710,15 +573,15 @@ START_TEST (certified_B_6)
     {
       double L0[2], Delta[2], E[2];
       const int cls = i % 3, dir = (i / 3) % 2 ? 1 : -1;
-      ratio_near (&g, tu_uniform (&g, 0.2, 2.0), Delta);
+      small_ratio_near (&g, tu_uniform (&g, 0.2, 2.0), Delta);
       const double d = Delta[0] / Delta[1];
       const double l = cls == 0 ? tu_uniform (&g, 0.1, 3.0)
         : cls == 1 ? -d - tu_uniform (&g, 0.1, 3.0)
         : -d * tu_uniform (&g, 0.05, 0.95);
-      ratio_near (&g, l, L0);
+      small_ratio_near (&g, l, L0);
       const double ls = dir > 0 ? l : l + d;
       const double rmin = 1.0 / (1.0 + ls * ls);
-      ratio_near (&g, rmin * tu_uniform (&g, 1.0001, 1.6), E);
+      small_ratio_near (&g, rmin * tu_uniform (&g, 1.0001, 1.6), E);
       E[1] *= 2.0;                      /* E = r/2, H = 1 */
       double Ev[2] = { E[0], E[1] };
       int rev;
@@ -813,8 +676,8 @@ START_TEST (certified_B_6_large)
     mpq_t e, h, y, C1, rs, r, rho, t, p;
     mpq_inits (e, h, y, C1, rs, r, rho, t, p, NULL);
     slot_init (&s, L0, Delta, -1);
-    q_of (e, E);
-    q_of (h, H);
+    cr_q_of (e, E);
+    cr_q_of (h, H);
     mpq_set_ui (t, 1, 2);
     mpq_set_ui (p, 1, 1);
     route_collide (&s, t, p);           /* E' = 1/2 + C1, H' = C2 */
@@ -864,16 +727,16 @@ START_TEST (certified_B_8)
   for (int i = 0; i < 3000; i++)
     {
       double l[2], d[2], e[2], h[2];
-      ratio_near (&g, tu_uniform (&g, -2.0, 0.5), l);
-      ratio_near (&g, tu_uniform (&g, 0.1, 2.5), d);
-      ratio_near (&g, tu_uniform (&g, 0.05, 1.0), e);
-      ratio_near (&g, tu_uniform (&g, -1.5, 1.5), h);
+      small_ratio_near (&g, tu_uniform (&g, -2.0, 0.5), l);
+      small_ratio_near (&g, tu_uniform (&g, 0.1, 2.5), d);
+      small_ratio_near (&g, tu_uniform (&g, 0.05, 1.0), e);
+      small_ratio_near (&g, tu_uniform (&g, -1.5, 1.5), h);
       if (i % 10 == 0)
         h[0] = 0.0;
-      q_of (L0, l);
-      q_of (Delta, d);
-      q_of (E, e);
-      q_of (H, h);
+      cr_q_of (L0, l);
+      cr_q_of (Delta, d);
+      cr_q_of (E, e);
+      cr_q_of (H, h);
       /* R = H^2/(2E) - 1 > 0, R < L0^2 with L0 < 0, R < (L0 + Delta)^2
          with L0 + Delta > 0 */
       mpq_mul (R, H, H);
@@ -927,8 +790,8 @@ check_after (const double L0[2], const double Delta[2], int dir,
   mpq_t e, h;
   mpq_inits (e, h, NULL);
   slot_init (&s, L0, Delta, dir);
-  q_of (e, E);
-  q_of (h, H);
+  cr_q_of (e, E);
+  cr_q_of (h, H);
   int want = CHAPLYGIN_SUCCESS;
   for (unsigned long k = 0; k < n && want == CHAPLYGIN_SUCCESS; k++)
     {
@@ -944,8 +807,8 @@ check_after (const double L0[2], const double Delta[2], int dir,
   ck_assert_int_eq (st, want);
   if (st == CHAPLYGIN_SUCCESS)
     {
-      ck_assert_same (En, round_q (e));
-      ck_assert_same (Hn, round_q (h));
+      ck_assert_same (En, cr_round_q (e));
+      ck_assert_same (Hn, cr_round_q (h));
     }
   mpq_clears (e, h, NULL);
   slot_clear (&s);
@@ -959,10 +822,10 @@ START_TEST (certified_B_9)
     {
       double L0[2], Delta[2], E[2], H[2];
       const int dir = i % 2 ? 1 : -1;
-      ratio_near (&g, tu_uniform (&g, -3.0, 3.0), L0);
-      ratio_near (&g, tu_uniform (&g, 0.2, 2.0), Delta);
-      ratio_near (&g, tu_uniform (&g, 0.5, 3.0), E);
-      ratio_near (&g, tu_uniform (&g, -1.0, 1.0), H);
+      small_ratio_near (&g, tu_uniform (&g, -3.0, 3.0), L0);
+      small_ratio_near (&g, tu_uniform (&g, 0.2, 2.0), Delta);
+      small_ratio_near (&g, tu_uniform (&g, 0.5, 3.0), E);
+      small_ratio_near (&g, tu_uniform (&g, -1.0, 1.0), H);
       const unsigned long n = (unsigned long) tu_uniform (&g, 0.0, 40.0);
       double En, Hn;
       if (chaplygin_certified_energy_after (L0, Delta, dir, E, H, 0, &En,
@@ -1120,10 +983,10 @@ START_TEST (certified_B_10_B_12)
   for (int i = 0; i < 2000; i++)
     {
       double L0[2], Delta[2], V[2], W[2];
-      ratio_near (&g, tu_uniform (&g, -3.0, 3.0), L0);
-      ratio_near (&g, tu_uniform (&g, 0.2, 2.5), Delta);
-      ratio_near (&g, tu_uniform (&g, -2.0, 2.0), V);
-      ratio_near (&g, tu_uniform (&g, -1.0, 1.0), W);
+      small_ratio_near (&g, tu_uniform (&g, -3.0, 3.0), L0);
+      small_ratio_near (&g, tu_uniform (&g, 0.2, 2.5), Delta);
+      small_ratio_near (&g, tu_uniform (&g, -2.0, 2.0), V);
+      small_ratio_near (&g, tu_uniform (&g, -1.0, 1.0), W);
       if (V[0] == 0.0)
         continue;
       const int dir = V[0] > 0.0 ? 1 : -1;
@@ -1131,8 +994,8 @@ START_TEST (certified_B_10_B_12)
       mpq_t v, w, E, H, Ef;
       mpq_inits (v, w, E, H, Ef, NULL);
       slot_init (&s, L0, Delta, dir);
-      q_of (v, V);
-      q_of (w, W);
+      cr_q_of (v, V);
+      cr_q_of (w, W);
       phase_eh (E, H, s.ls, v, w);
       /* (B.11) */
       int conv;
@@ -1169,13 +1032,13 @@ START_TEST (certified_B_10_B_12)
                                                               e, h, &ef),
                             want);
           if (want == CHAPLYGIN_SUCCESS)
-            ck_assert_same (ef, round_q (Ef));
+            ck_assert_same (ef, cr_round_q (Ef));
         }
       if (want == CHAPLYGIN_SUCCESS)
         {
           n_ok++;
           mpq_mul_2exp (Ef, Ef, 1);
-          ck_assert_same (vf, round_sqrt_q (Ef, dir));
+          ck_assert_same (vf, cr_round_sqrt_q (Ef, dir));
           if (L0[1] == 1.0 && Delta[1] == 1.0 && V[1] == 1.0 && W[1] == 1.0)
             {
               double u;
@@ -1267,9 +1130,9 @@ START_TEST (certified_B_13)
             ck_assert_int_eq (st, CHAPLYGIN_EDOM);
             continue;
           }
-        q_of (d, deltas[i]);
+        cr_q_of (d, deltas[i]);
         route_spin (v, d, n);
-        const double want = round_q (v);
+        const double want = cr_round_q (v);
         if (want == 0.0)
           {
             ck_assert_int_eq (st, CHAPLYGIN_ERANGE);
@@ -1306,7 +1169,7 @@ START_TEST (certified_B_13)
     double x;
     ck_assert_int_eq (chaplygin_certified_spin_sequence
                       (AS_RATIO (1e-6), 1000000000000UL, &x), 0);
-    ck_assert_same (x, round_fr (c));
+    ck_assert_same (x, cr_round_fr (c));
     mpfr_clears (a, c, t, (mpfr_ptr) 0);
   }
   double x;
