@@ -215,16 +215,11 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
     }
   if (!status)
     {
-      /* E+ = E- - Delta^2 H^2/(2 (1 + b^2)^2 (1 + b'^2)) */
-      chp_cert_one_plus_sq (t, b);
-      fmpq_mul (t, t, t);
-      chp_cert_one_plus_sq (u, bp);
-      fmpq_mul (t, t, u);
-      fmpq_mul_2exp (t, t, 1);
-      fmpq_mul (u, qD, h);
-      fmpq_mul (u, u, u);
-      fmpq_div (u, u, t);
-      fmpq_sub (e, e, u);
+      /* E+ = E- + C1 H^2, C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)) */
+      chp_cert_c1 (u, qD, b, bp);
+      fmpq_mul (u, u, h);
+      fmpq_mul (u, u, h);
+      fmpq_add (e, e, u);
       /* H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H- */
       momentum_ratio (u, qL, qD, b, t);
       fmpq_mul (h, h, u);
@@ -656,7 +651,7 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
   chp_cert_qset s;
   chp_cert_qset_init (&s);
   fmpq *qL = s.q[0], *qD = s.q[1], *Dp = s.q[2], *Dm = s.q[3], *b = s.q[4];
-  fmpq *bp = s.q[5], *c1 = s.q[6], *c2 = s.q[7], *t = s.q[8], *u = s.q[9];
+  fmpq *bp = s.q[5], *c1 = s.q[6], *c2 = s.q[7], *t = s.q[8];
   int status = chp_cert_slot_in (qL, qD, L0, Delta);
   if (!status && chp_cert_in (Dp, Dplus))
     status = CHAPLYGIN_EDOM;
@@ -665,8 +660,8 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
   if (!status)
     {
       /* (3.7) at the end the peg leaves, D- = Delta - D+ (B.3) or D+
-         (B.4): b = L0 + D-, b' = L0 + Delta - D-;
-         C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)), C2 of momentum_ratio */
+         (B.4): b = L0 + D-, b' = L0 + Delta - D-; C1 of chp_cert_c1,
+         C2 of momentum_ratio */
       if (reversal)
         fmpq_set (Dm, Dp);
       else
@@ -675,14 +670,7 @@ chaplygin_certified_coefficients (const double L0[2], const double Delta[2],
       fmpq_add (bp, qL, qD);
       fmpq_sub (bp, bp, Dm);
       momentum_ratio (c2, qL, qD, b, t);
-      chp_cert_one_plus_sq (t, b);
-      fmpq_mul (t, t, t);
-      chp_cert_one_plus_sq (u, bp);
-      fmpq_mul (t, t, u);
-      fmpq_mul_2exp (t, t, 1);
-      fmpq_mul (c1, qD, qD);
-      fmpq_div (c1, c1, t);
-      fmpq_neg (c1, c1);
+      chp_cert_c1 (c1, qD, b, bp);
       double x, y;
       status = chp_cert_round_fmpq (c1, &x);
       if (!status)
@@ -923,13 +911,8 @@ chaplygin_certified_jacobian (const double L0[2], const double Delta[2],
       /* the collision at the far end: b = l_f, b' = l_s;
          J[7] = 2 C1 H, J[15] = C2 */
       momentum_ratio (c2, qL, qD, lf, t);
-      chp_cert_one_plus_sq (t, lf);
-      fmpq_mul (t, t, t);
-      chp_cert_one_plus_sq (u, ls);
-      fmpq_mul (t, t, u);
-      fmpq_mul (c1, qD, qD);
-      fmpq_div (c1, c1, t);
-      fmpq_neg (c1, c1);                /* 2 C1 */
+      chp_cert_c1 (c1, qD, lf, ls);
+      fmpq_mul_2exp (c1, c1, 1);        /* 2 C1 */
       fmpq_mul (c1, c1, h);
       r[5] = r[10] = 1.0;
       status = chp_cert_round_fmpq (c1, &r[7]);
