@@ -685,6 +685,148 @@ eq_cert_A_6 (eq_ctx *c)
 
 /* ---- the massless skate, (B.14)-(B.17) ---- */
 
+int
+eq_cert_B_14 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_fixed_point";
+  static const char fn_loss[] = "chaplygin_certified_collision_loss";
+  double L0[2], Delta[2], Vstar[2], H[2], theta, tau, tau_star, loss;
+  chaplygin_discrete_state st;
+  int lossless;
+  if (slot_in (c, L0, Delta) || eq_ratio_in (c, "Vstar", Vstar)
+      || eq_exact_opt (c, "theta", 0.0, &theta)
+      || eq_exact_opt (c, "tau", 0.0, &tau) || eq_ratio_opt (c, "H", 0.0, H)
+      || eq_lib (c, fn, chaplygin_certified_fixed_point (L0, Delta, Vstar,
+                                                         theta, tau, NULL,
+                                                         &st, &tau_star))
+      || eq_lib (c, fn_loss,
+                 chaplygin_certified_collision_loss (L0, Delta, st.dir, 0,
+                                                     H, &loss, &lossless)))
+    return -1;
+  put (c, "E", st.E, fn);
+  put (c, "H", st.H, fn);
+  put (c, "tau_star", tau_star, fn);
+  put (c, "loss", loss, fn_loss);
+  eq_put_int (c, "lossless", lossless, fn_loss, "exact");
+  return 0;
+}
+
+/* (B.15): one step of the massless skate from the exact state, (E, H,
+   dir) or (V, Omega) just after the collision (the latter's E and H
+   formed exactly by the library); theta and tau, read exactly, do not
+   enter the outputs. */
+int
+eq_cert_B_15 (eq_ctx *c)
+{
+  static const char fn_eh[] = "chaplygin_certified_massless_step";
+  static const char fn_ph[] = "chaplygin_certified_massless_step_phase";
+  static const char fn_p2[] = "chaplygin_certified_massless_period2";
+  double L0[2], a[2], b[2], theta, tau, E, H, dtheta, dtau;
+  int eh, dir, reversal, period2;
+  if (eq_ratio_in (c, "L0", L0) || post_collision_in (c, &eh, a, b, &dir)
+      || eq_exact_opt (c, "theta", 0.0, &theta)
+      || eq_exact_opt (c, "tau", 0.0, &tau))
+    return -1;
+  const char *fn = eh ? fn_eh : fn_ph;
+  const int status = eh
+    ? chaplygin_certified_massless_step (L0, dir, a, b, &E, &H, &dtheta,
+                                         &dtau, &reversal)
+    : chaplygin_certified_massless_step_phase (L0, a, b, &E, &H, &dtheta,
+                                               &dtau, &reversal);
+  if (eq_lib (c, fn, status)
+      || eq_lib (c, fn_p2, chaplygin_certified_massless_period2 (L0,
+                                                                 &period2)))
+    return -1;
+  put (c, "E_next", E, fn);
+  put (c, "H_next", H, fn);
+  put (c, "dtheta", dtheta, fn);
+  put (c, "dtau", dtau, fn);
+  eq_put_int (c, "reversal", reversal, fn, "exact");
+  eq_put_int (c, "period2", period2, fn_p2, "exact");
+  return 0;
+}
+
+int
+eq_cert_B_16 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_massless_coefficient";
+  double L0[2], C2;
+  long Dplus, reversal;
+  if (eq_ratio_in (c, "L0", L0) || eq_int_in (c, "Dplus", 0, 1, &Dplus)
+      || eq_int_in (c, "reversal", 0, 1, &reversal))
+    return -1;
+  const double Dp[2] = { (double) Dplus, 1.0 };
+  if (eq_lib (c, fn, chaplygin_certified_massless_coefficient (L0, Dp,
+                                                               (int) reversal,
+                                                               &C2)))
+    return -1;
+  put (c, "C2", C2, fn);
+  return 0;
+}
+
+/* The state fields of (B.17) after the first two, dimensional (DIM) or
+   not, as ratios into R[4] ... R[13]. */
+static int
+scaled_fields_in (eq_ctx *c, int dim, double r[14])
+{
+  static const char *const names[2][5] = {
+    { "D", "V", "theta", "Omega", "tau" },
+    { "d", "v", "theta", "omega", "t" }
+  };
+  for (int i = 0; i < 5; i++)
+    if (eq_ratio_opt (c, names[dim][i], 0.0, r + 4 + 2 * i))
+      return -1;
+  return 0;
+}
+
+/* (B.17): to the massless skate's units (ell0 given, or L0 not: the
+   slot's own length delta, so Delta = 1) or back from them. */
+int
+eq_cert_B_17 (eq_ctx *c)
+{
+  static const char fn_nd[] =
+    "chaplygin_certified_massless_nondimensionalize";
+  static const char fn_d[] = "chaplygin_certified_massless_dimensionalize";
+  double delta[2], v0[2], r[14];
+  if (eq_ratio_in (c, "delta", delta) || eq_ratio_in (c, "v0", v0))
+    return -1;
+  if (eq_given (c, "ell0") || !eq_given (c, "L0"))
+    {
+      chaplygin_discrete_nondim nd;
+      r[2] = delta[0];
+      r[3] = delta[1];
+      if (eq_ratio_in (c, "ell0", r) || scaled_fields_in (c, 1, r)
+          || eq_lib (c, fn_nd,
+                     chaplygin_certified_massless_nondimensionalize (delta,
+                                                                     v0, r,
+                                                                     &nd)))
+        return -1;
+      put (c, "L0", nd.L0, fn_nd);
+      put (c, "Delta", nd.Delta, fn_nd);
+      put (c, "D", nd.D, fn_nd);
+      put (c, "V", nd.V, fn_nd);
+      put (c, "theta", nd.theta, fn_nd);
+      put (c, "Omega", nd.Omega, fn_nd);
+      put (c, "tau", nd.tau, fn_nd);
+      return 0;
+    }
+  chaplygin_discrete_dim d;
+  if (eq_ratio_in (c, "L0", r) || eq_ratio_opt (c, "Delta", 1.0, r + 2)
+      || scaled_fields_in (c, 0, r)
+      || eq_lib (c, fn_d, chaplygin_certified_massless_dimensionalize (delta,
+                                                                       v0, r,
+                                                                       &d)))
+    return -1;
+  put (c, "ell0", d.ell0, fn_d);
+  put (c, "delta", d.delta, fn_d);
+  put (c, "d", d.d, fn_d);
+  put (c, "v", d.v, fn_d);
+  put (c, "theta", d.theta, fn_d);
+  put (c, "omega", d.omega, fn_d);
+  put (c, "t", d.t, fn_d);
+  return 0;
+}
+
 /* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) ---- */
 
 /* The scales rho, v0 of (2.2), (3.2), and whether the inputs are the
