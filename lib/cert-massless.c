@@ -374,7 +374,7 @@ typedef struct
 } step_result;
 
 /* One step of (B.15) from the state (DIR, E, H) at L0 in S (E >= 0):
-   E' = E, H' = (l+/l-) H (0 for H = 0), and the heading (WANT_THETA) and
+   E' = E, H' = (l+/l-) H (0 for H = 0, also where l- = 0), and the heading (WANT_THETA) and
    time (WANT_TAU) of the segment, into *R. */
 static int
 massless_map (chp_cert_qset *s, int dir, int want_theta, int want_tau,
@@ -386,8 +386,14 @@ massless_map (chp_cert_qset *s, int dir, int want_theta, int want_tau,
     status = chp_cert_round_fmpq (s->q[MS_E], &r->E);
   if (!status)
     {
-      fmpq_div (hn, s->q[MS_LP], s->q[MS_LM]);
-      fmpq_mul (hn, hn, s->q[MS_H]);
+      /* H = 0 needs no ratio (and has none where l- = 0: the point mass
+         at the end left, moving along the slot) */
+      fmpq_zero (hn);
+      if (!fmpq_is_zero (s->q[MS_H]))
+        {
+          fmpq_div (hn, s->q[MS_LP], s->q[MS_LM]);
+          fmpq_mul (hn, hn, s->q[MS_H]);
+        }
       status = chp_cert_round_fmpq (hn, &r->H);
     }
   r->dtheta = r->dtau = 0.0;
