@@ -11,7 +11,8 @@
    Method.
    - Rational values: (B.14)'s E* = V*^2/2, tau* = Delta/|V*| and the
      energy a collision takes, -C1 H^2 (C1 of chp_cert_c1); (B.15)'s
-     E' = E and H' = C2 H; (B.16)'s C2 = l+/l-; every field of (B.17).
+     E' = E and H' = C2 H; (B.16)'s C2 = l+/l-; every field of (B.17),
+     which is (3.2) with delta in place of rho (cert-units.c).
      Formed in FLINT's rationals and rounded once by chp_cert_round_fmpq,
      which decides ties exactly (C2 = (2^53 + 1)/2^53 at L0 = 2^53 is one).
    - Decisions: the lossless condition (the loss is 0 exactly: H = 0,
@@ -374,8 +375,8 @@ typedef struct
 } step_result;
 
 /* One step of (B.15) from the state (DIR, E, H) at L0 in S (E >= 0):
-   E' = E, H' = (l+/l-) H (0 for H = 0, also where l- = 0), and the heading (WANT_THETA) and
-   time (WANT_TAU) of the segment, into *R. */
+   E' = E, H' = (l+/l-) H (0 for H = 0, also where l- = 0), and the
+   heading (WANT_THETA) and time (WANT_TAU) of the segment, into *R. */
 static int
 massless_map (chp_cert_qset *s, int dir, int want_theta, int want_tau,
               step_result *r)
@@ -517,104 +518,49 @@ chaplygin_certified_massless_period2 (const double L0[2], int *exists)
 
 /* ---- (B.17) ----------------------------------------------------------- */
 
-/* The fields of a state, in the order of chaplygin_discrete_dim and
-   chaplygin_discrete_nondim, by what they measure. */
-enum { U_LENGTH, U_SPEED, U_ANGLE, U_RATE, U_TIME, U_N };
-static const int field_unit[7] = {
-  U_LENGTH, U_LENGTH, U_LENGTH, U_SPEED, U_ANGLE, U_RATE, U_TIME
-};
-
-/* OUT[i] = k IN[2 i]/IN[2 i + 1] (i < 7), exactly rounded, k = KL for a
-   length, KV for a speed, 1 for the angle, KV/KL for the rate, KL/KV for
-   the time: (B.17) with KL = 1/delta, KV = 1/v0 (INVERT nonzero), its
-   inverse with KL = delta, KV = v0; DELTA, V0 > 0 (CHAPLYGIN_EDOM
-   otherwise). */
-static int
-scale_state (const double delta[2], const double v0[2], int invert,
-             const double in[14], double out[7])
-{
-  chp_cert_qset s;
-  chp_cert_qset_init (&s);
-  fmpq *k[U_N] = { s.q[7], s.q[8], s.q[9], s.q[10], s.q[11] };
-  int status = CHAPLYGIN_SUCCESS;
-  if (chp_cert_in (k[U_LENGTH], delta) || chp_cert_in (k[U_SPEED], v0)
-      || fmpq_sgn (k[U_LENGTH]) <= 0 || fmpq_sgn (k[U_SPEED]) <= 0)
-    status = CHAPLYGIN_EDOM;
-  for (int i = 0; i < 7 && !status; i++)
-    status = chp_cert_in (s.q[i], in + 2 * i);
-  if (!status)
-    {
-      if (invert)
-        {
-          fmpq_inv (k[U_LENGTH], k[U_LENGTH]);
-          fmpq_inv (k[U_SPEED], k[U_SPEED]);
-        }
-      fmpq_one (k[U_ANGLE]);
-      fmpq_div (k[U_RATE], k[U_SPEED], k[U_LENGTH]);
-      fmpq_div (k[U_TIME], k[U_LENGTH], k[U_SPEED]);
-    }
-  for (int i = 0; i < 7 && !status; i++)
-    {
-      fmpq_mul (s.q[i], s.q[i], k[field_unit[i]]);
-      status = chp_cert_round_fmpq (s.q[i], &out[i]);
-    }
-  chp_cert_qset_clear (&s);
-  return status;
-}
-
 /* chaplygin_certified_massless_nondimensionalize: (B.17), as
-   chaplygin_massless_nondimensionalize, from the fields of DIM (ell0,
-   delta, d, v, theta, omega, t; the i-th DIM[2 i]/DIM[2 i + 1]):
+   chaplygin_massless_nondimensionalize: (3.2) with the slot length delta
+   in place of rho (chaplygin_certified_discrete_nondimensionalize),
        L0 = ell0/delta, Delta = delta'/delta, D = d/delta, V = v/v0,
-       theta, Omega = omega delta/v0, tau = t v0/delta. */
+       theta, Omega = omega delta/v0, tau = t v0/delta,
+   delta' the slot length of the state (Delta = 1 where it is delta). */
 int
 chaplygin_certified_massless_nondimensionalize (const double delta[2],
                                                 const double v0[2],
-                                                const double dim[14],
+                                                const double ell0[2],
+                                                const double delta_slot[2],
+                                                const double d[2],
+                                                const double v[2],
+                                                const double theta[2],
+                                                const double omega[2],
+                                                const double t[2],
                                                 chaplygin_discrete_nondim
                                                 *nd)
 {
-  if (!delta || !v0 || !dim || !nd)
-    return CHAPLYGIN_EINVAL;
-  double r[7];
-  const int status = scale_state (delta, v0, 1, dim, r);
-  if (!status)
-    {
-      nd->L0 = r[0];
-      nd->Delta = r[1];
-      nd->D = r[2];
-      nd->V = r[3];
-      nd->theta = r[4];
-      nd->Omega = r[5];
-      nd->tau = r[6];
-    }
-  return status;
+  return chaplygin_certified_discrete_nondimensionalize (delta, v0, ell0,
+                                                         delta_slot, d, v,
+                                                         theta, omega, t,
+                                                         nd);
 }
 
 /* chaplygin_certified_massless_dimensionalize: the inverse of (B.17), as
-   chaplygin_massless_dimensionalize, from the fields of ND (L0, Delta, D,
-   V, theta, Omega, tau; the i-th ND[2 i]/ND[2 i + 1]):
+   chaplygin_massless_dimensionalize (chaplygin_certified_discrete_
+   dimensionalize with delta in place of rho):
        ell0 = L0 delta, delta' = Delta delta, d = D delta, v = V v0,
        theta, omega = Omega v0/delta, t = tau delta/v0. */
 int
 chaplygin_certified_massless_dimensionalize (const double delta[2],
                                              const double v0[2],
-                                             const double nd[14],
+                                             const double L0[2],
+                                             const double Delta[2],
+                                             const double D[2],
+                                             const double V[2],
+                                             const double theta[2],
+                                             const double Omega[2],
+                                             const double tau[2],
                                              chaplygin_discrete_dim *dim)
 {
-  if (!delta || !v0 || !nd || !dim)
-    return CHAPLYGIN_EINVAL;
-  double r[7];
-  const int status = scale_state (delta, v0, 0, nd, r);
-  if (!status)
-    {
-      dim->ell0 = r[0];
-      dim->delta = r[1];
-      dim->d = r[2];
-      dim->v = r[3];
-      dim->theta = r[4];
-      dim->omega = r[5];
-      dim->t = r[6];
-    }
-  return status;
+  return chaplygin_certified_discrete_dimensionalize (delta, v0, L0, Delta,
+                                                      D, V, theta, Omega,
+                                                      tau, dim);
 }

@@ -675,12 +675,24 @@ chaplygin_certified_massless_coefficient (const double L0[2],
 int
 chaplygin_certified_massless_nondimensionalize (const double delta[2],
                                                 const double v0[2],
-                                                const double dim[14],
+                                                const double ell0[2],
+                                                const double delta_slot[2],
+                                                const double d[2],
+                                                const double v[2],
+                                                const double theta[2],
+                                                const double omega[2],
+                                                const double t[2],
                                                 chaplygin_discrete_nondim *nd)
 {
   (void) delta;
   (void) v0;
-  (void) dim;
+  (void) ell0;
+  (void) delta_slot;
+  (void) d;
+  (void) v;
+  (void) theta;
+  (void) omega;
+  (void) t;
   (void) nd;
   return CHAPLYGIN_EINVAL;
 }
@@ -688,12 +700,24 @@ chaplygin_certified_massless_nondimensionalize (const double delta[2],
 int
 chaplygin_certified_massless_dimensionalize (const double delta[2],
                                              const double v0[2],
-                                             const double nd[14],
+                                             const double L0[2],
+                                             const double Delta[2],
+                                             const double D[2],
+                                             const double V[2],
+                                             const double theta[2],
+                                             const double Omega[2],
+                                             const double tau[2],
                                              chaplygin_discrete_dim *dim)
 {
   (void) delta;
   (void) v0;
-  (void) nd;
+  (void) L0;
+  (void) Delta;
+  (void) D;
+  (void) V;
+  (void) theta;
+  (void) Omega;
+  (void) tau;
   (void) dim;
   return CHAPLYGIN_EINVAL;
 }

@@ -1976,14 +1976,15 @@ int chaplygin_certified_massless_coefficient (const double L0[2],
                                               const double Dplus[2],
                                               int reversal, double *C2);
 
-/** (B.17), certified: chaplygin_massless_nondimensionalize's scaling by
-   the slot length @delta and the speed @v0, from the fields of a
-   chaplygin_discrete_dim in their order (ell0, delta, d, v, theta, omega,
-   t), the i-th the ratio `@dim[2 i]/@dim[2 i + 1]`:
-     L0 = ell0/delta,   Delta = delta'/delta,   D = d/delta,   V = v/v0,
-     theta,   Omega = omega delta/v0,   tau = t v0/delta,
+/** (B.17), certified: chaplygin_massless_nondimensionalize for exact
+   inputs (each field and scale the ratio `[0]/[1]` of two doubles), the
+   scaling of chaplygin_certified_discrete_nondimensionalize with the slot
+   length @delta in place of $rho$:
+     L0 = ell0/delta,  Delta = delta_slot/delta,  D = d/delta,  V = v/v0,
+     Omega = omega delta/v0,  tau = t v0/delta,  theta unchanged,
    @noindent
-   each the double nearest to the exact value.
+   every field the double nearest to its exact value; @delta_slot is the
+   state's slot length ($Delta = 1$ exactly where it is @delta).
 
    Domain: $delta > 0$, $v_0 > 0$.
 
@@ -1991,23 +1992,31 @@ int chaplygin_certified_massless_coefficient (const double L0[2],
  */
 int chaplygin_certified_massless_nondimensionalize (const double delta[2],
                                                     const double v0[2],
-                                                    const double dim[14],
+                                                    const double ell0[2],
+                                                    const double delta_slot[2],
+                                                    const double d[2],
+                                                    const double v[2],
+                                                    const double theta[2],
+                                                    const double omega[2],
+                                                    const double t[2],
                                                     chaplygin_discrete_nondim
                                                     *nd);
 
-/** (B.17), certified: the inverse, chaplygin_massless_dimensionalize's,
-   from the fields of a chaplygin_discrete_nondim in their order (L0,
-   Delta, D, V, theta, Omega, tau), the i-th the ratio
-   `@nd[2 i]/@nd[2 i + 1]`:
-     ell0 = L0 delta,   delta' = Delta delta,   d = D delta,   v = V v0,
-     theta,   omega = Omega v0/delta,   t = tau delta/v0.
-   Domain: $delta > 0$, $v_0 > 0$.
-
-   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+/** The inverse of (B.17), certified: chaplygin_massless_dimensionalize for
+   exact inputs, each field the double nearest to
+     ell0 = L0 delta,  delta_slot = Delta delta,  d = D delta,  v = V v0,
+     omega = Omega v0/delta,  t = tau delta/v0,  theta unchanged.
+   Domain and errors: as chaplygin_certified_massless_nondimensionalize.
  */
 int chaplygin_certified_massless_dimensionalize (const double delta[2],
                                                  const double v0[2],
-                                                 const double nd[14],
+                                                 const double L0[2],
+                                                 const double Delta[2],
+                                                 const double D[2],
+                                                 const double V[2],
+                                                 const double theta[2],
+                                                 const double Omega[2],
+                                                 const double tau[2],
                                                  chaplygin_discrete_dim *dim);
 
 /* Certified: the units and fields, (2.2), (2.3), (3.1), (3.2) (lib/cert-units.c). */

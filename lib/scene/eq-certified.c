@@ -50,6 +50,16 @@ eh_in (eq_ctx *c, const char *label, double E[2], double H[2])
   return eq_ratio_in (c, "E", E) || eq_ratio_in (c, "H", H);
 }
 
+/* Optional exact inputs NAMES[i] (default 0) into X[i], i < N. */
+static int
+ratios_opt (eq_ctx *c, size_t n, const char *const names[], double x[][2])
+{
+  for (size_t i = 0; i < n; i++)
+    if (eq_ratio_opt (c, names[i], 0.0, x[i]))
+      return -1;
+  return 0;
+}
+
 /* The method options do not apply. */
 static int
 no_method (eq_ctx *c)
@@ -764,66 +774,49 @@ eq_cert_B_16 (eq_ctx *c)
   return 0;
 }
 
-/* The state fields of (B.17) after the first two, dimensional (DIM) or
-   not, as ratios into R[4] ... R[13]. */
-static int
-scaled_fields_in (eq_ctx *c, int dim, double r[14])
-{
-  static const char *const names[2][5] = {
-    { "D", "V", "theta", "Omega", "tau" },
-    { "d", "v", "theta", "omega", "t" }
-  };
-  for (int i = 0; i < 5; i++)
-    if (eq_ratio_opt (c, names[dim][i], 0.0, r + 4 + 2 * i))
-      return -1;
-  return 0;
-}
-
 /* (B.17): to the massless skate's units (ell0 given, or L0 not: the
-   slot's own length delta, so Delta = 1) or back from them. */
+   state's slot length is delta itself, so Delta = 1) or back from them. */
 int
 eq_cert_B_17 (eq_ctx *c)
 {
-  static const char fn_nd[] =
-    "chaplygin_certified_massless_nondimensionalize";
-  static const char fn_d[] = "chaplygin_certified_massless_dimensionalize";
-  double delta[2], v0[2], r[14];
+  double delta[2], v0[2], x[7][2];
   if (eq_ratio_in (c, "delta", delta) || eq_ratio_in (c, "v0", v0))
     return -1;
   if (eq_given (c, "ell0") || !eq_given (c, "L0"))
     {
+      static const char fn[] =
+        "chaplygin_certified_massless_nondimensionalize";
+      static const char *const names[] = { "d", "v", "theta", "omega", "t" };
       chaplygin_discrete_nondim nd;
-      r[2] = delta[0];
-      r[3] = delta[1];
-      if (eq_ratio_in (c, "ell0", r) || scaled_fields_in (c, 1, r)
-          || eq_lib (c, fn_nd,
-                     chaplygin_certified_massless_nondimensionalize (delta,
-                                                                     v0, r,
-                                                                     &nd)))
+      if (eq_ratio_in (c, "ell0", x[0]) || ratios_opt (c, 5, names, x + 2)
+          || eq_lib (c, fn, chaplygin_certified_massless_nondimensionalize
+                     (delta, v0, x[0], delta, x[2], x[3], x[4], x[5], x[6],
+                      &nd)))
         return -1;
-      put (c, "L0", nd.L0, fn_nd);
-      put (c, "Delta", nd.Delta, fn_nd);
-      put (c, "D", nd.D, fn_nd);
-      put (c, "V", nd.V, fn_nd);
-      put (c, "theta", nd.theta, fn_nd);
-      put (c, "Omega", nd.Omega, fn_nd);
-      put (c, "tau", nd.tau, fn_nd);
+      put (c, "L0", nd.L0, fn);
+      put (c, "Delta", nd.Delta, fn);
+      put (c, "D", nd.D, fn);
+      put (c, "V", nd.V, fn);
+      put (c, "theta", nd.theta, fn);
+      put (c, "Omega", nd.Omega, fn);
+      put (c, "tau", nd.tau, fn);
       return 0;
     }
+  static const char fn[] = "chaplygin_certified_massless_dimensionalize";
+  static const char *const names[] = { "D", "V", "theta", "Omega", "tau" };
   chaplygin_discrete_dim d;
-  if (eq_ratio_in (c, "L0", r) || eq_ratio_opt (c, "Delta", 1.0, r + 2)
-      || scaled_fields_in (c, 0, r)
-      || eq_lib (c, fn_d, chaplygin_certified_massless_dimensionalize (delta,
-                                                                       v0, r,
-                                                                       &d)))
+  if (eq_ratio_in (c, "L0", x[0]) || eq_ratio_opt (c, "Delta", 1.0, x[1])
+      || ratios_opt (c, 5, names, x + 2)
+      || eq_lib (c, fn, chaplygin_certified_massless_dimensionalize
+                 (delta, v0, x[0], x[1], x[2], x[3], x[4], x[5], x[6], &d)))
     return -1;
-  put (c, "ell0", d.ell0, fn_d);
-  put (c, "delta", d.delta, fn_d);
-  put (c, "d", d.d, fn_d);
-  put (c, "v", d.v, fn_d);
-  put (c, "theta", d.theta, fn_d);
-  put (c, "omega", d.omega, fn_d);
-  put (c, "t", d.t, fn_d);
+  put (c, "ell0", d.ell0, fn);
+  put (c, "delta", d.delta, fn);
+  put (c, "d", d.d, fn);
+  put (c, "v", d.v, fn);
+  put (c, "theta", d.theta, fn);
+  put (c, "omega", d.omega, fn);
+  put (c, "t", d.t, fn);
   return 0;
 }
 
@@ -837,16 +830,6 @@ scales_in (eq_ctx *c, const char *dim_name, const char *nondim_name,
 {
   *dim = eq_given (c, dim_name) || !eq_given (c, nondim_name);
   return eq_ratio_in (c, "rho", rho) || eq_ratio_in (c, "v0", v0);
-}
-
-/* Optional exact inputs NAMES[i] (default 0) into X[i], i < N. */
-static int
-ratios_opt (eq_ctx *c, size_t n, const char *const names[], double x[][2])
-{
-  for (size_t i = 0; i < n; i++)
-    if (eq_ratio_opt (c, names[i], 0.0, x[i]))
-      return -1;
-  return 0;
 }
 
 int
