@@ -32,56 +32,12 @@
 #include <gmp.h>
 #include <mpfr.h>
 
-#include "testutil.h"
+#include "certref.h"
 #include "chaplygin.h"
 
 enum { RP = 2000 };             /* the irrational route's precision */
 
-/* ---- the reference route: exact inputs, rounding --------------------- */
-
-/* Q = R[0]/R[1] (GMP converts doubles exactly). */
-static void
-q_of (mpq_t q, const double r[2])
-{
-  mpq_t d;
-  mpq_init (d);
-  mpq_set_d (q, r[0]);
-  mpq_set_d (d, r[1]);
-  mpq_div (q, q, d);
-  mpq_clear (d);
-}
-
-/* The double nearest to X (ties to even, subnormals included), rounded
-   by MPFR: in the normal range by mpfr_get_d; below it (|X| < 2^-1022,
-   whose exponent may lie outside the exponent range of a binary64
-   emulation) as the integer nearest to X 2^1074, by mpfr_rint. */
-static double
-round_fr (const mpfr_t x)
-{
-  if (mpfr_zero_p (x) || !mpfr_number_p (x) || mpfr_get_exp (x) > -1022)
-    return mpfr_get_d (x, MPFR_RNDN);
-  mpfr_t y;
-  mpfr_init2 (y, mpfr_get_prec (x));
-  mpfr_mul_2si (y, x, 1074, MPFR_RNDN);        /* exact */
-  mpfr_rint (y, y, MPFR_RNDN);                 /* ties to even */
-  const double d = ldexp (mpfr_get_d (y, MPFR_RNDN), -1074);
-  mpfr_clear (y);
-  return d;
-}
-
-static double
-round_q (const mpq_t q)
-{
-  mpfr_t x;
-  mpfr_init2 (x, RP);
-  mpfr_set_q (x, q, MPFR_RNDN);
-  /* exact unless the rational's binary expansion is longer than RP bits,
-     which then cannot be a double or a midpoint: the second rounding is
-     harmless there; where it is one, the value is held exactly */
-  const double d = round_fr (x);
-  mpfr_clear (x);
-  return d;
-}
+/* ---- the reference route (certref.h's instruments, and these) -------- */
 
 /* Whether Q (normal range) lies exactly halfway between two doubles. */
 static int
@@ -116,73 +72,7 @@ sqrt_q (mpq_t r, const mpq_t q)
   return 1;
 }
 
-/* The same doubles, signed zeros told apart. */
-static int
-same (double a, double b)
-{
-  return a == b && signbit (a) == signbit (b);
-}
-
-#define ck_assert_same(got, want)                                           \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (same (g_, w_), "%s = %a (%.17g), want %a (%.17g)",     \
-                     #got, g_, g_, w_, w_);                                 \
-    }                                                                       \
-  while (0)
-
-/* |A - B| in units of the last place of B. */
-static double
-ulps (double a, double b)
-{
-  if (a == b)
-    return 0.0;
-  const double u = nextafter (fabs (b), HUGE_VAL) - fabs (b);
-  return fabs (a - b) / (u > 0.0 ? u : DBL_MIN);
-}
-
-#define ck_assert_ulps(got, want, n)                                        \
-  do                                                                        \
-    {                                                                       \
-      double g_ = (got), w_ = (want);                                       \
-      ck_assert_msg (ulps (g_, w_) <= (n), "%s = %.17g, want %.17g "        \
-                     "within %g ulps: %g", #got, g_, w_, (double) (n),      \
-                     ulps (g_, w_));                                        \
-    }                                                                       \
-  while (0)
-
-/* A random exact input near X: P/(Q 2^k) with Q up to 2^20 (kind 0), up
-   to 2^53 - 1 (kind 1), or the double X itself (kind 2). */
-static void
-ratio_near (tu_rng *g, double x, double r[2])
-{
-  const int kind = (int) tu_uniform (g, 0.0, 3.0);
-  if (kind == 2 || x == 0.0)
-    {
-      r[0] = x;
-      r[1] = 1.0;
-      return;
-    }
-  const int k = ilogb (x) < 0 ? -ilogb (x) : 0;
-  double q = floor (tu_uniform (g, 1.0, kind ? 0x1p53 : 0x1p20));
-  double p = nearbyint (ldexp (x, k) * q);
-  while (!(fabs (p) < 0x1p53))
-    {
-      q = floor (q / 2.0) + 1.0;
-      p = nearbyint (ldexp (x, k) * q);
-    }
-  r[0] = p;
-  r[1] = ldexp (q, k);
-}
-
-static void
-ratio_in (tu_rng *g, double a, double b, double r[2])
-{
-  ratio_near (g, tu_uniform (g, a, b), r);
-}
-
-#define R(x) ((const double[2]) { (x), 1.0 })
+#define R(x) AS_RATIO (x)
 
 /* K with 3 K = 2^53 + 1 and K7 with 3 K7 = 2^53 + 7: 54-bit odd products,
    midpoints between two doubles (ties to even: down, and up). */
@@ -236,10 +126,10 @@ check_b14 (const double L0[2], const double Delta[2], const double Vs[2],
 {
   mpq_t qL, qD, v, h, e, ts, loss;
   mpq_inits (qL, qD, v, h, e, ts, loss, NULL);
-  q_of (qL, L0);
-  q_of (qD, Delta);
-  q_of (v, Vs);
-  q_of (h, H);
+  cr_q_of (qL, L0);
+  cr_q_of (qD, Delta);
+  cr_q_of (v, Vs);
+  cr_q_of (h, H);
   /* E* = |V*|^2/2, tau* = Delta/|V*| */
   mpq_abs (v, v);
   mpq_mul (e, v, v);
@@ -251,8 +141,8 @@ check_b14 (const double L0[2], const double Delta[2], const double Vs[2],
   int lossless;
   ck_assert_ok (chaplygin_certified_fixed_point (L0, Delta, Vs, 0.25, 2.5,
                                                  NULL, &st, &tau_star));
-  ck_assert_same (st.E, round_q (e));
-  ck_assert_same (tau_star, round_q (ts));
+  ck_assert_same (st.E, cr_round_q (e));
+  ck_assert_same (tau_star, cr_round_q (ts));
   ck_assert_same (st.H, 0.0);
   ck_assert_same (st.V, Vs[0] / Vs[1]);        /* V* a double here */
   ck_assert_int_eq (st.dir, (Vs[0] > 0) == (Vs[1] > 0) ? 1 : -1);
@@ -261,7 +151,7 @@ check_b14 (const double L0[2], const double Delta[2], const double Vs[2],
   ck_assert_ok (chaplygin_certified_collision_loss (L0, Delta, dir,
                                                     reversal, H, &x,
                                                     &lossless));
-  ck_assert_same (x, round_q (loss));
+  ck_assert_same (x, cr_round_q (loss));
   ck_assert_int_eq (lossless, mpq_sgn (h) == 0);
   mpq_clears (qL, qD, v, h, e, ts, loss, NULL);
 }
@@ -273,11 +163,11 @@ START_TEST (certified_B_14)
   for (int i = 0; i < 3000; i++)
     {
       double L0[2], Delta[2], Vs[2], H[2];
-      ratio_in (&g, -3.0, 3.0, L0);
-      ratio_in (&g, 0.01, 3.0, Delta);
+      cr_ratio_in (&g, -3.0, 3.0, L0);
+      cr_ratio_in (&g, 0.01, 3.0, Delta);
       Vs[0] = tu_uniform (&g, 0.01, 10.0) * (i % 2 ? 1 : -1);
       Vs[1] = 1.0;
-      ratio_in (&g, -5.0, 5.0, H);
+      cr_ratio_in (&g, -5.0, 5.0, H);
       const int dir = i % 4 < 2 ? 1 : -1, rev = (i / 4) % 2;
       check_b14 (L0, Delta, Vs, dir, rev, H);
       /* the uncertified functions: E*, tau* one rounding each from the
@@ -565,8 +455,8 @@ route_map (const mpq_t L0, int dir, const mpq_t E, const mpq_t H,
       }
     else
       mpq_set_ui (y, 0, 1);
-    r.H = round_q (y);
-    r.E = round_q (E);
+    r.H = cr_round_q (y);
+    r.E = cr_round_q (E);
   }
   if (h0)
     {
@@ -576,13 +466,13 @@ route_map (const mpq_t L0, int dir, const mpq_t E, const mpq_t H,
         {
           mpq_abs (x, v);
           mpq_inv (x, x);
-          r.dtau = round_q (x);
+          r.dtau = cr_round_q (x);
         }
       else
         {
           mpfr_abs (t, V, MPFR_RNDN);
           mpfr_ui_div (t, 1, t, MPFR_RNDN);
-          r.dtau = round_fr (t);
+          r.dtau = cr_round_fr (t);
         }
       goto done;
     }
@@ -634,10 +524,10 @@ route_map (const mpq_t L0, int dir, const mpq_t E, const mpq_t H,
   if (texact)
     {
       mpfr_set_q (t, t1q, MPFR_RNDN);
-      r.dtau = round_q (t1q);
+      r.dtau = cr_round_q (t1q);
     }
   else
-    r.dtau = round_fr (t);
+    r.dtau = cr_round_fr (t);
   /* dtheta = atan2(t H, l0^2 + l0 V t) */
   mpfr_mul_q (ys, t, H, MPFR_RNDN);
   mpfr_set_q (xs, l0, MPFR_RNDN);
@@ -646,7 +536,7 @@ route_map (const mpq_t L0, int dir, const mpq_t E, const mpq_t H,
   mpq_mul (x, l0, l0);
   mpfr_add_q (xs, xs, x, MPFR_RNDN);
   mpfr_atan2 (t, ys, xs, MPFR_RNDN);
-  r.dtheta = round_fr (t);
+  r.dtheta = cr_round_fr (t);
 done:
   mpq_clears (l0, l1, a, b, c, disc, v, t1q, t2q, x, y, one, NULL);
   mpfr_clears (V, t1, t2, t, xs, ys, (mpfr_ptr) 0);
@@ -659,9 +549,9 @@ route_eh (const double L0[2], int dir, const double E[2], const double H[2])
 {
   mpq_t qL, e, h, v2, l0;
   mpq_inits (qL, e, h, v2, l0, NULL);
-  q_of (qL, L0);
-  q_of (e, E);
-  q_of (h, H);
+  cr_q_of (qL, L0);
+  cr_q_of (e, E);
+  cr_q_of (h, H);
   mpq_set (l0, qL);
   if (dir < 0)
     {
@@ -696,9 +586,9 @@ route_phase (const double L0[2], const double V[2], const double Om[2])
 {
   mpq_t qL, v, w, e, h, v2;
   mpq_inits (qL, v, w, e, h, v2, NULL);
-  q_of (qL, L0);
-  q_of (v, V);
-  q_of (w, Om);
+  cr_q_of (qL, L0);
+  cr_q_of (v, V);
+  cr_q_of (w, Om);
   const int dir = mpq_sgn (v);
   mpq_set (h, qL);
   if (dir < 0)
@@ -749,7 +639,7 @@ check_eh (const double L0[2], int dir, const double E[2], const double H[2])
   int rev2;
   ck_assert_ok (chaplygin_certified_massless_step (L0, dir, E, H, &E2, &H2,
                                                    NULL, NULL, &rev2));
-  ck_assert (same (E2, En) && same (H2, Hn) && rev2 == rev);
+  ck_assert (cr_same (E2, En) && cr_same (H2, Hn) && rev2 == rev);
   return rev;
 }
 
@@ -782,9 +672,9 @@ START_TEST (certified_B_15)
     {
       double L0[2], E[2], H[2];
       const int dir = i % 2 ? 1 : -1;
-      ratio_in (&g, -3.0, 2.0, L0);
-      ratio_in (&g, 0.05, 5.0, E);
-      ratio_in (&g, -3.0, 3.0, H);
+      cr_ratio_in (&g, -3.0, 2.0, L0);
+      cr_ratio_in (&g, 0.05, 5.0, E);
+      cr_ratio_in (&g, -3.0, 3.0, H);
       if (i % 50 == 0)
         H[0] = 0.0;
       const int r = check_eh (L0, dir, E, H);
@@ -819,11 +709,11 @@ START_TEST (certified_B_15)
   for (int i = 0; i < 600; i++)
     {
       double L0[2], V[2], Om[2];
-      ratio_in (&g, -3.0, 2.0, L0);
-      ratio_in (&g, 0.05, 3.0, V);
+      cr_ratio_in (&g, -3.0, 2.0, L0);
+      cr_ratio_in (&g, 0.05, 3.0, V);
       if (i % 2)
         V[0] = -V[0];
-      ratio_in (&g, -3.0, 3.0, Om);
+      cr_ratio_in (&g, -3.0, 3.0, Om);
       check_phase (L0, V, Om);
     }
 }
@@ -846,10 +736,10 @@ START_TEST (certified_B_15_cases)
     mpfr_const_pi (x, MPFR_RNDN);
     mpfr_mul_2ui (x, x, 1, MPFR_RNDN);
     mpfr_div_ui (x, x, 3, MPFR_RNDN);
-    ck_assert_same (th, round_fr (x));
+    ck_assert_same (th, cr_round_fr (x));
     mpfr_set_ui (x, 12, MPFR_RNDN);
     mpfr_sqrt (x, x, MPFR_RNDN);
-    ck_assert_same (tt, round_fr (x));
+    ck_assert_same (tt, cr_round_fr (x));
     mpfr_clear (x);
   }
   ck_assert_same (Hn, 0.5);
@@ -919,7 +809,7 @@ START_TEST (certified_B_15_cases)
   ck_assert_ok (chaplygin_certified_massless_step (R (-0.5), -1, R (0.125),
                                                    R (-0.0), &En, &Hn, &th,
                                                    &tt, &rev));
-  ck_assert (same (tt, 2.0) && same (th, 0.0) && same (Hn, 0.0));
+  ck_assert (cr_same (tt, 2.0) && cr_same (th, 0.0) && cr_same (Hn, 0.0));
   ck_assert_int_eq (check_phase (R (-0.5), R (1.0), R (1.0)), 1);
   ck_assert_ok (chaplygin_certified_massless_step_phase
                 (R (-0.5), R (1.0), R (1.0), &En, &Hn, &th, &tt, &rev));
@@ -935,7 +825,7 @@ START_TEST (certified_B_15_cases)
   ck_assert_ok (chaplygin_certified_massless_step (R (1.0), 1, R (0.5),
                                                    R (0x1p-1070), &En, &Hn,
                                                    &th, &tt, &rev));
-  ck_assert (th > 0.0 && th < DBL_MIN && same (Hn, 0x1p-1071));
+  ck_assert (th > 0.0 && th < DBL_MIN && cr_same (Hn, 0x1p-1071));
   ck_assert_int_eq (check_eh (R (1e200), -1, R (1.0), R (1e199)), 0);
   ck_assert_int_eq (check_eh (R (-1e200), 1, R (1.0), R (1e199)), 0);
   ck_assert_int_eq (check_eh (R (-0x1p20), 1, R (0.5), R (0x1p20 - 0.5)),
@@ -1084,9 +974,9 @@ START_TEST (certified_B_15_period2)
   for (int i = 0; i < 200; i++)
     {
       double L0[2], E[2], H[2];
-      ratio_in (&g, -0.99, -0.01, L0);
-      ratio_in (&g, 0.1, 3.0, E);
-      ratio_in (&g, -1.0, 1.0, H);
+      cr_ratio_in (&g, -0.99, -0.01, L0);
+      cr_ratio_in (&g, 0.1, 3.0, E);
+      cr_ratio_in (&g, -1.0, 1.0, H);
       const int r = check_eh (L0, i % 2 ? 1 : -1, E, H);
       ck_assert (r == 1 || r == -1);       /* or an invalid start */
     }
@@ -1102,7 +992,7 @@ route_c2 (const double L0[2], int Dplus, int reversal)
 {
   mpq_t l, t, d;
   mpq_inits (l, t, d, NULL);
-  q_of (l, L0);
+  cr_q_of (l, L0);
   mpq_set_ui (t, 1, 1);
   mpq_add (t, t, l);
   mpq_mul (t, t, l);
@@ -1110,7 +1000,7 @@ route_c2 (const double L0[2], int Dplus, int reversal)
   mpq_add (d, d, l);
   mpq_mul (d, d, d);
   mpq_div (t, t, d);
-  const double x = round_q (t);
+  const double x = cr_round_q (t);
   mpq_clears (l, t, d, NULL);
   return x;
 }
@@ -1122,7 +1012,7 @@ START_TEST (certified_B_16)
   for (int i = 0; i < 4000; i++)
     {
       double L0[2], C2;
-      ratio_in (&g, -4.0, 4.0, L0);
+      cr_ratio_in (&g, -4.0, 4.0, L0);
       const int Dp = i % 2, rev = (i / 2) % 2;
       ck_assert_ok (chaplygin_certified_massless_coefficient
                     (L0, R ((double) Dp), rev, &C2));
@@ -1229,11 +1119,11 @@ route_scale (const double delta[2], const double v0[2], const double in[14],
 {
   mpq_t d, v, x, k;
   mpq_inits (d, v, x, k, NULL);
-  q_of (d, delta);
-  q_of (v, v0);
+  cr_q_of (d, delta);
+  cr_q_of (v, v0);
   for (int i = 0; i < 7; i++)
     {
-      q_of (x, in + 2 * i);
+      cr_q_of (x, in + 2 * i);
       switch (i)
         {
         case 0: case 1: case 2:
@@ -1259,9 +1149,26 @@ route_scale (const double delta[2], const double v0[2], const double in[14],
         default:
           break;
         }
-      w[i] = round_q (x);
+      w[i] = cr_round_q (x);
     }
   mpq_clears (d, v, x, k, NULL);
+}
+
+/* The certified functions on the fields IN[2 i], IN[2 i + 1]. */
+static int
+nondim14 (const double delta[2], const double v0[2], const double in[14],
+          chaplygin_discrete_nondim *nd)
+{
+  return chaplygin_certified_massless_nondimensionalize
+    (delta, v0, in, in + 2, in + 4, in + 6, in + 8, in + 10, in + 12, nd);
+}
+
+static int
+dim14 (const double delta[2], const double v0[2], const double in[14],
+       chaplygin_discrete_dim *dm)
+{
+  return chaplygin_certified_massless_dimensionalize
+    (delta, v0, in, in + 2, in + 4, in + 6, in + 8, in + 10, in + 12, dm);
 }
 
 static void
@@ -1271,20 +1178,18 @@ check_b17 (const double delta[2], const double v0[2], const double in[14])
   chaplygin_discrete_nondim nd;
   chaplygin_discrete_dim dm;
   route_scale (delta, v0, in, 0, w);
-  ck_assert_ok (chaplygin_certified_massless_nondimensionalize (delta, v0,
-                                                                in, &nd));
+  ck_assert_ok (nondim14 (delta, v0, in, &nd));
   const double gn[7] = { nd.L0, nd.Delta, nd.D, nd.V, nd.theta, nd.Omega,
                          nd.tau };
   for (int i = 0; i < 7; i++)
-    ck_assert_msg (same (gn[i], w[i]), "field %d: %a, want %a", i, gn[i],
+    ck_assert_msg (cr_same (gn[i], w[i]), "field %d: %a, want %a", i, gn[i],
                    w[i]);
   route_scale (delta, v0, in, 1, w);
-  ck_assert_ok (chaplygin_certified_massless_dimensionalize (delta, v0, in,
-                                                             &dm));
+  ck_assert_ok (dim14 (delta, v0, in, &dm));
   const double gd[7] = { dm.ell0, dm.delta, dm.d, dm.v, dm.theta, dm.omega,
                          dm.t };
   for (int i = 0; i < 7; i++)
-    ck_assert_msg (same (gd[i], w[i]), "field %d: %a, want %a", i, gd[i],
+    ck_assert_msg (cr_same (gd[i], w[i]), "field %d: %a, want %a", i, gd[i],
                    w[i]);
 }
 
@@ -1295,10 +1200,10 @@ START_TEST (certified_B_17)
   for (int i = 0; i < 2000; i++)
     {
       double delta[2], v0[2], in[14];
-      ratio_in (&g, 0.01, 10.0, delta);
-      ratio_in (&g, 0.01, 10.0, v0);
+      cr_ratio_in (&g, 0.01, 10.0, delta);
+      cr_ratio_in (&g, 0.01, 10.0, v0);
       for (int j = 0; j < 7; j++)
-        ratio_in (&g, -10.0, 10.0, in + 2 * j);
+        cr_ratio_in (&g, -10.0, 10.0, in + 2 * j);
       if (i % 3 == 0)
         {
           in[2] = delta[0];              /* the slot's own length */
@@ -1317,19 +1222,17 @@ START_TEST (certified_B_17)
           chaplygin_discrete_nondim u, c;
           ck_assert_ok (chaplygin_massless_nondimensionalize (delta[0], v0[0],
                                                               &d, &u));
-          ck_assert_ok (chaplygin_certified_massless_nondimensionalize
-                        (delta, v0, in, &c));
-          ck_assert (same (u.L0, c.L0) && same (u.Delta, c.Delta)
-                     && same (u.D, c.D) && same (u.V, c.V)
-                     && same (u.theta, c.theta));
+          ck_assert_ok (nondim14 (delta, v0, in, &c));
+          ck_assert (cr_same (u.L0, c.L0) && cr_same (u.Delta, c.Delta)
+                     && cr_same (u.D, c.D) && cr_same (u.V, c.V)
+                     && cr_same (u.theta, c.theta));
           ck_assert_ulps (u.Omega, c.Omega, 2);
           ck_assert_ulps (u.tau, c.tau, 2);
         }
       if (i % 3 == 0)
         {
           chaplygin_discrete_nondim nd;
-          ck_assert_ok (chaplygin_certified_massless_nondimensionalize
-                        (delta, v0, in, &nd));
+          ck_assert_ok (nondim14 (delta, v0, in, &nd));
           ck_assert_same (nd.Delta, 1.0);
         }
     }
@@ -1342,35 +1245,28 @@ START_TEST (certified_B_17)
     chaplygin_discrete_nondim nd;
     chaplygin_discrete_dim dm;
     check_b17 (R (K1), R (1.0), in);
-    ck_assert_ok (chaplygin_certified_massless_nondimensionalize
-                  (R (K1), R (1.0), in, &nd));
+    ck_assert_ok (nondim14 (R (K1), R (1.0), in, &nd));
     ck_assert_same (nd.Omega, 0x1p53);
     check_b17 (R (1.0), R (K7), in);
-    ck_assert_ok (chaplygin_certified_massless_dimensionalize
-                  (R (1.0), R (K7), in, &dm));
+    ck_assert_ok (dim14 (R (1.0), R (K7), in, &dm));
     ck_assert_same (dm.omega, 0x1p53 + 8.0);
     in[0] = 0x1p-1074;
     in[12] = 3.0 * 0x1p-1074;
     check_b17 (R (2.0), R (1.0), in);
-    ck_assert_ok (chaplygin_certified_massless_nondimensionalize
-                  (R (2.0), R (1.0), in, &nd));
+    ck_assert_ok (nondim14 (R (2.0), R (1.0), in, &nd));
     ck_assert_same (nd.L0, 0.0);
     ck_assert_same (nd.tau, 0x1p-1073);
     /* theta is not scaled: the ratio's nearest double */
     in[8] = 1.0;
     in[9] = 3.0;
     check_b17 (R (7.0), R (5.0), in);
-    ck_assert_ok (chaplygin_certified_massless_nondimensionalize
-                  (R (7.0), R (5.0), in, &nd));
+    ck_assert_ok (nondim14 (R (7.0), R (5.0), in, &nd));
     ck_assert_same (nd.theta, 1.0 / 3.0);
     /* beyond the doubles */
     in[0] = DBL_MAX;
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (0.5), R (1.0), in, &nd), CHAPLYGIN_ERANGE);
-    ck_assert_status (chaplygin_certified_massless_dimensionalize
-                      (R (2.0), R (1.0), in, &dm), CHAPLYGIN_ERANGE);
-    ck_assert_ok (chaplygin_certified_massless_nondimensionalize
-                  (R (2.0), R (1.0), in, &nd));
+    ck_assert_status (nondim14 (R (0.5), R (1.0), in, &nd), CHAPLYGIN_ERANGE);
+    ck_assert_status (dim14 (R (2.0), R (1.0), in, &dm), CHAPLYGIN_ERANGE);
+    ck_assert_ok (nondim14 (R (2.0), R (1.0), in, &nd));
     ck_assert_same (nd.L0, DBL_MAX / 2.0);
   }
   /* the error statuses, the outputs untouched */
@@ -1381,30 +1277,26 @@ START_TEST (certified_B_17)
     chaplygin_discrete_nondim nd, keep;
     memset (&nd, 0x5a, sizeof nd);
     keep = nd;
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (0.0), R (1.0), in, &nd), CHAPLYGIN_EDOM);
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (1.0), R (-1.0), in, &nd), CHAPLYGIN_EDOM);
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      ((const double[2]) { 1.0, -1.0 }, R (1.0), in, &nd),
-                      CHAPLYGIN_EDOM);
+    ck_assert_status (nondim14 (R (0.0), R (1.0), in, &nd), CHAPLYGIN_EDOM);
+    ck_assert_status (nondim14 (R (1.0), R (-1.0), in, &nd), CHAPLYGIN_EDOM);
+    ck_assert_status (nondim14 ((const double[2]) { 1.0, -1.0 }, R (1.0), in,
+                                &nd), CHAPLYGIN_EDOM);
     in[13] = 0.0;
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (1.0), R (1.0), in, &nd), CHAPLYGIN_EDOM);
+    ck_assert_status (nondim14 (R (1.0), R (1.0), in, &nd), CHAPLYGIN_EDOM);
     in[13] = 1.0;
     in[8] = INFINITY;
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (1.0), R (1.0), in, &nd), CHAPLYGIN_EDOM);
+    ck_assert_status (nondim14 (R (1.0), R (1.0), in, &nd), CHAPLYGIN_EDOM);
     ck_assert (memcmp (&nd, &keep, sizeof nd) == 0);
     chaplygin_discrete_dim dm;
+    ck_assert_status (dim14 (R (1.0), R (1.0), in, &dm), CHAPLYGIN_EDOM);
     ck_assert_status (chaplygin_certified_massless_dimensionalize
-                      (R (1.0), R (1.0), in, &dm), CHAPLYGIN_EDOM);
-    ck_assert_status (chaplygin_certified_massless_dimensionalize
-                      (R (1.0), R (1.0), NULL, &dm), CHAPLYGIN_EINVAL);
+                      (R (1.0), R (1.0), R (1.0), R (1.0), R (1.0), NULL,
+                       R (1.0), R (1.0), R (1.0), &dm), CHAPLYGIN_EINVAL);
     ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (1.0), NULL, in, &nd), CHAPLYGIN_EINVAL);
-    ck_assert_status (chaplygin_certified_massless_nondimensionalize
-                      (R (1.0), R (1.0), in, NULL), CHAPLYGIN_EINVAL);
+                      (R (1.0), R (1.0), R (1.0), NULL, R (1.0), R (1.0),
+                       R (1.0), R (1.0), R (1.0), &nd), CHAPLYGIN_EINVAL);
+    ck_assert_status (nondim14 (R (1.0), NULL, in, &nd), CHAPLYGIN_EINVAL);
+    ck_assert_status (nondim14 (R (1.0), R (1.0), in, NULL), CHAPLYGIN_EINVAL);
   }
 }
 END_TEST
