@@ -209,13 +209,13 @@ chaplygin_certified_massless_coefficient (const double L0[2],
    segment's. */
 enum
 {
-  MS_L0, MS_E, MS_H,               /* inputs */
-  MS_L_START, MS_L_FAR,           /* l0, l1 */
-  MS_Q,                          /* p^2 = H^2/(2E) */
-  MS_W0, MS_W1,                   /* w0^2 = l0^2 - p^2, w1^2 = l1^2 - p^2 */
-  MS_SUM,                        /* |l0 + l1| = |2 L0 + 1| */
-  MS_LM, MS_LP,                   /* l at the end left, at the new peg */
-  MS_T                           /* scratch */
+  MS_L0, MS_E, MS_H,            /* inputs */
+  MS_L_START, MS_L_FAR,         /* l0, l1 */
+  MS_Q,                         /* p^2 = H^2/(2E) */
+  MS_W0, MS_W1,                 /* w0^2 = l0^2 - p^2, w1^2 = l1^2 - p^2 */
+  MS_SUM,                       /* |l0 + l1| = |2 L0 + 1| */
+  MS_LM, MS_LP,                 /* l at the end left, at the new peg */
+  MS_T                          /* scratch */
 };
 
 /* The segment from the state (DIR, E, H) at L0 in S, classified exactly
@@ -231,7 +231,7 @@ massless_segment (chp_cert_qset *s, int dir, int *reversal)
   fmpq *l0 = s->q[MS_L_START], *l1 = s->q[MS_L_FAR], *t = s->q[MS_T];
   if (fmpq_is_zero (s->q[MS_E]))
     return CHAPLYGIN_ESTATE;
-  peg_ends (l0, l1, s->q[MS_L0], dir < 0);
+  peg_ends (l0, l1, s->q[MS_L0], dir < 0);     /* the start at D = 1? */
   fmpq_mul (t, s->q[MS_H], s->q[MS_H]);
   fmpq_div (s->q[MS_Q], t, s->q[MS_E]);
   fmpq_div_2exp (s->q[MS_Q], s->q[MS_Q], 1);
@@ -254,69 +254,89 @@ massless_segment (chp_cert_qset *s, int dir, int *reversal)
   return CHAPLYGIN_SUCCESS;
 }
 
-/* The geometry of a segment with H != 0 as balls: its time (TIME) or the
-   heading turned, sgn(H) Phi. */
+/* The geometry of a segment with H != 0 as balls: its time (TIME, only
+   without reversal) or the heading turned, sgn(H) Phi. */
 typedef struct
 {
   const chp_cert_qset *s;
   int reversal, time;
 } geometry_expr;
 
+/* W0 = sqrt(w0^2); without reversal also W1 = sqrt(w1^2) and the
+   distance the point mass travels, D = |w1 - w0| = |2 L0 + 1|/(w0 + w1)
+   (no difference of square roots).  (A reversal's time, 2 w0/sqrt(2E),
+   is segment_time's square root; its angle needs only w0.) */
 static void
-geometry_ball (arb_t r, const void *data, slong prec)
+distance_ball (arb_t d, arb_t w0, arb_t w1, const geometry_expr *x,
+               slong prec)
 {
-  const geometry_expr *x = data;
-  arb_t p, w0, w1, d, t;
-  arb_init (p);
-  arb_init (w0);
-  arb_init (w1);
-  arb_init (d);
-  arb_init (t);
   arb_set_fmpq (w0, x->s->q[MS_W0], prec);
   arb_sqrt (w0, w0, prec);
+  if (x->reversal)
+    return;
+  arb_set_fmpq (w1, x->s->q[MS_W1], prec);
+  arb_sqrt (w1, w1, prec);
+  arb_add (d, w0, w1, prec);
+  arb_inv (d, d, prec);
+  arb_mul_fmpz (d, d, fmpq_numref (x->s->q[MS_SUM]), prec);
+  arb_div_fmpz (d, d, fmpq_denref (x->s->q[MS_SUM]), prec);
+}
+
+/* Phi, the angle swept by the direction from the peg to the point mass:
+   2 atan2(w0, p) (reversal) or atan2(p D, p^2 + w0 w1), p = sqrt(p^2). */
+static void
+angle_ball (arb_t r, const arb_t d, const arb_t w0, const arb_t w1,
+            const geometry_expr *x, slong prec)
+{
+  arb_t p, t;
+  arb_init (p);
+  arb_init (t);
   arb_set_fmpq (p, x->s->q[MS_Q], prec);
   if (x->reversal)
-    arb_mul_2exp_si (d, w0, 1);                 /* dist = 2 w0 */
-  else
     {
-      /* dist = |w1 - w0| = |2 L0 + 1|/(w0 + w1) */
-      arb_set_fmpq (w1, x->s->q[MS_W1], prec);
-      arb_sqrt (w1, w1, prec);
-      arb_add (t, w0, w1, prec);
-      arb_set_fmpq (d, x->s->q[MS_SUM], prec);
-      arb_div (d, d, t, prec);
-    }
-  if (x->time)
-    {
-      /* dist/sqrt(2E) */
-      arb_set_fmpq (t, x->s->q[MS_E], prec);
-      arb_mul_2exp_si (t, t, 1);
-      arb_rsqrt (t, t, prec);
-      arb_mul (r, d, t, prec);
-    }
-  else if (x->reversal)
-    {
-      /* 2 atan2(w0, p) */
       arb_sqrt (p, p, prec);
       arb_atan2 (r, w0, p, prec);
       arb_mul_2exp_si (r, r, 1);
     }
   else
     {
-      /* atan2(p dist, p^2 + w0 w1) */
       arb_mul (t, w0, w1, prec);
       arb_add (t, t, p, prec);
       arb_sqrt (p, p, prec);
-      arb_mul (d, d, p, prec);
-      arb_atan2 (r, d, t, prec);
+      arb_mul (p, p, d, prec);
+      arb_atan2 (r, p, t, prec);
     }
-  if (!x->time && fmpq_sgn (x->s->q[MS_H]) < 0)
-    arb_neg (r, r);
   arb_clear (p);
+  arb_clear (t);
+}
+
+static void
+geometry_ball (arb_t r, const void *data, slong prec)
+{
+  const geometry_expr *x = data;
+  arb_t d, w0, w1;
+  arb_init (d);
+  arb_init (w0);
+  arb_init (w1);
+  distance_ball (d, w0, w1, x, prec);
+  if (x->time)
+    {
+      /* dist/sqrt(2E) */
+      arb_set_fmpq (r, x->s->q[MS_E], prec);
+      arb_mul_2exp_si (r, r, 1);
+      arb_rsqrt (r, r, prec);
+      arb_mul (r, r, d, prec);
+    }
+  else
+    {
+      /* sgn(H) Phi */
+      angle_ball (r, d, w0, w1, x, prec);
+      if (fmpq_sgn (x->s->q[MS_H]) < 0)
+        arb_neg (r, r);
+    }
+  arb_clear (d);
   arb_clear (w0);
   arb_clear (w1);
-  arb_clear (d);
-  arb_clear (t);
 }
 
 /* The time of the segment, rounded into *X: 1/sqrt(2E) (H = 0),
