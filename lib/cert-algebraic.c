@@ -192,16 +192,11 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
     }
   if (!status)
     {
-      /* E+ = E- - Delta^2 H^2/(2 (1 + b^2)^2 (1 + b'^2)) */
-      chp_cert_one_plus_sq (t, b);
-      fmpq_mul (t, t, t);
-      chp_cert_one_plus_sq (u, bp);
-      fmpq_mul (t, t, u);
-      fmpq_mul_2exp (t, t, 1);
-      fmpq_mul (u, qD, h);
-      fmpq_mul (u, u, u);
-      fmpq_div (u, u, t);
-      fmpq_sub (e, e, u);
+      /* E+ = E- + C1 H^2, C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)) */
+      chp_cert_c1 (u, qD, b, bp);
+      fmpq_mul (u, u, h);
+      fmpq_mul (u, u, h);
+      fmpq_add (e, e, u);
       /* H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H- */
       chp_cert_momentum_ratio (u, qL, qD, b, t);
       fmpq_mul (h, h, u);

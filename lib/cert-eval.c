@@ -50,6 +50,37 @@ chp_cert_one_plus_sq (fmpq_t t, const fmpq_t a)
   fmpq_add_ui (t, t, 1);
 }
 
+void
+chp_cert_c1 (fmpq_t c1, const fmpq_t Delta, const fmpq_t b, const fmpq_t bp)
+{
+  fmpq_t t, u;
+  fmpq_init (t);
+  fmpq_init (u);
+  chp_cert_one_plus_sq (t, b);
+  fmpq_mul (t, t, t);
+  chp_cert_one_plus_sq (u, bp);
+  fmpq_mul (t, t, u);
+  fmpq_mul_2exp (t, t, 1);
+  fmpq_mul (u, Delta, Delta);
+  fmpq_div (c1, u, t);
+  fmpq_neg (c1, c1);
+  fmpq_clear (t);
+  fmpq_clear (u);
+}
+
+int
+chp_cert_sqrt_q (fmpq_t r, const fmpq_t a)
+{
+  if (fmpq_sgn (a) < 0 || !fmpz_is_square (fmpq_numref (a))
+      || !fmpz_is_square (fmpq_denref (a)))
+    return 0;
+  /* a canonical A: its numerator and denominator coprime, so are their
+     roots (R canonical too) */
+  fmpz_sqrt (fmpq_numref (r), fmpq_numref (a));
+  fmpz_sqrt (fmpq_denref (r), fmpq_denref (a));
+  return 1;
+}
+
 int
 chp_cert_ziv_round (chp_cert_ball_fn f, const void *data, double *x)
 {
@@ -98,21 +129,23 @@ sqrt_ball (arb_t b, const void *data, slong prec)
 int
 chp_cert_round_sqrt_expr (const fmpq_t a, const fmpq_t r, int s, double *x)
 {
-  if (fmpz_is_square (fmpq_numref (r)) && fmpz_is_square (fmpq_denref (r)))
+  fmpq_t t;
+  fmpq_init (t);
+  int status;
+  if (chp_cert_sqrt_q (t, r))
     {
-      fmpq_t t;
-      fmpq_init (t);
-      fmpz_sqrt (fmpq_numref (t), fmpq_numref (r));
-      fmpz_sqrt (fmpq_denref (t), fmpq_denref (r));
       if (s < 0)
         fmpq_neg (t, t);
       fmpq_add (t, t, a);
-      const int status = chp_cert_round_fmpq (t, x);
-      fmpq_clear (t);
-      return status;
+      status = chp_cert_round_fmpq (t, x);
     }
-  sqrt_expr e = { a, r, s };
-  return chp_cert_ziv_round (sqrt_ball, &e, x);
+  else
+    {
+      sqrt_expr e = { a, r, s };
+      status = chp_cert_ziv_round (sqrt_ball, &e, x);
+    }
+  fmpq_clear (t);
+  return status;
 }
 
 int
@@ -154,23 +187,17 @@ void
 chp_cert_coefficients (fmpq_t C1, fmpq_t C2, const fmpq_t L0,
                        const fmpq_t Delta, const fmpq_t b)
 {
-  fmpq_t t, u;
+  fmpq_t t, bp;
   fmpq_init (t);
-  fmpq_init (u);
+  fmpq_init (bp);
   chp_cert_momentum_ratio (C2, L0, Delta, b, t);
-  /* t = 1 + b^2;  u = b' = 2 L0 + Delta - b */
-  fmpq_mul_2exp (u, L0, 1);
-  fmpq_add (u, u, Delta);
-  fmpq_sub (u, u, b);
-  chp_cert_one_plus_sq (u, u);
-  fmpq_mul (u, u, t);
-  fmpq_mul (u, u, t);
-  fmpq_mul_2exp (u, u, 1);
-  fmpq_mul (C1, Delta, Delta);
-  fmpq_div (C1, C1, u);
-  fmpq_neg (C1, C1);
+  /* b' = 2 L0 + Delta - b, the other end */
+  fmpq_mul_2exp (bp, L0, 1);
+  fmpq_add (bp, bp, Delta);
+  fmpq_sub (bp, bp, b);
+  chp_cert_c1 (C1, Delta, b, bp);
   fmpq_clear (t);
-  fmpq_clear (u);
+  fmpq_clear (bp);
 }
 
 void

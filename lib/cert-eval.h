@@ -35,6 +35,17 @@ int chp_cert_slot_in (fmpq_t L0, fmpq_t Delta, const double L0r[2],
 /* T = 1 + A^2. */
 void chp_cert_one_plus_sq (fmpq_t t, const fmpq_t a);
 
+/* C1 of (3.7), (B.3)/(B.4) for the collision that leaves l = B for
+   l = B' (the ends of a slot of length DELTA):
+     C1 = -Delta^2/(2 (1 + b^2)^2 (1 + b'^2)),
+   the energy it takes being -C1 H^2.  C1 may alias an input. */
+void chp_cert_c1 (fmpq_t c1, const fmpq_t Delta, const fmpq_t b,
+                  const fmpq_t bp);
+
+/* Nonzero, and *R = sqrt(A), where A is the square of a rational; else 0
+   (R untouched). */
+int chp_cert_sqrt_q (fmpq_t r, const fmpq_t a);
+
 /* A value as a ball at the working precision PREC. */
 typedef void (*chp_cert_ball_fn) (arb_t r, const void *data, slong prec);
 

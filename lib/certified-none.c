@@ -680,6 +680,162 @@ chaplygin_certified_spin_sequence (const double Delta[2], unsigned long n,
 
 /* ---- the massless skate, (B.14)-(B.17) (cert-massless.c) ---- */
 
+int
+chaplygin_certified_fixed_point (const double L0[2],
+                                 const double Delta[2],
+                                 const double Vstar[2],
+                                 double theta,
+                                 double tau,
+                                 const double peg[2],
+                                 chaplygin_discrete_state *st,
+                                 double *tau_star)
+{
+  (void) L0;
+  (void) Delta;
+  (void) Vstar;
+  (void) theta;
+  (void) tau;
+  (void) peg;
+  (void) st;
+  (void) tau_star;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_collision_loss (const double L0[2],
+                                    const double Delta[2],
+                                    int dir,
+                                    int reversal,
+                                    const double H[2],
+                                    double *loss,
+                                    int *lossless)
+{
+  (void) L0;
+  (void) Delta;
+  (void) dir;
+  (void) reversal;
+  (void) H;
+  (void) loss;
+  (void) lossless;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_massless_step (const double L0[2],
+                                   int dir,
+                                   const double E[2],
+                                   const double H[2],
+                                   double *E_next,
+                                   double *H_next,
+                                   double *dtheta,
+                                   double *dtau,
+                                   int *reversal)
+{
+  (void) L0;
+  (void) dir;
+  (void) E;
+  (void) H;
+  (void) E_next;
+  (void) H_next;
+  (void) dtheta;
+  (void) dtau;
+  (void) reversal;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_massless_step_phase (const double L0[2],
+                                         const double V[2],
+                                         const double Omega[2],
+                                         double *E_next,
+                                         double *H_next,
+                                         double *dtheta,
+                                         double *dtau,
+                                         int *reversal)
+{
+  (void) L0;
+  (void) V;
+  (void) Omega;
+  (void) E_next;
+  (void) H_next;
+  (void) dtheta;
+  (void) dtau;
+  (void) reversal;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_massless_period2 (const double L0[2],
+                                      int *exists)
+{
+  (void) L0;
+  (void) exists;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_massless_coefficient (const double L0[2],
+                                          const double Dplus[2],
+                                          int reversal,
+                                          double *C2)
+{
+  (void) L0;
+  (void) Dplus;
+  (void) reversal;
+  (void) C2;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_massless_nondimensionalize (const double delta[2],
+                                                const double v0[2],
+                                                const double ell0[2],
+                                                const double delta_slot[2],
+                                                const double d[2],
+                                                const double v[2],
+                                                const double theta[2],
+                                                const double omega[2],
+                                                const double t[2],
+                                                chaplygin_discrete_nondim *nd)
+{
+  (void) delta;
+  (void) v0;
+  (void) ell0;
+  (void) delta_slot;
+  (void) d;
+  (void) v;
+  (void) theta;
+  (void) omega;
+  (void) t;
+  (void) nd;
+  return CHAPLYGIN_EINVAL;
+}
+
+int
+chaplygin_certified_massless_dimensionalize (const double delta[2],
+                                             const double v0[2],
+                                             const double L0[2],
+                                             const double Delta[2],
+                                             const double D[2],
+                                             const double V[2],
+                                             const double theta[2],
+                                             const double Omega[2],
+                                             const double tau[2],
+                                             chaplygin_discrete_dim *dim)
+{
+  (void) delta;
+  (void) v0;
+  (void) L0;
+  (void) Delta;
+  (void) D;
+  (void) V;
+  (void) theta;
+  (void) Omega;
+  (void) tau;
+  (void) dim;
+  return CHAPLYGIN_EINVAL;
+}
+
 /* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) (cert-units.c) ---- */
 
 int

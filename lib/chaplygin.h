@@ -2046,6 +2046,155 @@ int chaplygin_certified_spin_sequence (const double Delta[2],
 
 /* Certified: the massless skate, (B.14)-(B.17) (lib/cert-massless.c). */
 
+/** (B.14), certified: chaplygin_discrete_fixed_point's period-1 fixed
+   point of speed @Vstar along the slot,
+     E* = V*^2/2,   H* = 0,   tau* = Delta/|V*|,
+   @noindent
+   into `*@st` (`dir` $= sgn V^*$, `V` the double nearest $V^*$; @theta,
+   @tau and @peg, NULL for the origin, passed through) and `*@tau_star`
+   (may be NULL).  $E^*$ must round to a normal double, as the uncertified
+   function requires.
+
+   Domain: $V^* != 0$; @theta, @tau, @peg finite.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ESTATE ($V^* = 0$),
+   CHAPLYGIN_ERANGE ($E^*$ beyond the doubles or below the normal ones,
+   $tau^*$ beyond the doubles).
+ */
+int chaplygin_certified_fixed_point (const double L0[2],
+                                     const double Delta[2],
+                                     const double Vstar[2], double theta,
+                                     double tau, const double peg[2],
+                                     chaplygin_discrete_state *st,
+                                     double *tau_star);
+
+/** (B.14), certified: chaplygin_discrete_collision_loss' energy taken by
+   the collision that ends the segment from the end of @dir,
+     loss = -C1 H^2,
+   @noindent
+   $C_1$ of (B.3) ($reversal = 0$) or (B.4) ($reversal = 1$); and
+   `*@lossless` = 1 if the loss is 0 exactly (the lossless-collision
+   condition $C_1 H^2 = 0$, which holds iff $H = 0$: $C_1 < 0$), else 0,
+   also where the loss rounds to 0.
+
+   Errors: CHAPLYGIN_EINVAL (also @reversal), CHAPLYGIN_EDOM,
+   CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_collision_loss (const double L0[2],
+                                        const double Delta[2], int dir,
+                                        int reversal, const double H[2],
+                                        double *loss, int *lossless);
+
+/** (B.15), certified: chaplygin_massless_step's return map of the
+   massless skate ($Delta = 1$) from the post-collision state (@dir, @E,
+   @H),
+     E' = E,   H' = C2 H,   dtheta = sgn(H) Phi,   dtau = dist/sqrt(2E),
+   @noindent
+   $C_2 = l^+/l^-$ of (B.16) for the segment's case, `*@reversal` the
+   segment's reversal (decided exactly: $H != 0$, the start approaching
+   the point mass, and the far end at or beyond the turning point), $Phi$
+   and $dist$ the angle swept by the direction from the peg to the point
+   mass and the distance it travels on its straight line.  $E'$, $H'$
+   rational; @dtau exact where it is rational, else by Ziv's strategy;
+   @dtheta 0 where $H = 0$, else transcendental, by Ziv's strategy.
+   @dtheta and @dtau may be NULL: not computed.
+
+   Domain: $E > 0$; $(V^+)^2 = 2E - H^2/l_0^2 > 0$ where $H != 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM (also $E < 0$),
+   CHAPLYGIN_ESTATE ($E = 0$, or $(V^+)^2 <= 0$), CHAPLYGIN_ESPIN
+   ($H != 0$ and the new peg at the point mass: $L_0 = 0$ or $-1$),
+   CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_massless_step (const double L0[2], int dir,
+                                       const double E[2], const double H[2],
+                                       double *E_next, double *H_next,
+                                       double *dtheta, double *dtau,
+                                       int *reversal);
+
+/** (B.15), certified, from the phase state just after a collision: the
+   velocity @V ($!= 0$) and rate @Omega at $D^+ = 0$ ($V > 0$) or 1
+   ($V < 0$), as chaplygin_massless_state_from_phase, $l_0 = L_0 + D^+$,
+     dir = sgn V,   E = [V^2 + l0^2 Omega^2]/2,   H = l0^2 Omega
+   @noindent
+   exactly; then as chaplygin_certified_massless_step.
+
+   Errors: those of chaplygin_certified_massless_step; CHAPLYGIN_ESTATE
+   also for $V = 0$.
+ */
+int chaplygin_certified_massless_step_phase (const double L0[2],
+                                             const double V[2],
+                                             const double Omega[2],
+                                             double *E_next, double *H_next,
+                                             double *dtheta, double *dtau,
+                                             int *reversal);
+
+/** (B.15), certified: as chaplygin_massless_period2, `*@exists` = 1 if
+   $-1 < L_0 < 0$, else 0, exactly.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM.
+ */
+int chaplygin_certified_massless_period2 (const double L0[2], int *exists);
+
+/** (B.16), certified: chaplygin_massless_coefficient's
+     C2 = L0 (L0 + 1)/(L0 + D-)^2 = (L0 + 1 - D-)/(L0 + D-),
+   @noindent
+   $D^- = 1 - D^+$ ($reversal = 0$, as printed) or $D^+$ ($reversal = 1$,
+   @ref{Erratum E17}).
+
+   Domain: @Dplus exactly 0 or 1; $L_0 + D^- != 0$.
+
+   Errors: CHAPLYGIN_EINVAL (also @reversal), CHAPLYGIN_EDOM (also
+   $L_0 + D^- = 0$), CHAPLYGIN_ESTATE (@Dplus not an end),
+   CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_massless_coefficient (const double L0[2],
+                                              const double Dplus[2],
+                                              int reversal, double *C2);
+
+/** (B.17), certified: chaplygin_massless_nondimensionalize for exact
+   inputs (each field and scale the ratio `[0]/[1]` of two doubles), the
+   scaling of chaplygin_certified_discrete_nondimensionalize with the slot
+   length @delta in place of $rho$:
+     L0 = ell0/delta,  Delta = delta_slot/delta,  D = d/delta,  V = v/v0,
+     Omega = omega delta/v0,  tau = t v0/delta,  theta unchanged,
+   @noindent
+   every field the double nearest to its exact value; @delta_slot is the
+   state's slot length ($Delta = 1$ exactly where it is @delta).
+
+   Domain: $delta > 0$, $v_0 > 0$.
+
+   Errors: CHAPLYGIN_EINVAL, CHAPLYGIN_EDOM, CHAPLYGIN_ERANGE.
+ */
+int chaplygin_certified_massless_nondimensionalize (const double delta[2],
+                                                    const double v0[2],
+                                                    const double ell0[2],
+                                                    const double delta_slot[2],
+                                                    const double d[2],
+                                                    const double v[2],
+                                                    const double theta[2],
+                                                    const double omega[2],
+                                                    const double t[2],
+                                                    chaplygin_discrete_nondim
+                                                    *nd);
+
+/** The inverse of (B.17), certified: chaplygin_massless_dimensionalize for
+   exact inputs, each field the double nearest to
+     ell0 = L0 delta,  delta_slot = Delta delta,  d = D delta,  v = V v0,
+     omega = Omega v0/delta,  t = tau delta/v0,  theta unchanged.
+   Domain and errors: as chaplygin_certified_massless_nondimensionalize.
+ */
+int chaplygin_certified_massless_dimensionalize (const double delta[2],
+                                                 const double v0[2],
+                                                 const double L0[2],
+                                                 const double Delta[2],
+                                                 const double D[2],
+                                                 const double V[2],
+                                                 const double theta[2],
+                                                 const double Omega[2],
+                                                 const double tau[2],
+                                                 chaplygin_discrete_dim *dim);
+
 /* Certified: the units and fields, (2.2), (2.3), (3.1), (3.2) (lib/cert-units.c). */
 
 /** (2.2), certified: chaplygin_smooth_nondimensionalize for exact inputs

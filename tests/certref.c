@@ -55,15 +55,31 @@ set_q (mpfr_t y, const void *x)
   return mpfr_set_q (y, (mpq_srcptr) x, MPFR_RNDN);
 }
 
+/* X below the normal doubles (|X| < 2^-1022): the integer nearest to
+   X 2^1074 (ties to even) times 2^-1074, a subnormal, DBL_MIN or a signed
+   zero.  (binary64's exponent range must hold X's exponent: 1.5 2^-1076
+   made mpfr_subnormalize abort.) */
+static double
+below_normal (const mpfr_t x)
+{
+  mpfr_t y;
+  mpfr_init2 (y, mpfr_get_prec (x));
+  mpfr_mul_2si (y, x, 1074, MPFR_RNDN);        /* exact */
+  mpfr_rint (y, y, MPFR_RNDN);                 /* ties to even */
+  const double d = ldexp (mpfr_get_d (y, MPFR_RNDN), -1074);
+  mpfr_clear (y);
+  return d;
+}
+
 double
 cr_round_fr (const mpfr_t x)
 {
-  /* far outside binary64's range: infinity or a signed zero (the range
-     binary64 sets must hold X's exponent) */
+  /* far outside binary64's range: infinity (the range binary64 sets must
+     hold X's exponent) */
   if (mpfr_regular_p (x) && mpfr_get_exp (x) > 1100)
     return mpfr_signbit (x) ? -HUGE_VAL : HUGE_VAL;
-  if (mpfr_regular_p (x) && mpfr_get_exp (x) < -1100)
-    return mpfr_signbit (x) ? -0.0 : 0.0;
+  if (mpfr_regular_p (x) && mpfr_get_exp (x) <= -1022)
+    return below_normal (x);
   return binary64 (set_fr, x);
 }
 

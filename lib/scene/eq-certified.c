@@ -51,6 +51,16 @@ eh_in (eq_ctx *c, const char *label, double E[2], double H[2])
   return eq_ratio_in (c, "E", E) || eq_ratio_in (c, "H", H);
 }
 
+/* Optional exact inputs NAMES[i] (default 0) into X[i], i < N. */
+static int
+ratios_opt (eq_ctx *c, size_t n, const char *const names[], double x[][2])
+{
+  for (size_t i = 0; i < n; i++)
+    if (eq_ratio_opt (c, names[i], 0.0, x[i]))
+      return -1;
+  return 0;
+}
+
 /* The method options do not apply. */
 static int
 no_method (eq_ctx *c)
@@ -825,6 +835,131 @@ eq_cert_B_13 (eq_ctx *c)
 
 /* ---- the massless skate, (B.14)-(B.17) ---- */
 
+int
+eq_cert_B_14 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_fixed_point";
+  static const char fn_loss[] = "chaplygin_certified_collision_loss";
+  double L0[2], Delta[2], Vstar[2], H[2], theta, tau, tau_star, loss;
+  chaplygin_discrete_state st;
+  int lossless;
+  if (slot_in (c, L0, Delta) || eq_ratio_in (c, "Vstar", Vstar)
+      || eq_exact_opt (c, "theta", 0.0, &theta)
+      || eq_exact_opt (c, "tau", 0.0, &tau) || eq_ratio_opt (c, "H", 0.0, H)
+      || eq_lib (c, fn, chaplygin_certified_fixed_point (L0, Delta, Vstar,
+                                                         theta, tau, NULL,
+                                                         &st, &tau_star))
+      || eq_lib (c, fn_loss,
+                 chaplygin_certified_collision_loss (L0, Delta, st.dir, 0,
+                                                     H, &loss, &lossless)))
+    return -1;
+  put (c, "E", st.E, fn);
+  put (c, "H", st.H, fn);
+  put (c, "tau_star", tau_star, fn);
+  put (c, "loss", loss, fn_loss);
+  eq_put_int (c, "lossless", lossless, fn_loss, "exact");
+  return 0;
+}
+
+/* (B.15): one step of the massless skate from the exact state, (E, H,
+   dir) or (V, Omega) just after the collision (the latter's E and H
+   formed exactly by the library); theta and tau, read exactly, do not
+   enter the outputs. */
+int
+eq_cert_B_15 (eq_ctx *c)
+{
+  static const char fn_eh[] = "chaplygin_certified_massless_step";
+  static const char fn_ph[] = "chaplygin_certified_massless_step_phase";
+  static const char fn_p2[] = "chaplygin_certified_massless_period2";
+  double L0[2], a[2], b[2], theta, tau, E, H, dtheta, dtau;
+  int eh, dir, reversal, period2;
+  if (eq_ratio_in (c, "L0", L0) || post_collision_in (c, &eh, a, b, &dir)
+      || eq_exact_opt (c, "theta", 0.0, &theta)
+      || eq_exact_opt (c, "tau", 0.0, &tau))
+    return -1;
+  const char *fn = eh ? fn_eh : fn_ph;
+  const int status = eh
+    ? chaplygin_certified_massless_step (L0, dir, a, b, &E, &H, &dtheta,
+                                         &dtau, &reversal)
+    : chaplygin_certified_massless_step_phase (L0, a, b, &E, &H, &dtheta,
+                                               &dtau, &reversal);
+  if (eq_lib (c, fn, status)
+      || eq_lib (c, fn_p2, chaplygin_certified_massless_period2 (L0,
+                                                                 &period2)))
+    return -1;
+  put (c, "E_next", E, fn);
+  put (c, "H_next", H, fn);
+  put (c, "dtheta", dtheta, fn);
+  put (c, "dtau", dtau, fn);
+  eq_put_int (c, "reversal", reversal, fn, "exact");
+  eq_put_int (c, "period2", period2, fn_p2, "exact");
+  return 0;
+}
+
+int
+eq_cert_B_16 (eq_ctx *c)
+{
+  static const char fn[] = "chaplygin_certified_massless_coefficient";
+  double L0[2], C2;
+  long Dplus, reversal;
+  if (eq_ratio_in (c, "L0", L0) || eq_int_in (c, "Dplus", 0, 1, &Dplus)
+      || eq_int_in (c, "reversal", 0, 1, &reversal))
+    return -1;
+  const double Dp[2] = { (double) Dplus, 1.0 };
+  if (eq_lib (c, fn, chaplygin_certified_massless_coefficient (L0, Dp,
+                                                               (int) reversal,
+                                                               &C2)))
+    return -1;
+  put (c, "C2", C2, fn);
+  return 0;
+}
+
+/* (B.17): to the massless skate's units (ell0 given, or L0 not: the
+   state's slot length is delta itself, so Delta = 1) or back from them. */
+int
+eq_cert_B_17 (eq_ctx *c)
+{
+  double delta[2], v0[2], x[7][2];
+  if (eq_ratio_in (c, "delta", delta) || eq_ratio_in (c, "v0", v0))
+    return -1;
+  if (eq_given (c, "ell0") || !eq_given (c, "L0"))
+    {
+      static const char fn[] =
+        "chaplygin_certified_massless_nondimensionalize";
+      static const char *const names[] = { "d", "v", "theta", "omega", "t" };
+      chaplygin_discrete_nondim nd;
+      if (eq_ratio_in (c, "ell0", x[0]) || ratios_opt (c, 5, names, x + 2)
+          || eq_lib (c, fn, chaplygin_certified_massless_nondimensionalize
+                     (delta, v0, x[0], delta, x[2], x[3], x[4], x[5], x[6],
+                      &nd)))
+        return -1;
+      put (c, "L0", nd.L0, fn);
+      put (c, "Delta", nd.Delta, fn);
+      put (c, "D", nd.D, fn);
+      put (c, "V", nd.V, fn);
+      put (c, "theta", nd.theta, fn);
+      put (c, "Omega", nd.Omega, fn);
+      put (c, "tau", nd.tau, fn);
+      return 0;
+    }
+  static const char fn[] = "chaplygin_certified_massless_dimensionalize";
+  static const char *const names[] = { "D", "V", "theta", "Omega", "tau" };
+  chaplygin_discrete_dim d;
+  if (eq_ratio_in (c, "L0", x[0]) || eq_ratio_opt (c, "Delta", 1.0, x[1])
+      || ratios_opt (c, 5, names, x + 2)
+      || eq_lib (c, fn, chaplygin_certified_massless_dimensionalize
+                 (delta, v0, x[0], x[1], x[2], x[3], x[4], x[5], x[6], &d)))
+    return -1;
+  put (c, "ell0", d.ell0, fn);
+  put (c, "delta", d.delta, fn);
+  put (c, "d", d.d, fn);
+  put (c, "v", d.v, fn);
+  put (c, "theta", d.theta, fn);
+  put (c, "omega", d.omega, fn);
+  put (c, "t", d.t, fn);
+  return 0;
+}
+
 /* ---- the units and fields, (2.2), (2.3), (3.1), (3.2) ---- */
 
 /* The scales rho, v0 of (2.2), (3.2), and whether the inputs are the
@@ -835,16 +970,6 @@ scales_in (eq_ctx *c, const char *dim_name, const char *nondim_name,
 {
   *dim = eq_given (c, dim_name) || !eq_given (c, nondim_name);
   return eq_ratio_in (c, "rho", rho) || eq_ratio_in (c, "v0", v0);
-}
-
-/* Optional exact inputs NAMES[i] (default 0) into X[i], i < N. */
-static int
-ratios_opt (eq_ctx *c, size_t n, const char *const names[], double x[][2])
-{
-  for (size_t i = 0; i < n; i++)
-    if (eq_ratio_opt (c, names[i], 0.0, x[i]))
-      return -1;
-  return 0;
 }
 
 int
