@@ -174,9 +174,10 @@ sub check_record {
   for (qw(title eq.inputs eq.outputs eq.paper eq.example)) {
     fail("$at: $_ is empty") if $f->{$_} eq '';
   }
+  fail("$at: no eq.certified (every label has a certified evaluation)")
+    unless defined $f->{'eq.certified'};
   fail("$at: eq.certified '$f->{'eq.certified'}' is not chaplygin_certified_* names separated by ', '")
-    if defined $f->{'eq.certified'}
-    && $f->{'eq.certified'} !~ /^chaplygin_certified_[a-z0-9_]+(?:, chaplygin_certified_[a-z0-9_]+)*\z/;
+    if $f->{'eq.certified'} !~ /^chaplygin_certified_[a-z0-9_]+(?:, chaplygin_certified_[a-z0-9_]+)*\z/;
 }
 
 # ---- the other sources -----------------------------------------------------

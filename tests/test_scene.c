@@ -877,7 +877,8 @@ START_TEST (writing)
      it, which inih would take for the start of a comment */
   write_back (DISCRETE "[scene]\ntitle =; a = b ; c\n", "title =; a = b\n");
   write_back (MASSLESS "method = closed-form\n", "model = massless");
-  write_back (SIGMA4, "[run]\nmax_rows = 10000000\n[sweep]\nkind = sigma4\n");
+  write_back (SIGMA4, "[run]\nmethod = closed-form\nmax_rows = 10000000\n"
+              "[sweep]\nkind = sigma4\n");
   write_back (BASINS, "[run]\ncollisions = 1000\nmethod = closed-form\n"
               "max_rows = 10000000\n[sweep]\nkind = basins\n");
   /* a method other than closed-form: its tolerance, by default the

@@ -727,14 +727,16 @@ def test_eq_certified():
     """chaplygin.eq(..., certified=True) is `chaplygin eq --certified`:
     sigma4 = 7/6 exactly at L0 = 1, Delta = 1/3 (a Fraction or 'p/q'),
     whose nearest double is 1.1666666666666667 (the closed form's
-    1.1666666666666665 is not); the certified function is named; a label
-    without a certified evaluator, and a non-bool flag, are refused."""
+    1.1666666666666665 is not); the certified function is named; (2.1),
+    like every label, has a certified evaluator; a non-bool flag is
+    refused."""
     for Delta in (F(1, 3), '1/3'):
         r = c.eq('3.10', L0=1, Delta=Delta, dir=-1, certified=True)
         assert r.sigma4 == float(F(7, 6)) == 1.1666666666666667
         assert r.functions['sigma4'] == 'chaplygin_certified_sigma4'
     assert c.eq('3.10', L0=1, Delta='1/3', dir=-1).sigma4 != r.sigma4
-    with pytest.raises(c.EquationError, match='no certified evaluator'):
-        c.eq('2.1', L=1, V=1, Omega=0.5, certified=True)
+    # every label has a certified evaluator: (2.1)'s field at exact inputs
+    r = c.eq('2.1', L=1, V='1/3', Omega=F(1, 2), certified=True)
+    assert r['dOmega/dtau'] == float(F(-1, 12))
     with pytest.raises(TypeError):
         c.eq('3.10', L0=1, Delta='1/3', dir=-1, certified=1)
