@@ -60,7 +60,13 @@ lib_libchaplygin_core_la_SOURCES += \
 else
 lib_libchaplygin_core_la_SOURCES += lib/certified-none.c
 endif
-EXTRA_DIST += lib/certified.h lib/certified-none.c
+EXTRA_DIST += lib/certified.h lib/certified-none.c lib/certified-none.pl
+# the refusals of a build without Arb, one per certified function that
+# lib/chaplygin.h declares (written in the source tree, distributed)
+$(srcdir)/lib/certified-none.c: $(srcdir)/lib/chaplygin.h \
+		$(srcdir)/lib/certified-none.pl
+	$(AM_V_GEN)$(PERL) $(srcdir)/lib/certified-none.pl \
+	  $(srcdir)/lib/chaplygin.h > $@.tmp && mv $@.tmp $@
 lib_libchaplygin_core_la_CFLAGS = $(AM_CFLAGS) $(FP_CFLAGS) \
 	$(CODEGEN_CFLAGS) $(GSL_CFLAGS)
 lib_libchaplygin_core_la_LIBADD = $(GSL_LIBS) $(ARB_LIBS) $(CODE_COVERAGE_LIBS)
