@@ -1483,23 +1483,30 @@ int chaplygin_certified_orbit_free (chaplygin_certified_orbit *orbit);
    @cindex certified values
    @cindex exact rational inputs
 
-   The paper's closed-form quantities by the certified method: each input is
-   an exact rational given as the ratio `[0]/[1]` of two doubles (so
-   $Delta = 1/3$ is {1, 3}, and {0.1, 1} is the double nearest to 0.1, not one
-   tenth), and each double returned is the one nearest (ties to even) to the
-   exact value of the formula at those inputs; each integer returned is the
-   exact decision.  The rational values are formed exactly (FLINT's
-   rationals) and rounded once; the turning points of (B.5), the exponent
-   of (4.1) and the heading derivatives of the Jacobian (3.9), which are
-   irrational wherever they are not formed exactly, by Ziv's strategy (Arb balls at 64 bits, then twice that, until the ball's
-   rounding is decided; CHAPLYGIN_ECAP past 65536 bits, never met).
-   @xref{Certified method}.  In a build without Arb each of them returns
-   CHAPLYGIN_EINVAL (chaplygin_method_available tells).  Each shares the domain of its
-   uncertified counterpart, decided exactly, with no range limit on the
-   inputs (a result beyond the doubles is CHAPLYGIN_ERANGE; one below them
-   rounds to a subnormal or zero).  Common errors: CHAPLYGIN_EINVAL (a null
-   pointer, or @var{dir} not $+1$ or $-1$), CHAPLYGIN_EDOM (a non-finite
-   numerator or denominator, a zero denominator, $Delta <= 0$).  Also
+   Every numbered equation of the paper by the certified method: each input
+   is an exact rational given as the ratio `[0]/[1]` of two doubles (so
+   $Delta = 1/3$ is {1, 3}, and {0.1, 1} is the double nearest to 0.1, not
+   one tenth), and each double returned is the one nearest (ties to even)
+   to the exact value of the formula at those inputs; each integer returned
+   is the exact decision.  The rational values are formed exactly (FLINT's
+   rationals) and rounded once, as are square roots of squares; the others
+   (the turning points of (B.5), the exponents of (4.1) and (2.4), the
+   heading derivatives of the Jacobian (3.9), the smooth sleigh's closed
+   form, the heading and time of a leg (B.2) and of the massless skate's
+   step (B.15), (B.13)'s series) by Ziv's strategy: Arb balls at 64 bits,
+   then twice that, until the ball's rounding is decided, CHAPLYGIN_ECAP
+   past 65536 bits (never met in the tests: such a value is irrational, so
+   neither a double nor a midpoint, as proven for the algebraic values,
+   the logarithms and the arctangents; for the elliptic integrals of a
+   leg, believed, and a value that were a double or a midpoint would end
+   in CHAPLYGIN_ECAP, never in a wrong rounding).  @xref{Certified method}.  In a build without Arb each
+   of them returns CHAPLYGIN_EINVAL (chaplygin_method_available tells).
+   Each shares the domain of its uncertified counterpart, decided exactly,
+   with no range limit on the inputs (a result beyond the doubles is
+   CHAPLYGIN_ERANGE; one below them rounds to a subnormal or zero).  Common
+   errors: CHAPLYGIN_EINVAL (a null pointer, or @var{dir} not $+1$ or
+   $-1$), CHAPLYGIN_EDOM (a non-finite numerator or denominator, a zero
+   denominator, $Delta <= 0$).  Also
    CHAPLYGIN_EINVAL: a build without Arb.
  */
 
