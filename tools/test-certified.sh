@@ -15,25 +15,26 @@ top_builddir=${top_builddir:-.}
 prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-certified 13
+tap_start test-certified 14
 
-# scene NAME EXTRA-RUN-LINES: Figure 3's line (L0 = -1/2, Delta = 1) from
-# V = 0.3, Omega = 0.8 (a reversal, then forward motion), 30 collisions.
+# scene NAME EXTRA-RUN-LINES [EXTRA-OUTPUT]: Figure 3's line (L0 = -1/2,
+# Delta = 1) from V = 0.3, Omega = 0.8 (a reversal, then forward motion),
+# 30 collisions.
 scene () {
   {
     printf '[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n'
     printf '[initial]\nV = 0.3\nOmega = 0.8\n[run]\ncollisions = 30\n'
-    printf 'outputs = E, H, theta, tau, peg\n%s\n' "$2"
+    printf 'outputs = E, H, theta, tau, peg%s\n%s\n' "${3:+, $3}" "$2"
   } >"$tmp/$1.ini"
 }
 
-scene cert 'method = certified'
+scene cert 'method = certified' bounds
 scene closed ''
 run run "$tmp/cert.ini"
 if test "$rc" -ne 0 && grep "no certified method" "$tmp/err" >/dev/null; then
   result 0 "a build without Arb refuses method = certified, saying why"
   i=2
-  while test $i -le 13; do
+  while test $i -le 14; do
     echo "ok $i # SKIP no certified method in this build"
     i=$((i + 1))
   done
@@ -54,7 +55,7 @@ result "$ok" "the provenance names the certified method"
 if command -v python3 >/dev/null 2>&1; then
   ok=0
   python3 - "$tmp/cert.csv" >"$tmp/py" 2>&1 <<'EOF' || ok=1
-import csv, sys
+import csv, math, sys
 from fractions import Fraction as F
 rows = list(csv.DictReader(open(sys.argv[1])))
 L0, Delta = F(-0.5), F(1)
@@ -83,10 +84,25 @@ for r in rows:
             print('row %d: %s = %r, nearest %r' % (k, name, float(r[name]),
                                                  float(x)))
             bad += 1
+        # the enclosure: the exact value's two neighbours (one double where
+        # it is one), the value returned among them
+        lo, hi = float(r[name + '_lo']), float(r[name + '_hi'])
+        if not (F(lo) <= x <= F(hi) and float(r[name]) in (lo, hi)
+                and (lo == hi) == (F(float(x)) == x)
+                and (lo == hi or math.nextafter(lo, math.inf) == hi)):
+            print('row %d: %s in [%r, %r]?' % (k, name, lo, hi))
+            bad += 1
+    # the balls' enclosures: around the value, at most two ulps wide
+    for name in ('theta', 'tau', 'peg_x', 'peg_y'):
+        v, lo, hi = (float(r[name + s]) for s in ('', '_lo', '_hi'))
+        if not (lo <= v <= hi and hi <= math.nextafter(math.nextafter(
+                lo, math.inf), math.inf)):
+            print('row %d: %s = %r, enclosure [%r, %r]' % (k, name, v, lo, hi))
+            bad += 1
 sys.exit(1 if bad else 0)
 EOF
   sed 's/^/# /' "$tmp/py"
-  result "$ok" "E and H of every row are the nearest doubles to the exact map's"
+  result "$ok" "E and H of every row are the nearest doubles to the exact map's; outputs bounds: their enclosures the exact values' neighbours, the balls' at most 2 ulps wide"
 else
   count=$((count + 1))
   echo "ok $count # SKIP no python3"
@@ -261,6 +277,12 @@ else
   count=$((count + 1))
   echo "ok $count # SKIP no python3"
 fi
+
+scene bclosed '' bounds
+run run "$tmp/bclosed.ini"
+ok=1
+test "$rc" -eq 2 && grep "'bounds' (the enclosures of the certified method) needs" "$tmp/err" >/dev/null && ok=0
+result "$ok" "outputs bounds without method = certified: exit 2, saying what it needs"
 
 sigma4_scene s4ode ode 1
 run sweep "$tmp/s4ode.ini"

@@ -393,7 +393,7 @@ typedef struct
 } chaplygin_run_options;
 
 /** The most columns of any run: @expansion. */
-#define CHAPLYGIN_COLUMNS_MAX 24
+#define CHAPLYGIN_COLUMNS_MAX 32
 
 /** The columns of the run of @sc as @opt says (@opt may be null: a plain
    run) into `@columns[0..cap-1]`, their number into `*`@n.

@@ -44,9 +44,11 @@ enum scene_output
   SCENE_OUT_PATH = 1u << 7,    /* x, y: the slot front (discrete,
                                   massless) or the contact point C
                                   (smooth), in the plane */
-  SCENE_OUT_G = 1u << 8        /* G_x, G_y: the mass centre */
+  SCENE_OUT_G = 1u << 8,       /* G_x, G_y: the mass centre */
+  SCENE_OUT_BOUNDS = 1u << 9   /* method certified: the enclosures
+                                  X_lo, X_hi of E, H, theta, tau, peg */
 };
-#define SCENE_N_OUTPUTS 9
+#define SCENE_N_OUTPUTS 10
 
 typedef enum
 {

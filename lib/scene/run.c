@@ -196,6 +196,7 @@ typedef struct
   double peg[2];                /* discrete, massless */
   double path[2];               /* slot front, or the contact point C */
   double G[2];                  /* mass centre */
+  chaplygin_certified_bounds b; /* method certified: the enclosures */
 } point;
 
 /* The output columns after the fixed ones, in canonical order; FIXED_TAU:
@@ -211,6 +212,10 @@ output_columns (unsigned outputs, int fixed_tau, chaplygin_column *col)
                                   SCENE_OUT_V, SCENE_OUT_OMEGA,
                                   SCENE_OUT_PATH, SCENE_OUT_PATH, SCENE_OUT_G,
                                   SCENE_OUT_G };
+  static const char *const bounds[] = { "E_lo", "E_hi", "H_lo", "H_hi",
+                                        "theta_lo", "theta_hi", "tau_lo",
+                                        "tau_hi", "peg_x_lo", "peg_x_hi",
+                                        "peg_y_lo", "peg_y_hi" };
   size_t n = 0;
   for (size_t i = 0; i < sizeof bit / sizeof bit[0]; i++)
     if ((outputs & bit[i]) && !(fixed_tau && bit[i] == SCENE_OUT_TAU))
@@ -218,7 +223,42 @@ output_columns (unsigned outputs, int fixed_tau, chaplygin_column *col)
         col[n].name = names[i];
         col[n++].kind = CHAPLYGIN_COLUMN_REAL;
       }
+  /* bounds: after the others, the enclosures of the first five kinds
+     requested (two columns per value) */
+  for (size_t i = 0; (outputs & SCENE_OUT_BOUNDS) && i < 6; i++)
+    if (outputs & bit[i])
+      {
+        col[n].name = bounds[2 * i];
+        col[n++].kind = CHAPLYGIN_COLUMN_REAL;
+        col[n].name = bounds[2 * i + 1];
+        col[n++].kind = CHAPLYGIN_COLUMN_REAL;
+      }
   return n;
+}
+
+/* The enclosures of P (outputs bounds), as output_columns orders them. */
+static void
+row_bounds (sink *s, unsigned outputs, const point *p)
+{
+  const chaplygin_certified_bounds *b = &p->b;
+  for (int i = 0; i < 2; i++)
+    if (outputs & SCENE_OUT_E)
+      row_scaled (s, s->m, CHAPLYGIN_SCALE_ENERGY, b->E[i]);
+  for (int i = 0; i < 2; i++)
+    if (outputs & SCENE_OUT_H)
+      row_scaled (s, s->m, CHAPLYGIN_SCALE_SPEED, b->H[i]);
+  for (int i = 0; i < 2; i++)
+    if (outputs & SCENE_OUT_THETA)
+      row_num (s, b->theta[i]);
+  for (int i = 0; i < 2; i++)
+    if (outputs & SCENE_OUT_TAU)
+      row_scaled (s, s->m, CHAPLYGIN_SCALE_TIME, b->tau[i]);
+  for (int i = 0; i < 2; i++)
+    if (outputs & SCENE_OUT_PEG)
+      row_num (s, b->peg_x[i]);
+  for (int i = 0; i < 2; i++)
+    if (outputs & SCENE_OUT_PEG)
+      row_num (s, b->peg_y[i]);
 }
 
 /* Append the outputs of P in canonical order (see output_columns), P in
@@ -253,6 +293,8 @@ row_outputs (sink *s, unsigned outputs, int fixed_tau, const point *p)
       row_num (s, p->G[0]);
       row_num (s, p->G[1]);
     }
+  if (outputs & SCENE_OUT_BOUNDS)
+    row_bounds (s, outputs, p);
 }
 
 /* The columns of a run of SC (COMPARE: its companion) into COL; their
@@ -326,6 +368,8 @@ typedef struct
 {
   chaplygin_discrete_state st;
   double D0, V0, Omega0;        /* post-collision D+, V+, Omega+ */
+  chaplygin_certified_bounds b; /* method certified: the enclosures of
+                                   st */
 } segment_start;
 
 /* Omega from the angular momentum H about the peg at D. */
@@ -337,11 +381,12 @@ skate_omega (const skate *k, double H, double D, double *Omega)
   return chaplygin_discrete_omega (k->L0, D, H, Omega);
 }
 
-/* One step of the return map (B.3)/(B.4) or (B.15), counted. */
+/* One step of the return map (B.3)/(B.4) or (B.15), counted; method
+   certified: the enclosures into *B (may be NULL). */
 static int
 skate_step (const skate *k, const chaplygin_discrete_state *in,
             unsigned request, chaplygin_discrete_state *out,
-            chaplygin_discrete_event *ev)
+            chaplygin_discrete_event *ev, chaplygin_certified_bounds *b)
 {
   k->rep->steps++;
   /* the ODE method integrates every segment, whatever is requested */
@@ -353,7 +398,7 @@ skate_step (const skate *k, const chaplygin_discrete_state *in,
   /* certified: the orbit's next collision (it follows k->request; the
      fields not requested are 0, and the run reads none of them) */
   if (k->orbit)
-    return chaplygin_certified_orbit_step (k->orbit, out, ev, NULL);
+    return chaplygin_certified_orbit_step (k->orbit, out, ev, b);
   return chaplygin_discrete_step (&k->sys, in, request, &k->opt, out, ev);
 }
 
@@ -551,7 +596,8 @@ certified_start (skate *k, const double q[4], segment_start *start)
                                                     start->st.peg, k->request,
                                                     &k->orbit);
   if (status == CHAPLYGIN_SUCCESS)
-    status = chaplygin_certified_orbit_state (k->orbit, &start->st, NULL);
+    status = chaplygin_certified_orbit_state (k->orbit, &start->st,
+                                              &start->b);
   if (status == CHAPLYGIN_SUCCESS)
     return CHAPLYGIN_SCENE_OK;
   chaplygin_certified_orbit_free (k->orbit);
@@ -647,6 +693,7 @@ skate_first_row (const skate *k, segment_start *cur, sink *s, int *stop,
   if (status != CHAPLYGIN_SUCCESS)
     return collision_failure (k, 0, status);
   p.Omega = cur->Omega0;        /* as given */
+  p.b = cur->b;
   if (collision_row (s, k->outputs, 0, cur->D0, 0, &p) != 0)
     return -1;
   *stop = stop_reached (k, &cur->st, why, &status);
@@ -674,7 +721,9 @@ skate_run_collisions (const skate *k, segment_start *cur, sink *s,
       chaplygin_discrete_event ev;
       point p;
       *end_n = n;
-      status = skate_step (k, &cur->st, k->request, &next, &ev);
+      chaplygin_certified_bounds b;
+      memset (&b, 0, sizeof b);
+      status = skate_step (k, &cur->st, k->request, &next, &ev, &b);
       if (status == CHAPLYGIN_SUCCESS)
         {
           if (time_check (k, n, &next, &rc) != 0)
@@ -685,6 +734,7 @@ skate_run_collisions (const skate *k, segment_start *cur, sink *s,
       if (status == CHAPLYGIN_SUCCESS && collision_written (k, n, stop))
         {
           status = skate_post_point (k, &next, ev.Vminus, &p);
+          p.b = b;
           if (status == CHAPLYGIN_SUCCESS
               && collision_row (s, k->outputs, n,
                                 next.dir > 0 ? 0.0 : k->Delta, ev.reversal,
@@ -834,7 +884,7 @@ skate_run_dense (const skate *k0, const scene *sc, segment_start *cur,
       chaplygin_discrete_state next;
       chaplygin_discrete_event ev;
       int rc;
-      status = skate_step (k, &cur->st, k->request, &next, &ev);
+      status = skate_step (k, &cur->st, k->request, &next, &ev, NULL);
       if (status == CHAPLYGIN_SUCCESS && time_check (k, n, &next, &rc) != 0)
         return rc;
       if (status == CHAPLYGIN_SUCCESS
@@ -910,6 +960,7 @@ skate_run (const scene *sc, sink *s)
 {
   skate k;
   segment_start cur;
+  memset (&cur, 0, sizeof cur);
   int rc = skate_init (&k, sc, s->rep, &cur);
   if (rc != CHAPLYGIN_SCENE_OK)
     return rc;

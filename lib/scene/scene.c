@@ -125,7 +125,7 @@ static const char *const view_names[] = { "panels", "phase-space" };
 
 /* The outputs, bit i of SCENE_OUT_* named output_names[i]. */
 static const char *const output_names[SCENE_N_OUTPUTS] =
-  { "E", "H", "theta", "tau", "peg", "V", "Omega", "path", "G" };
+  { "E", "H", "theta", "tau", "peg", "V", "Omega", "path", "G", "bounds" };
 
 #define OUTPUTS_POINT (SCENE_OUT_E | SCENE_OUT_H | SCENE_OUT_THETA \
                        | SCENE_OUT_TAU | SCENE_OUT_PEG)
@@ -636,7 +636,7 @@ read_outputs (parse_ctx *c, const char *value, unsigned *outputs_out)
       if (i < 0)
         {
           fail_key (c, K_OUTPUTS, c->lineno, "'%s' is not an output (one "
-                    "of E, H, theta, tau, peg, V, Omega, path, G)",
+                    "of E, H, theta, tau, peg, V, Omega, path, G, bounds)",
                     shown (buf, sizeof buf, item));
           return -1;
         }
@@ -1081,6 +1081,12 @@ check_key (parse_ctx *c, int k)
               "rational closed forms, with no integral: method closed-form "
               "(the default) or certified", RAW (c, k),
               sc->sweep == SWEEP_SIGMA4 ? "sigma4" : "stability");
+  else if (k == K_OUTPUTS && (sc->outputs & SCENE_OUT_BOUNDS)
+           && (sc->method != CHAPLYGIN_CERTIFIED || sc->samples > 0
+               || sc->model != SCENE_DISCRETE))
+    fail_key (c, k, line, "'bounds' (the enclosures of the certified "
+              "method) needs model discrete, method = certified and no "
+              "samples");
   else if (k == K_OUTPUTS && (sc->outputs & SCENE_OUT_PEG)
            && sc->model == SCENE_SMOOTH)
     fail_key (c, k, line, "'peg' is not an output of model smooth");
