@@ -5,6 +5,8 @@
 #include <float.h>
 #include <math.h>
 
+#include <acb_calc.h>
+
 #include "certref.h"
 
 enum { BALL_BITS = 400 };       /* room for the ends of a 300-bit ball */
@@ -188,4 +190,81 @@ cr_round_sqrt_q (const mpq_t q, int sgn)
     }
   mpq_clear (r);
   return d;
+}
+
+/* The integrand: on a leg without a turning point nearby (q >= 0) in D,
+   l = L0 + D: heading |H|/sqrt((1+l^2) g), time sqrt(1+l^2)/sqrt(g),
+   g = 2E (1 + l^2) - H^2.  For q < 0 (WSUB) in w, l = s (lt + w^2) with
+   lt = sqrt(-q) the turning point, s the side: |dl|/sqrt(g) =
+   2 dw/sqrt(2E (2 lt + w^2)), with no singularity at the turning point
+   nor beside it (a slow start). */
+static int
+leg_integrand (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
+{
+  const cr_leg *p = param;
+  const int an = order != 0;
+  acb_t l, n, g, t;
+  acb_init (l);
+  acb_init (n);
+  acb_init (g);
+  acb_init (t);
+  if (!p->rev)
+    {
+      acb_add_arb (l, z, p->L0, prec);
+      acb_sqr (n, l, prec);
+      acb_add_ui (n, n, 1, prec);       /* 1 + l^2 */
+      acb_mul_arb (g, n, p->twoE, prec);
+      acb_sub_arb (g, g, p->H2, prec);
+      acb_rsqrt_analytic (g, g, an, prec);
+    }
+  else
+    {
+      acb_sqr (l, z, prec);
+      acb_add_arb (l, l, p->lt, prec);          /* |l| = lt + w^2 */
+      acb_sqr (n, l, prec);
+      acb_add_ui (n, n, 1, prec);
+      acb_add_arb (g, l, p->lt, prec);          /* 2 lt + w^2 */
+      acb_mul_arb (g, g, p->twoE, prec);
+      acb_rsqrt_analytic (g, g, an, prec);
+      acb_mul_2exp_si (g, g, 1);
+    }
+  acb_sqrt_analytic (t, n, an, prec);
+  if (p->kind == 0)
+    {
+      acb_div (g, g, t, prec);
+      acb_mul_arb (g, g, p->absH, prec);
+    }
+  else
+    acb_mul (g, g, t, prec);
+  acb_set (res, g);
+  acb_clear (l);
+  acb_clear (n);
+  acb_clear (g);
+  acb_clear (t);
+  return 0;
+}
+
+void
+cr_leg_integrate (arb_t r, cr_leg *p, const arb_t A, const arb_t B,
+                  slong prec)
+{
+  acb_t res, a, b;
+  mag_t tol;
+  acb_calc_integrate_opt_t opt;
+  acb_init (res);
+  acb_init (a);
+  acb_init (b);
+  mag_init (tol);
+  acb_calc_integrate_opt_init (opt);
+  acb_set_arb (a, A);
+  acb_set_arb (b, B);
+  mag_set_ui_2exp_si (tol, 1, -prec + 20);
+  acb_calc_integrate (res, leg_integrand, p, a, b, prec - 20, tol, opt,
+                      prec);
+  arb_set (r, acb_realref (res));
+  arb_abs (r, r);
+  acb_clear (res);
+  acb_clear (a);
+  acb_clear (b);
+  mag_clear (tol);
 }

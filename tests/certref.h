@@ -65,6 +65,26 @@ void cr_ratio_near (tu_rng *g, double x, double r[2]);
 /* A random exact input in [A, B). */
 void cr_ratio_in (tu_rng *g, double a, double b, double r[2]);
 
+/* The reference route's leg integrals (Arb's rigorous integration,
+   acb_calc_integrate, of the paper's integrands): on a leg without a
+   turning point nearby (REV = 0) in D, l = L0 + D (L0 = 0: in l); with
+   one (REV = 1) in w, |l| = LT + w^2, LT the turning point, with no
+   singularity at it nor beside it.  KIND 0: the heading |H|/sqrt((1 +
+   l^2) g), 1: the time sqrt(1 + l^2)/sqrt(g), g = 2E (1 + l^2) - H^2
+   (TWOE = 2E, H2 = H^2, ABSH = |H|). */
+typedef struct
+{
+  arb_t L0, twoE, H2, absH;
+  int kind;                     /* 0 heading, 1 time */
+  int rev;                      /* a leg to a turning point: in w */
+  arb_t la, lt;                 /* leg start, turning point (rev) */
+} cr_leg;
+
+/* R = |the integral of P's integrand from A to B| (real ends), at PREC
+   bits (tolerance 2^(20 - PREC)). */
+void cr_leg_integrate (arb_t r, cr_leg *p, const arb_t A,
+                       const arb_t B, slong prec);
+
 /* A double input X taken as the ratio {X, 1}. */
 #define AS_RATIO(x) ((const double[2]) { (x), 1.0 })
 

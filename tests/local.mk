@@ -121,7 +121,7 @@ tests_test_cert_round_CFLAGS = $(TEST_CFLAGS)
 tests_test_cert_round_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
 tests_test_certified_SOURCES = tests/test_certified.c
 tests_test_certified_CFLAGS = $(TEST_CFLAGS)
-tests_test_certified_LDADD = $(TEST_LDADD) $(ARB_LIBS) $(MPFR_LIBS)
+tests_test_certified_LDADD = $(CERT_LDADD)
 # the certified closed forms against GMP's exact rationals and MPFR
 tests_test_cert_algebraic_SOURCES = tests/test_cert_algebraic.c
 tests_test_cert_algebraic_CFLAGS = $(TEST_CFLAGS)

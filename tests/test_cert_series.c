@@ -174,80 +174,6 @@ route_collide (const slot *s, mpq_t E, mpq_t H)
 
 /* ---- (B.2) ------------------------------------------------------------ */
 
-typedef struct
-{
-  arb_t twoE, H2, absH, lt;
-  int kind, rev;
-} integrand;
-
-static int
-f_leg (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-  const integrand *p = param;
-  const int an = order != 0;
-  acb_t l, n, g, t;
-  acb_init (l);
-  acb_init (n);
-  acb_init (g);
-  acb_init (t);
-  if (!p->rev)
-    {
-      acb_sqr (n, z, prec);
-      acb_add_ui (n, n, 1, prec);
-      acb_mul_arb (g, n, p->twoE, prec);
-      acb_sub_arb (g, g, p->H2, prec);
-      acb_rsqrt_analytic (g, g, an, prec);
-    }
-  else
-    {
-      /* |l| = lt + w^2: |dl|/sqrt(g) = 2 dw/sqrt(2E (2 lt + w^2)) */
-      acb_sqr (l, z, prec);
-      acb_add_arb (l, l, p->lt, prec);
-      acb_sqr (n, l, prec);
-      acb_add_ui (n, n, 1, prec);
-      acb_add_arb (g, l, p->lt, prec);
-      acb_mul_arb (g, g, p->twoE, prec);
-      acb_rsqrt_analytic (g, g, an, prec);
-      acb_mul_2exp_si (g, g, 1);
-    }
-  acb_sqrt_analytic (t, n, an, prec);
-  if (p->kind == 0)
-    {
-      acb_div (g, g, t, prec);
-      acb_mul_arb (g, g, p->absH, prec);
-    }
-  else
-    acb_mul (g, g, t, prec);
-  acb_set (res, g);
-  acb_clear (l);
-  acb_clear (n);
-  acb_clear (g);
-  acb_clear (t);
-  return 0;
-}
-
-static void
-integrate (arb_t r, integrand *p, const arb_t A, const arb_t B)
-{
-  acb_t res, a, b;
-  mag_t tol;
-  acb_calc_integrate_opt_t opt;
-  acb_init (res);
-  acb_init (a);
-  acb_init (b);
-  mag_init (tol);
-  acb_calc_integrate_opt_init (opt);
-  acb_set_arb (a, A);
-  acb_set_arb (b, B);
-  mag_set_ui_2exp_si (tol, 1, -RP + 20);
-  acb_calc_integrate (res, f_leg, p, a, b, RP - 20, tol, opt, RP);
-  arb_set (r, acb_realref (res));
-  arb_abs (r, r);
-  acb_clear (res);
-  acb_clear (a);
-  acb_clear (b);
-  mag_clear (tol);
-}
 
 static void
 arb_of_q (arb_t x, const mpq_t q)
@@ -265,10 +191,12 @@ static int
 route_leg (const mpq_t E, const mpq_t H, const mpq_t l0, const mpq_t l,
            double *th, double *ta)
 {
-  integrand p;
+  cr_leg p;
   arb_t A, B, r, q;
   mpq_t m;
   mpq_init (m);
+  arb_init (p.L0);              /* 0: the integrals in l */
+  arb_init (p.la);
   arb_init (p.twoE);
   arb_init (p.H2);
   arb_init (p.absH);
@@ -311,14 +239,16 @@ route_leg (const mpq_t E, const mpq_t H, const mpq_t l0, const mpq_t l,
     }
   int ok = 1;
   p.kind = 0;
-  integrate (r, &p, A, B);
+  cr_leg_integrate (r, &p, A, B, RP);
   if (mpq_sgn (H) < 0)
     arb_neg (r, r);
   ok = ok && cr_round_ball (r, th);
   p.kind = 1;
-  integrate (r, &p, A, B);
+  cr_leg_integrate (r, &p, A, B, RP);
   ok = ok && cr_round_ball (r, ta);
   mpq_clear (m);
+  arb_clear (p.L0);
+  arb_clear (p.la);
   arb_clear (p.twoE);
   arb_clear (p.H2);
   arb_clear (p.absH);

@@ -23,6 +23,7 @@
 #include <flint/fmpq.h>
 
 #include "testutil.h"
+#include "certref.h"
 #include "cert-round.h"
 #include "chaplygin.h"
 
@@ -32,65 +33,6 @@ static slong RP = 300;
 
 /* ---- the reference route ---------------------------------------------- */
 
-typedef struct
-{
-  arb_t L0, twoE, H2, absH;
-  int kind;                     /* 0 heading, 1 time */
-  int rev;                      /* reversal leg: w-substituted */
-  arb_t la, lt;                 /* leg start and turning point (rev) */
-} integrand;
-
-/* The integrand: on a leg without a turning point nearby (q >= 0) in D,
-   l = L0 + D: heading |H|/sqrt((1+l^2) g), time sqrt(1+l^2)/sqrt(g),
-   g = 2E (1 + l^2) - H^2.  For q < 0 (WSUB) in w, l = s (lt + w^2) with
-   lt = sqrt(-q) the turning point, s the side: |dl|/sqrt(g) =
-   2 dw/sqrt(2E (2 lt + w^2)), with no singularity at the turning point
-   nor beside it (a slow start). */
-static int
-f_leg (acb_ptr res, const acb_t z, void *param, slong order, slong prec)
-{
-  const integrand *p = param;
-  const int an = order != 0;
-  acb_t l, n, g, t;
-  acb_init (l);
-  acb_init (n);
-  acb_init (g);
-  acb_init (t);
-  if (!p->rev)
-    {
-      acb_add_arb (l, z, p->L0, prec);
-      acb_sqr (n, l, prec);
-      acb_add_ui (n, n, 1, prec);       /* 1 + l^2 */
-      acb_mul_arb (g, n, p->twoE, prec);
-      acb_sub_arb (g, g, p->H2, prec);
-      acb_rsqrt_analytic (g, g, an, prec);
-    }
-  else
-    {
-      acb_sqr (l, z, prec);
-      acb_add_arb (l, l, p->lt, prec);          /* |l| = lt + w^2 */
-      acb_sqr (n, l, prec);
-      acb_add_ui (n, n, 1, prec);
-      acb_add_arb (g, l, p->lt, prec);          /* 2 lt + w^2 */
-      acb_mul_arb (g, g, p->twoE, prec);
-      acb_rsqrt_analytic (g, g, an, prec);
-      acb_mul_2exp_si (g, g, 1);
-    }
-  acb_sqrt_analytic (t, n, an, prec);
-  if (p->kind == 0)
-    {
-      acb_div (g, g, t, prec);
-      acb_mul_arb (g, g, p->absH, prec);
-    }
-  else
-    acb_mul (g, g, t, prec);
-  acb_set (res, g);
-  acb_clear (l);
-  acb_clear (n);
-  acb_clear (g);
-  acb_clear (t);
-  return 0;
-}
 
 /* W = sqrt(|X| - lt) for the exact X with X^2 >= M = lt^2, as
    sqrt((X^2 - M)/(|X| + lt)): no cancellation beside the turning point. */
@@ -113,29 +55,6 @@ w_of (arb_t w, const fmpq_t X, const fmpq_t M, const arb_t lt)
   arb_clear (a);
 }
 
-/* Integral of P's integrand from A to B (real) into R. */
-static void
-integrate (arb_t r, integrand *p, const arb_t A, const arb_t B)
-{
-  acb_t res, a, b;
-  mag_t tol;
-  acb_calc_integrate_opt_t opt;
-  acb_init (res);
-  acb_init (a);
-  acb_init (b);
-  mag_init (tol);
-  acb_calc_integrate_opt_init (opt);
-  acb_set_arb (a, A);
-  acb_set_arb (b, B);
-  mag_set_ui_2exp_si (tol, 1, -RP + 20);
-  acb_calc_integrate (res, f_leg, p, a, b, RP - 20, tol, opt, RP);
-  arb_set (r, acb_realref (res));
-  arb_abs (r, r);
-  acb_clear (res);
-  acb_clear (a);
-  acb_clear (b);
-  mag_clear (tol);
-}
 
 /* The exact model, stepped by the reference route. */
 typedef struct
@@ -229,7 +148,7 @@ ref_step (ref_orbit *r, int *rev, int *spin, arb_t dth, arb_t dta,
   *rev = !*spin && fmpq_sgn (g) <= 0;
   if (*spin)
     goto done;
-  integrand p;
+  cr_leg p;
   arb_init (p.L0);
   arb_init (p.twoE);
   arb_init (p.H2);
@@ -274,9 +193,9 @@ ref_step (ref_orbit *r, int *rev, int *spin, arb_t dth, arb_t dta,
       arb_sub (dc, dc, p.L0, RP);
     }
   p.kind = 0;
-  integrate (dth, &p, A, B);
+  cr_leg_integrate (dth, &p, A, B, RP);
   p.kind = 1;
-  integrate (dta, &p, A, B);
+  cr_leg_integrate (dta, &p, A, B, RP);
   if (*rev)
     {
       arb_mul_2exp_si (dth, dth, 1);
