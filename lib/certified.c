@@ -74,6 +74,11 @@ struct chaplygin_certified_orbit
   /* a straight motion (H = 0) at a rational speed: the time exactly */
   int tau_exact;
   fmpq_t dtau_q, tau_q;
+  /* the state before the last collision (n >= 1): the segment that ended
+     there, for chaplygin_certified_orbit_sample */
+  int pdir;
+  fmpq_t pE, pH, ptau_q;
+  arb_t ptheta, ptau;
 };
 
 /* ---- exact numbers ---------------------------------------------------- */
@@ -339,6 +344,18 @@ orbit_reset (chaplygin_certified_orbit *o)
     q_of_double (o->tau_q, o->tau0);
 }
 
+/* Keep O's state as the one before its next collision. */
+static void
+orbit_save_prev (chaplygin_certified_orbit *o)
+{
+  o->pdir = o->dir;
+  fmpq_set (o->pE, o->E);
+  fmpq_set (o->pH, o->H);
+  fmpq_set (o->ptau_q, o->tau_q);
+  arb_set (o->ptheta, o->theta);
+  arb_set (o->ptau, o->tau);
+}
+
 /* Advance O by one collision at O->prec, committing (used by replays; the
    caller knows the step succeeds). */
 static void
@@ -350,6 +367,7 @@ orbit_advance (chaplygin_certified_orbit *o)
   arb_init (dth);
   arb_init (dta);
   (void) plan_step (o, o->dir, o->E, o->H, &p);
+  orbit_save_prev (o);
   if (o->request & (CHAPLYGIN_WANT_THETA | CHAPLYGIN_WANT_TAU))
     sums_after (o, &p, o->E, o->H, o->theta, o->tau, o->prec, o->theta,
                 o->tau, o->peg[0], o->peg[1], dth, dta);
@@ -427,6 +445,11 @@ orbit_make (const fmpq_t L0, const fmpq_t Delta, int dir, const fmpq_t E,
   arb_init (o->tau);
   fmpq_init (o->dtau_q);
   fmpq_init (o->tau_q);
+  fmpq_init (o->pE);
+  fmpq_init (o->pH);
+  fmpq_init (o->ptau_q);
+  arb_init (o->ptheta);
+  arb_init (o->ptau);
   /* a straight motion at a rational speed: dtau = Delta/sqrt(2E) exactly */
   fmpq_t s;
   fmpq_init (s);
@@ -721,6 +744,11 @@ chaplygin_certified_orbit_free (chaplygin_certified_orbit *o)
   arb_clear (o->tau);
   fmpq_clear (o->dtau_q);
   fmpq_clear (o->tau_q);
+  fmpq_clear (o->pE);
+  fmpq_clear (o->pH);
+  fmpq_clear (o->ptau_q);
+  arb_clear (o->ptheta);
+  arb_clear (o->ptau);
   free (o);
   return CHAPLYGIN_SUCCESS;
 }
@@ -786,6 +814,7 @@ out_clear (step_out *r)
 static void
 orbit_commit (chaplygin_certified_orbit *o, step_out *r)
 {
+  orbit_save_prev (o);
   arb_swap (o->theta, r->theta);
   arb_swap (o->tau, r->tau);
   arb_swap (o->peg[0], r->peg[0]);
@@ -1050,6 +1079,219 @@ chaplygin_certified_orbit_state (const chaplygin_certified_orbit *o,
   if (bounds)
     copy_bounds (o->request, &b, bounds);
   return CHAPLYGIN_SUCCESS;
+}
+
+/* ---- samples of the last segment -------------------------------------- */
+
+/* A sample of the segment that ended at O's last collision: where it is
+   (leg, l = L0 + D exactly, or the turning point) and the exact values
+   there. */
+typedef struct
+{
+  step_plan p;                  /* the segment's decisions, from (pdir,
+                                   pE, pH) */
+  int leg;                      /* 0 out, 1 back, 2 the turning point */
+  fmpq_t l;                     /* l at the sample (leg 2: unused) */
+  fmpq_t v2, omega;             /* V^2 and Omega there, exact */
+} sample_at;
+
+/* Where D (exact) lies on the segment from (pdir, pE, pH), on leg LEG:
+   CHAPLYGIN_SUCCESS with *S filled, CHAPLYGIN_EDOM (D outside the slot,
+   or not on that leg: V^2 < 0 there, the wrong side of the turning
+   point, a return leg of a segment without one). */
+static int
+sample_place (const chaplygin_certified_orbit *o, double D, int leg,
+              sample_at *s)
+{
+  fmpq_t t;
+  fmpq_init (t);
+  (void) plan_step (o, o->pdir, o->pE, o->pH, &s->p);
+  int status = CHAPLYGIN_SUCCESS;
+  q_of_double (t, D);
+  if ((leg != 0 && !s->p.reversal) || fmpq_sgn (t) < 0
+      || fmpq_cmp (t, o->Delta) > 0)
+    status = CHAPLYGIN_EDOM;
+  fmpq_add (s->l, o->L0, t);
+  if (!status && leg < 2)
+    {
+      v2_at (s->v2, o->pE, o->pH, s->l);
+      /* on a reversing segment: l on the start's side of l = 0 */
+      if (fmpq_sgn (s->v2) < 0
+          || (s->p.reversal
+              && fmpq_sgn (s->l) * fmpq_sgn (o->l[s->p.start]) <= 0))
+        status = CHAPLYGIN_EDOM;
+      else if (fmpq_is_zero (s->v2))
+        leg = 2;                        /* D is the turning point */
+    }
+  s->leg = leg;
+  if (!status)
+    {
+      /* Omega = H/(1 + l^2); at the turning point 1 + l^2 = 1 - q */
+      if (leg == 2)
+        {
+          fmpq_one (t);
+          fmpq_sub (t, t, s->p.q);
+          fmpz_zero (fmpq_numref (s->v2));
+          fmpz_one (fmpq_denref (s->v2));
+        }
+      else
+        chp_cert_one_plus_sq (t, s->l);
+      fmpq_div (s->omega, o->pH, t);
+    }
+  fmpq_clear (t);
+  return status;
+}
+
+/* The heading and time from the segment's start to the sample, balls at
+   PREC: out to l (leg 0); out to the turning point and back to l (leg 1:
+   the whole way there and back, less the way out to l, which the way
+   back ends with); out to the turning point (leg 2: half the way there
+   and back). */
+static void
+sample_balls (const chaplygin_certified_orbit *o, const sample_at *s,
+              slong prec, arb_t dth, arb_t dta)
+{
+  const fmpq *la = o->l[s->p.start];
+  arb_t I1, I2, J1, J2, r;
+  arb_init (I1);
+  arb_init (I2);
+  arb_init (J1);
+  arb_init (J2);
+  arb_init (r);
+  if (s->leg != 2 && !fmpq_equal (la, s->l))
+    chp_cert_leg (J1, J2, s->p.q, la, s->l, 0, prec);   /* out to l */
+  if (s->leg == 0)
+    {
+      arb_swap (I1, J1);
+      arb_swap (I2, J2);
+    }
+  else
+    {
+      chp_cert_leg (I1, I2, s->p.q, la, la, 1, prec);   /* there and back */
+      if (s->leg == 2)
+        {
+          arb_mul_2exp_si (I1, I1, -1);
+          arb_mul_2exp_si (I2, I2, -1);
+        }
+      arb_sub (I1, I1, J1, prec);
+      arb_sub (I2, I2, J2, prec);
+    }
+  arb_set_fmpq (r, o->pE, prec);
+  arb_mul_2exp_si (r, r, 1);
+  arb_rsqrt (r, r, prec);       /* 1/sqrt(2E) */
+  arb_mul (dta, I2, r, prec);
+  arb_set_fmpq (dth, o->pH, prec);
+  arb_mul (dth, dth, r, prec);
+  arb_mul (dth, dth, I1, prec);
+  arb_clear (I1);
+  arb_clear (I2);
+  arb_clear (J1);
+  arb_clear (J2);
+  arb_clear (r);
+}
+
+/* The time of a straight motion at a rational speed (H = 0, exact tau),
+   rounded: tau + |D - D0|/sqrt(2E). */
+static int
+sample_time_exact (const chaplygin_certified_orbit *o, const sample_at *s,
+                   double *tau)
+{
+  fmpq_t t, u;
+  fmpq_init (t);
+  fmpq_init (u);
+  fmpq_sub (t, s->l, o->l[s->p.start]);
+  fmpq_abs (t, t);
+  fmpq_mul_2exp (u, o->pE, 1);
+  (void) q_sqrt_exact (u, u);           /* exact: tau_exact */
+  fmpq_div (t, t, u);
+  fmpq_add (t, t, o->ptau_q);
+  const int status = round_q (t, tau, NULL);
+  fmpq_clear (t);
+  fmpq_clear (u);
+  return status;
+}
+
+/* The sample's heading and time at O's precision: ROUND_OK (into *THETA,
+   *TAU as O's request has them, else 0), ROUND_UNDECIDED, ROUND_RANGE. */
+static int
+sample_round (const chaplygin_certified_orbit *o, const sample_at *s,
+              double *theta, double *tau)
+{
+  int rc = ROUND_OK;
+  arb_t dth, dta;
+  arb_init (dth);
+  arb_init (dta);
+  *theta = *tau = 0.0;
+  sample_balls (o, s, o->prec, dth, dta);
+  if (o->request & CHAPLYGIN_WANT_THETA)
+    {
+      arb_add (dth, dth, o->ptheta, o->prec);
+      take (dth, theta, NULL, &rc);
+    }
+  if (o->request & CHAPLYGIN_WANT_TAU)
+    {
+      if (o->tau_exact)
+        {
+          if (sample_time_exact (o, s, tau) != CHAPLYGIN_SUCCESS)
+            rc = ROUND_RANGE;
+        }
+      else
+        {
+          arb_add (dta, dta, o->ptau, o->prec);
+          take (dta, tau, NULL, &rc);
+        }
+    }
+  arb_clear (dth);
+  arb_clear (dta);
+  return rc;
+}
+
+int
+chaplygin_certified_orbit_sample (chaplygin_certified_orbit *o, double D,
+                                  int leg, double *V, double *Omega,
+                                  double *theta, double *tau)
+{
+  if (!o || !V || !Omega || !theta || !tau || leg < 0 || leg > 2
+      || o->n == 0)
+    return CHAPLYGIN_EINVAL;
+  if (!isfinite (D))
+    return CHAPLYGIN_EDOM;
+  sample_at s;
+  plan_init (&s.p);
+  fmpq_init (s.l);
+  fmpq_init (s.v2);
+  fmpq_init (s.omega);
+  double v = 0.0, w = 0.0, th = 0.0, ta = 0.0;
+  int status = sample_place (o, D, leg, &s);
+  if (!status)
+    status = round_root (s.v2, s.leg == 1 ? -o->pdir : o->pdir, NULL,
+                         o->prec, o->cap, &v);
+  if (!status)
+    status = round_q (s.omega, &w, NULL);
+  while (!status)
+    {
+      const int rc = sample_round (o, &s, &th, &ta);
+      if (rc == ROUND_OK)
+        break;
+      if (rc == ROUND_RANGE)
+        status = CHAPLYGIN_ERANGE;
+      else if ((unsigned long) o->prec * 2 <= o->cap)
+        orbit_replay (o, o->prec * 2);  /* Ziv, as for a step */
+      else
+        status = CHAPLYGIN_ECAP;
+    }
+  if (!status)
+    {
+      *V = v;
+      *Omega = w;
+      *theta = th;
+      *tau = ta;
+    }
+  plan_clear (&s.p);
+  fmpq_clear (s.l);
+  fmpq_clear (s.v2);
+  fmpq_clear (s.omega);
+  return status;
 }
 
 /* ---- fates ------------------------------------------------------------ */

@@ -1453,6 +1453,31 @@ int chaplygin_certified_orbit_state (const chaplygin_certified_orbit *orbit,
                                      chaplygin_discrete_state *out,
                                      chaplygin_certified_bounds *bounds);
 
+/** Dense output, certified: the state at the slot position @D (a double,
+   taken exactly) on the segment that ended at @orbit's last collision
+   (from the state before it), each value the double nearest to the exact
+   orbit's there: `*@V` (the sign of the motion on that leg), `*@Omega`,
+   and the heading `*@theta` and time `*@tau` (as the orbit's request has
+   them, else 0).  @leg: 0 the way out from the segment's start, 1 the way
+   back of a segment that reversed, 2 its turning point itself (@D is not
+   used; $V = 0$).  $V^2$ and $Omega$ are rational in $D$; the heading and
+   time add the leg's integrals (from the start to $l = L_0 + D$, or
+   through the turning point) to the orbit's balls, with Ziv's strategy
+   as for chaplygin_certified_orbit_step (the orbit may be replayed at a
+   higher precision; its results do not change).  A @D where the motion's
+   $V^2$ is 0 exactly is the turning point.
+
+   Errors: CHAPLYGIN_EINVAL (null, @leg not 0, 1 or 2, no collision
+   certified yet), CHAPLYGIN_EDOM (@D not finite, outside $[0, Delta]$, or
+   not on that leg: beyond the turning point, the other side of $l = 0$
+   from the start on a reversing segment, or a way back where there is
+   none), CHAPLYGIN_ERANGE, CHAPLYGIN_ECAP.
+ */
+int chaplygin_certified_orbit_sample (chaplygin_certified_orbit *orbit,
+                                      double D, int leg, double *V,
+                                      double *Omega, double *theta,
+                                      double *tau);
+
 /** Set `*@n` to the number of collisions @orbit has certified.
 
    Errors: CHAPLYGIN_EINVAL (a null pointer).

@@ -100,6 +100,29 @@ ref_init (ref_orbit *r, const double L0[2], const double Delta[2], int dir,
   arb_set_d (r->tau, tau);
 }
 
+/* *R = a copy of S (R not initialised). */
+static void
+ref_copy (ref_orbit *r, const ref_orbit *s)
+{
+  fmpq_init (r->L0);
+  fmpq_init (r->Delta);
+  fmpq_init (r->E);
+  fmpq_init (r->H);
+  fmpq_set (r->L0, s->L0);
+  fmpq_set (r->Delta, s->Delta);
+  fmpq_set (r->E, s->E);
+  fmpq_set (r->H, s->H);
+  r->dir = s->dir;
+  arb_init (r->theta);
+  arb_init (r->tau);
+  arb_init (r->peg[0]);
+  arb_init (r->peg[1]);
+  arb_set (r->theta, s->theta);
+  arb_set (r->tau, s->tau);
+  arb_set (r->peg[0], s->peg[0]);
+  arb_set (r->peg[1], s->peg[1]);
+}
+
 static void
 ref_clear (ref_orbit *r)
 {
@@ -394,6 +417,206 @@ compare_orbit_phase (double L0, double Delta, double V, double theta,
   return rev;
 }
 
+/* ---- dense output ----------------------------------------------------- */
+
+/* The reference of a sample of the segment from the state PR (before the
+   step) at D (exact) on LEG (0 out, 1 back, 2 the turning point): the
+   heading and time THETA, TAU (absolute), V^2 and Omega exactly.  The
+   integrals as ref_step's: in D on a leg without a turning point, else in
+   w = sqrt(|l| - lt) from the turning point: out to l is the integral
+   from w(l) to w(la), back from the turning point to l the integral from
+   0 to w(la) plus that from 0 to w(l). */
+static void
+sample_ref (const ref_orbit *pr, double D, int leg, arb_t theta, arb_t tau,
+            fmpq_t v2, fmpq_t omega)
+{
+  fmpq_t la, l, m, t;
+  fmpq_init (la);
+  fmpq_init (l);
+  fmpq_init (m);
+  fmpq_init (t);
+  fmpq_set (la, pr->L0);
+  if (pr->dir < 0)
+    fmpq_add (la, la, pr->Delta);
+  arf_t a;
+  arf_init (a);
+  arf_set_d (a, D);
+  arf_get_fmpq (t, a);
+  arf_clear (a);
+  fmpq_add (l, pr->L0, t);
+  fmpq_mul (m, pr->H, pr->H);
+  fmpq_div (m, m, pr->E);
+  fmpq_div_2exp (m, m, 1);
+  fmpq_sub_ui (m, m, 1);                /* m = -q */
+  cr_leg p;
+  arb_init (p.L0);
+  arb_init (p.twoE);
+  arb_init (p.H2);
+  arb_init (p.absH);
+  arb_init (p.la);
+  arb_init (p.lt);
+  arb_set_fmpq (p.L0, pr->L0, RP);
+  arb_set_fmpq (p.twoE, pr->E, RP);
+  arb_mul_2exp_si (p.twoE, p.twoE, 1);
+  fmpq_mul (t, pr->H, pr->H);
+  arb_set_fmpq (p.H2, t, RP);
+  arb_set_fmpq (p.absH, pr->H, RP);
+  arb_abs (p.absH, p.absH);
+  p.rev = leg != 0 || fmpq_sgn (m) > 0;
+  arb_t A, B, x, dth, dta;
+  arb_init (A);
+  arb_init (B);
+  arb_init (x);
+  arb_init (dth);
+  arb_init (dta);
+  for (p.kind = 0; p.kind < 2; p.kind++)
+    {
+      arb_ptr out = p.kind ? dta : dth;
+      if (!p.rev)
+        {
+          /* in D, from the start's D0 to D */
+          arb_set_fmpq (A, pr->Delta, RP);
+          if (pr->dir > 0)
+            arb_zero (A);
+          arb_set_d (B, D);
+          if (arb_equal (A, B))
+            arb_zero (out);
+          else
+            cr_leg_integrate (out, &p, A, B, RP);
+          continue;
+        }
+      if (leg == 0 && fmpq_equal (l, la))
+        {
+          arb_zero (out);       /* the start itself: exactly 0 */
+          continue;
+        }
+      if (leg == 0 && fmpq_equal (l, la))
+        {
+          arb_zero (out);       /* the start itself: exactly 0 */
+          continue;
+        }
+      arb_set_fmpq (p.lt, m, RP);
+      arb_sqrt (p.lt, p.lt, RP);
+      w_of (B, la, m, p.lt);
+      if (leg == 2)
+        arb_zero (A);
+      else
+        w_of (A, l, m, p.lt);
+      if (leg == 0)
+        cr_leg_integrate (out, &p, A, B, RP);
+      else
+        {
+          arb_zero (x);
+          cr_leg_integrate (out, &p, x, B, RP);  /* out to the turn */
+          if (leg == 1 && !arb_is_zero (A))
+            {
+              cr_leg_integrate (x, &p, x, A, RP); /* back to l */
+              arb_add (out, out, x, RP);
+            }
+        }
+    }
+  if (fmpq_sgn (pr->H) < 0)
+    arb_neg (dth, dth);
+  arb_add (theta, pr->theta, dth, RP);
+  arb_add (tau, pr->tau, dta, RP);
+  /* V^2 = 2E - H^2/(1 + l^2), Omega = H/(1 + l^2); at the turning point
+     V = 0 and 1 + l^2 = 1 + m */
+  if (leg == 2)
+    {
+      fmpq_add_ui (t, m, 1);
+      fmpq_zero (v2);
+    }
+  else
+    {
+      fmpq_mul (t, l, l);
+      fmpq_add_ui (t, t, 1);
+    }
+  fmpq_div (omega, pr->H, t);
+  if (leg != 2)
+    {
+      fmpq_mul (v2, pr->H, omega);
+      fmpq_mul_2exp (t, pr->E, 1);
+      fmpq_sub (v2, t, v2);
+    }
+  arb_clear (A);
+  arb_clear (B);
+  arb_clear (x);
+  arb_clear (dth);
+  arb_clear (dta);
+  arb_clear (p.L0);
+  arb_clear (p.twoE);
+  arb_clear (p.H2);
+  arb_clear (p.absH);
+  arb_clear (p.la);
+  arb_clear (p.lt);
+  fmpq_clear (la);
+  fmpq_clear (l);
+  fmpq_clear (m);
+  fmpq_clear (t);
+}
+
+/* The samples of the segment O just certified (from PR, before the step;
+   EV its event) at a third and two thirds of each leg, the turning point
+   and the ends, against sample_ref: every value 0 ulps; and a D beyond
+   the turning point refused. */
+static void
+check_samples (chaplygin_certified_orbit *o, const ref_orbit *pr,
+               const chaplygin_discrete_event *ev, int k)
+{
+  const double D0 = pr->dir > 0 ? 0.0 : fmpq_get_d (pr->Delta);
+  const double Dend = ev->reversal ? ev->Dc : ev->Dminus;
+  const int legs = ev->reversal ? 3 : 1;
+  arb_t th, ta;
+  fmpq_t v2, om;
+  arb_init (th);
+  arb_init (ta);
+  fmpq_init (v2);
+  fmpq_init (om);
+  for (int leg = 0; leg < legs; leg++)
+    for (int j = 0; j <= 3; j++)
+      {
+        if (leg == 2 && j > 0)
+          break;
+        double D = D0 + (Dend - D0) * (j / 3.0);
+        if (leg == 0 && j == 3 && ev->reversal)
+          continue;             /* the turning point: leg 2 */
+        double V, Om, theta, tau;
+        const int s = chaplygin_certified_orbit_sample (o, D, leg, &V, &Om,
+                                                        &theta, &tau);
+        if (s == CHAPLYGIN_EDOM && ev->reversal && j == 3)
+          continue;     /* the rounded turning point may lie past it */
+        ck_assert_msg (s == CHAPLYGIN_SUCCESS, "sample (step %d, leg %d, "
+                       "D %.17g): %s", k, leg, D, chaplygin_strerror (s));
+        sample_ref (pr, D, leg, th, ta, v2, om);
+        check_ball (th, theta, NULL, "sample theta", k);
+        check_ball (ta, tau, NULL, "sample tau", k);
+        const int sign = leg == 1 ? -pr->dir : pr->dir;
+        mpq_t q;
+        mpq_init (q);
+        fmpq_get_mpq (q, v2);
+        ck_assert_same (V, cr_round_sqrt_q (q, sign));
+        fmpq_get_mpq (q, om);
+        ck_assert_same (Om, cr_round_q (q));
+        mpq_clear (q);
+      }
+  if (ev->reversal)
+    {
+      /* beyond the turning point (the other side of it from the start) */
+      double V, Om, theta, tau;
+      const double past = Dend + (Dend - D0), span = fabs (Dend - D0);
+      if (past >= 0.0 && past <= fmpq_get_d (pr->Delta)
+          && span > 1e-6 * fmpq_get_d (pr->Delta))
+        ck_assert_int_eq (chaplygin_certified_orbit_sample (o, past, 0, &V,
+                                                            &Om, &theta,
+                                                            &tau),
+                          CHAPLYGIN_EDOM);
+    }
+  arb_clear (th);
+  arb_clear (ta);
+  fmpq_clear (v2);
+  fmpq_clear (om);
+}
+
 /* N certified steps of O against the reference R: the reversals seen. */
 static int
 compare_steps (chaplygin_certified_orbit *o, ref_orbit *rp, int n)
@@ -406,17 +629,32 @@ compare_steps (chaplygin_certified_orbit *o, ref_orbit *rp, int n)
   arb_init (dc);
   fmpq_init (vm2);
   int reversals = 0;
+  /* dense output checked where the slot's ends are doubles (the samples'
+     D are) */
+  const double Dd = fmpq_get_d (r.Delta);
+  fmpq_t t;
+  fmpq_init (t);
+  arf_t a;
+  arf_init (a);
+  arf_set_d (a, Dd);
+  arf_get_fmpq (t, a);
+  const int samples = fmpq_equal (t, r.Delta);
+  arf_clear (a);
+  fmpq_clear (t);
   for (int k = 1; k <= n; k++)
     {
       chaplygin_discrete_state st;
       chaplygin_discrete_event ev;
       chaplygin_certified_bounds b;
       int rev, spin;
+      ref_orbit prev;
+      ref_copy (&prev, &r);
       const int s = chaplygin_certified_orbit_step (o, &st, &ev, &b);
       ref_step (&r, &rev, &spin, dth, dta, vm2, dc);
       if (spin)
         {
           ck_assert_int_eq (s, CHAPLYGIN_ESPIN);
+          ref_clear (&prev);
           break;
         }
       ck_assert_int_eq (s, CHAPLYGIN_SUCCESS);
@@ -443,6 +681,9 @@ compare_steps (chaplygin_certified_orbit *o, ref_orbit *rp, int n)
       arb_clear (v);
       if (rev)
         check_ball (dc, ev.Dc, NULL, "Dc", k);
+      if (samples)
+        check_samples (o, &prev, &ev, k);
+      ref_clear (&prev);
       unsigned long done;
       ck_assert (chaplygin_certified_orbit_collisions (o, &done) == 0
                  && done == (unsigned long) k);
@@ -514,7 +755,8 @@ END_TEST
    CHAPLYGIN_ERANGE. */
 START_TEST (extreme_states)
 {
-  RP = 900;
+  RP = 2400;                    /* the 1e-300 slot: tau within ~1e-600 of
+                                   a midpoint in its dense output */
   chaplygin_discrete sys;
   chaplygin_discrete_state st;
   const double starts[][4] = {

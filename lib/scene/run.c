@@ -580,8 +580,9 @@ skate_settings (skate *k, const scene *sc, chaplygin_scene_report *rep)
     k->request |= CHAPLYGIN_WANT_PEG | CHAPLYGIN_WANT_THETA;
   if (sc->outputs & SCENE_OUT_THETA)
     k->request |= CHAPLYGIN_WANT_THETA;
-  if ((sc->outputs & SCENE_OUT_TAU) || !isnan (sc->stop_tau))
-    k->request |= CHAPLYGIN_WANT_TAU;
+  if ((sc->outputs & SCENE_OUT_TAU) || !isnan (sc->stop_tau)
+      || sc->samples > 0)
+    k->request |= CHAPLYGIN_WANT_TAU;       /* dense: the time axis */
 }
 
 /* Method certified: K's orbit from the scaled phase state Q taken exactly,
@@ -810,11 +811,12 @@ dense_row (const skate *k, sink *s, const segment_start *start, long n,
 /* The D of sample J of COUNT along the segment from START (EV its event,
    N its samples): without reversal N samples equally spaced and the far
    end; with one m = N/2 out, the turning point, m back and the start
-   end; *LEG receives the leg. */
+   end; *LEG receives the leg, and *TURN whether it is the turning
+   point. */
 static double
 sample_position (const skate *k, const segment_start *start,
                  const chaplygin_discrete_event *ev, long N, long j,
-                 long count, int *leg)
+                 long count, int *leg, int *turn)
 {
   const long m = N / 2;
   const long span = ev->reversal ? m + 1 : N + 1;
@@ -822,6 +824,7 @@ sample_position (const skate *k, const segment_start *start,
   const double Dend = ev->reversal ? ev->Dc : ev->Dminus;
   *leg = j > span;
   const long jj = *leg ? count - j : j;         /* back along leg 0's D */
+  *turn = ev->reversal && jj == span;
   return jj == span ? Dend : jj == 0 ? D0
     : ev->reversal ? D0 + (Dend - D0) * (double) jj / (double) span
     : k->Delta * (double) (start->st.dir > 0 ? jj : span - jj)
@@ -841,15 +844,26 @@ dense_segment (const skate *k, const segment_start *cur, sink *s, long n,
   const long count = ev->reversal ? 2 * (N / 2) + 2 : N + 1;
   for (long j = 1; j <= count && rc == 0; j++)
     {
-      int leg;
-      double V, Om, dth, dta;
-      double D = sample_position (k, cur, ev, N, j, count, &leg);
-      int status = leg_sample (k, cur, leg, D, want_theta, &V, &Om, &dth,
+      int leg, turn, status;
+      double V, Om, th, ta;
+      double D = sample_position (k, cur, ev, N, j, count, &leg, &turn);
+      if (k->orbit)
+        /* certified: the orbit's last segment, every value rounded once
+           (theta and tau absolute) */
+        status = chaplygin_certified_orbit_sample (k->orbit, D,
+                                                   turn ? 2 : leg, &V, &Om,
+                                                   &th, &ta);
+      else
+        {
+          double dth, dta;
+          status = leg_sample (k, cur, leg, D, want_theta, &V, &Om, &dth,
                                &dta);
+          th = theta0 + dth;
+          ta = tau0 + dta;
+        }
       if (status != CHAPLYGIN_SUCCESS)
         return collision_failure (k, n, status);
-      rc = dense_row (k, s, cur, n, ki++, ev->reversal, D, V, Om,
-                      theta0 + dth, tau0 + dta);
+      rc = dense_row (k, s, cur, n, ki++, ev->reversal, D, V, Om, th, ta);
     }
   return rc;
 }

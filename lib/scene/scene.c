@@ -1032,22 +1032,19 @@ last_of_pair (const parse_ctx *c, int k, int a, int b)
 
 /* The checks of key K (given, at its line) that need the whole scene. */
 /* method = certified: what this build and the certified method cover (a
-   discrete run with per-collision rows, where stop_H and stop_tau read its
-   certified states and stop_fate decides on its exact state; a basins
-   sweep, whose fates it decides exactly; sigma4 and stability sweeps,
-   their values correctly rounded and their regions decided exactly). */
+   discrete run with per-collision or dense rows, where stop_H and stop_tau
+   read its certified states and stop_fate decides on its exact state; a
+   basins sweep, whose fates it decides exactly; sigma4 and stability
+   sweeps, their values correctly rounded and their regions decided
+   exactly). */
 static void
 check_certified (parse_ctx *c, int k, long line)
 {
-  const scene *sc = &c->sc;
   int available = 0;
   (void) chaplygin_method_available (CHAPLYGIN_CERTIFIED, &available);
   if (!available)
     fail_key (c, k, line, "value 'certified': this build has no certified "
               "method (the library was configured without Arb)");
-  else if (sc->samples > 0)
-    fail_key (c, k, line, "value 'certified': dense output (samples) is "
-              "not certified (the run gives one row per collision)");
 }
 
 static void

@@ -72,7 +72,7 @@ from .certified import (CertifiedOrbit, certified_orbit_new,
                         certified_orbit_new_phase_exact,
                         certified_orbit_cap, certified_orbit_step,
                         certified_orbit_state, certified_orbit_fate,
-                        certified_orbit_omega,
+                        certified_orbit_omega, certified_orbit_sample,
                         certified_orbit_collisions, certified_orbit_free,
                         method_available)
 from .scene import run_scene

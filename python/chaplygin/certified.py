@@ -24,6 +24,10 @@ model's exact value (chaplygin_certified_orbit_*, "Certified orbits" in
                     (chaplygin_certified_orbit_state);
   orbit.omega()     Omega = H/(1 + l^2) at its peg, rounded
                     (chaplygin_certified_orbit_omega);
+  orbit.sample(D, leg)
+                    dense output of the segment the last step ended:
+                    Result(V, Omega, theta, tau) at the slot position D
+                    (chaplygin_certified_orbit_sample);
   orbit.fate(max_collisions, reversal_cap=0)
                     Section 3.1.3's fate decided on the exact orbit, which
                     it advances (chaplygin_certified_orbit_fate);
@@ -68,7 +72,7 @@ __all__ = ['CertifiedOrbit', 'certified_orbit_new',
            'certified_orbit_new_phase_exact',
            'certified_orbit_cap', 'certified_orbit_step',
            'certified_orbit_state', 'certified_orbit_fate',
-           'certified_orbit_omega',
+           'certified_orbit_omega', 'certified_orbit_sample',
            'certified_orbit_collisions', 'certified_orbit_free',
            'method_available']
 
@@ -425,6 +429,33 @@ class CertifiedOrbit:
             self._failed(rc, 'chaplygin_certified_orbit_omega')
         return float(w[0])
 
+    def sample(self, D, leg=0):
+        """orbit.sample(D, leg=0)
+
+        Dense output, certified: the state at the slot position D (a
+        float, taken exactly) on the segment that ended at the orbit's
+        last collision: Result(V, Omega, theta, tau), each the double
+        nearest to the exact orbit's value there (theta and tau as the
+        request has them, else 0).  leg: 0 the way out, 1 the way back of
+        a segment that reversed, 2 its turning point (D not used).
+        Before the first step, an invalid leg: ValueError; a D not on the
+        leg: DomainError (chaplygin_certified_orbit_sample).
+
+        C: int chaplygin_certified_orbit_sample(chaplygin_certified_orbit
+        *orbit, double D, int leg, double *V, double *Omega, double
+        *theta, double *tau)
+        """
+        D = _real('D', D)
+        leg = _integer('leg', leg, _INT)
+        out = _ffi.new('double[4]')
+        with self._lock:
+            rc = _lib.chaplygin_certified_orbit_sample(
+                self._p, D, leg, out, out + 1, out + 2, out + 3)
+        if rc:
+            self._failed(rc, 'chaplygin_certified_orbit_sample')
+        return _core._nt(('V', 'Omega', 'theta', 'tau'))(
+            *(float(out[i]) for i in range(4)))
+
     def cap(self, max_bits):
         """orbit.cap(max_bits)
 
@@ -636,6 +667,18 @@ def certified_orbit_omega(orbit):
     *orbit, double *Omega)
     """
     return _orbit(orbit).omega()
+
+
+def certified_orbit_sample(orbit, D, leg=0):
+    """certified_orbit_sample(orbit, D, leg=0)
+
+    orbit.sample(D, leg).
+
+    C: int chaplygin_certified_orbit_sample(chaplygin_certified_orbit
+    *orbit, double D, int leg, double *V, double *Omega, double *theta,
+    double *tau)
+    """
+    return _orbit(orbit).sample(D, leg)
 
 
 def certified_orbit_state(orbit, *, return_bounds=True):

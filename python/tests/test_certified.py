@@ -212,6 +212,44 @@ def test_step_against_fractions(V, Omega, reverses):
 
 
 @need_arb
+def test_sample_against_fractions():
+    """Dense output (orbit.sample): after the first collision of Figure 3's
+    reversing state (V+ = 0.3), V at D on the way out, at the turning point
+    and on the way back is the double nearest to sqrt(2E - H^2/(1 + l^2))
+    of the exact start, Omega to H/(1 + l^2), decided in fractions; theta
+    and tau at the start are the start's and the rest within 1e-13 of the
+    closed form's segment flow; a D past the turning point is refused."""
+    sys_, st = phase_state(*FIG3, 0.3, 0.8)
+    o = c.CertifiedOrbit(sys_, st)
+    E, H = F(st.E), F(st.H)
+    with pytest.raises(ValueError):
+        o.sample(0.0)                   # no segment yet
+    step = o.step()
+    assert step.ev.reversal
+    Dc = step.ev.Dc
+    for D, leg in ((0.0, 0), (Dc / 3, 0), (Dc / 2, 1), (0.0, 1), (Dc, 2)):
+        s = o.sample(D, leg)
+        l = F(-0.5) + F(D)
+        one_l2 = 1 + l * l
+        if leg == 2:
+            assert s.V == 0.0
+            one_l2 = H * H / (2 * E)    # 1 + lt^2 = 1 - q
+        else:
+            v2 = 2 * E - H * H / one_l2
+            assert s.V == (1 if leg == 0 else -1) * nearest_sqrt(v2)
+        assert s.Omega == float(H / one_l2)
+        if leg != 2:
+            flow = d.segment_flow(sys_, st, D, leg)
+            assert abs(s.theta - flow.dtheta) <= 1e-13
+            assert abs(s.tau - flow.dtau) <= 1e-13
+    assert o.sample(0.0, 0).theta == st.theta and o.sample(0.0, 0).tau == 0.0
+    with pytest.raises(c.DomainError):
+        o.sample(min(2 * Dc, 1.0), 0)
+    with pytest.raises(ValueError):
+        o.sample(0.1, 3)
+
+
+@need_arb
 def test_random_orbits_against_fractions():
     """40 random starts, 1 to 5 collisions each: every E, H, V, reversal
     and direction the exact map's; reversals among them."""

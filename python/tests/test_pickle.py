@@ -147,6 +147,9 @@ HAND = {
     'certified_orbit_omega': [
         lambda: c.certified_orbit_omega(stepped(exact_orbit(), 1)),
         lambda: c.certified_orbit_omega(closed(exact_orbit()))],
+    'certified_orbit_sample': [
+        lambda: c.certified_orbit_sample(stepped(exact_orbit(), 1), 0.0),
+        lambda: c.certified_orbit_sample(exact_orbit(), 0.0)],
     'certified_orbit_fate': [
         lambda: c.certified_orbit_fate(exact_orbit(), 100),
         lambda: c.certified_orbit_fate(c.certified_orbit_new_phase_exact(

@@ -116,6 +116,10 @@ HAND = {
                                                              request=v))],
     'certified_orbit_omega': [
         ('orbit', lambda v: c.certified_orbit_omega(v))],
+    'certified_orbit_sample': [
+        ('orbit', lambda v: c.certified_orbit_sample(v, 0.0)),
+        ('real', lambda v: c.certified_orbit_sample(ORBIT, v)),
+        ('int', lambda v: c.certified_orbit_sample(ORBIT, 0.0, v))],
     'certified_orbit_state': [
         ('orbit', lambda v: c.certified_orbit_state(v))],
     'certified_orbit_fate': [
