@@ -907,9 +907,27 @@ START_TEST (straight_exact_time)
   ck_assert (st.tau == 0x1p53 && ev.dtau == 1.0 && st.theta == 0.0);
   ck_assert (b.tau[0] == 0x1p53 && b.tau[1] == 0x1p53 + 2);
   ck_assert (st.peg[0] == 1.0 && st.peg[1] == 0.0 && st.V == 1.0);
+  /* dense output of that segment, exactly: at D = 1, tau = 2^53 + 1, a
+     tie (to the even 2^53; no ball would decide it); at D = 1/2,
+     2^53 + 1/2 */
+  double V, Om, th, ta;
+  ck_assert_int_eq (chaplygin_certified_orbit_sample (o, 1.0, 0, &V, &Om,
+                                                      &th, &ta), 0);
+  ck_assert (ta == 0x1p53 && V == 1.0 && Om == 0.0 && th == 0.0);
+  ck_assert_int_eq (chaplygin_certified_orbit_sample (o, 0.5, 0, &V, &Om,
+                                                      &th, &ta), 0);
+  ck_assert (ta == 0x1p53);
   ck_assert_int_eq (chaplygin_certified_orbit_step (o, &st, &ev, &b), 0);
   ck_assert (st.tau == 0x1p53 + 2 && b.tau[0] == st.tau
              && b.tau[1] == st.tau);
+  /* from 2^53 + 1: at D = 1/2, 2^53 + 3/2 rounds to 2^53 + 2 */
+  ck_assert_int_eq (chaplygin_certified_orbit_sample (o, 0.5, 0, &V, &Om,
+                                                      &th, &ta), 0);
+  ck_assert (ta == 0x1p53 + 2);
+  /* no way back on a straight motion */
+  ck_assert_int_eq (chaplygin_certified_orbit_sample (o, 0.5, 1, &V, &Om,
+                                                      &th, &ta),
+                    CHAPLYGIN_EDOM);
   chaplygin_certified_orbit_free (o);
 }
 END_TEST
