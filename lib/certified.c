@@ -814,15 +814,25 @@ out_clear (step_out *r)
 static void
 orbit_commit (chaplygin_certified_orbit *o, step_out *r)
 {
-  orbit_save_prev (o);
+  /* the state before it becomes the previous one by swaps, not copies
+     (each swap leaves the old value in R, and a second swap moves it
+     on) */
+  o->pdir = o->dir;
   arb_swap (o->theta, r->theta);
+  arb_swap (o->ptheta, r->theta);
   arb_swap (o->tau, r->tau);
+  arb_swap (o->ptau, r->tau);
   arb_swap (o->peg[0], r->peg[0]);
   arb_swap (o->peg[1], r->peg[1]);
   if (o->tau_exact)
-    fmpq_add (o->tau_q, o->tau_q, o->dtau_q);
+    {
+      fmpq_set (o->ptau_q, o->tau_q);
+      fmpq_add (o->tau_q, o->tau_q, o->dtau_q);
+    }
   fmpq_swap (o->E, r->p.E1);
+  fmpq_swap (o->pE, r->p.E1);
   fmpq_swap (o->H, r->p.H1);
+  fmpq_swap (o->pH, r->p.H1);
   if (r->p.reversal)
     o->dir = -o->dir;
   o->n++;
