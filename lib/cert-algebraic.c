@@ -141,13 +141,8 @@ chaplygin_certified_collide (const double L0[2], const double Delta[2],
       fmpq_add (b, qL, Dp);     /* b' */
       chp_cert_momentum_ratio (c, qL, qD, b, t);
       fmpq_mul (c, c, w);
-      status = chp_cert_round_fmpq (Dp, &r[CHAPLYGIN_D]);
-      if (!status)
-        status = chp_cert_round_fmpq (v, &r[CHAPLYGIN_V]);
-      if (!status)
-        status = chp_cert_round_fmpq (th, &r[CHAPLYGIN_THETA]);
-      if (!status)
-        status = chp_cert_round_fmpq (c, &r[CHAPLYGIN_OMEGA]);
+      fmpq *const q[4] = { Dp, v, th, c };    /* D, V, theta, Omega */
+      status = chp_cert_round_all (q, 4, r);
     }
   if (!status)
     for (int i = 0; i < 4; i++)
@@ -200,13 +195,8 @@ chaplygin_certified_collide_eh (const double L0[2], const double Delta[2],
       /* H+ = [1 + L0 (L0 + Delta)]/(1 + b^2) H- */
       chp_cert_momentum_ratio (u, qL, qD, b, t);
       fmpq_mul (h, h, u);
-      status = chp_cert_round_fmpq (Dp, &r[CHAPLYGIN_D]);
-      if (!status)
-        status = chp_cert_round_fmpq (e, &r[CHAPLYGIN_E]);
-      if (!status)
-        status = chp_cert_round_fmpq (th, &r[CHAPLYGIN_THETA]);
-      if (!status)
-        status = chp_cert_round_fmpq (h, &r[CHAPLYGIN_H]);
+      fmpq *const q[4] = { Dp, e, th, h };    /* D, E, theta, H */
+      status = chp_cert_round_all (q, 4, r);
     }
   if (!status)
     for (int i = 0; i < 4; i++)

@@ -82,6 +82,15 @@ chp_cert_sqrt_q (fmpq_t r, const fmpq_t a)
 }
 
 int
+chp_cert_round_all (fmpq *const *q, int n, double *x)
+{
+  int status = CHAPLYGIN_SUCCESS;
+  for (int i = 0; i < n && !status; i++)
+    status = chp_cert_round_fmpq (q[i], &x[i]);
+  return status;
+}
+
+int
 chp_cert_ziv_round (chp_cert_ball_fn f, const void *data, double *x)
 {
   arb_t b;

@@ -46,6 +46,11 @@ void chp_cert_c1 (fmpq_t c1, const fmpq_t Delta, const fmpq_t b,
    (R untouched). */
 int chp_cert_sqrt_q (fmpq_t r, const fmpq_t a);
 
+/* Round each of the N rationals Q[i] into X[i]: CHAPLYGIN_SUCCESS, or
+   the first failure's status (X then partly written: callers round into a
+   copy and write their outputs only on success). */
+int chp_cert_round_all (fmpq *const *q, int n, double *x);
+
 /* A value as a ball at the working precision PREC. */
 typedef void (*chp_cert_ball_fn) (arb_t r, const void *data, slong prec);
 

@@ -85,16 +85,6 @@ a_of (fmpq_t a, const fmpq_t L, const fmpq_t B2)
   fmpq_div (a, L, B2);
 }
 
-/* Round each of N rationals into X[0..N-1]: the first failure's status. */
-static int
-round_all (fmpq *const *q, double *x, int n)
-{
-  int status = CHAPLYGIN_SUCCESS;
-  for (int i = 0; i < n && !status; i++)
-    status = chp_cert_round_fmpq (q[i], &x[i]);
-  return status;
-}
-
 /* ---- (2.1) ------------------------------------------------------------ */
 
 /* (2.1): dS/dtau = |V|, dV/dtau = L Omega^2, dtheta/dtau = Omega,
@@ -127,7 +117,7 @@ chaplygin_certified_smooth_field (const double L[2], const double V[2],
       fmpq_mul (dW, dW, w);
       fmpq_neg (dW, dW);
       fmpq *const out[4] = { dS, dV, w, dW };
-      status = round_all (out, x, 4);
+      status = chp_cert_round_all (out, 4, x);
     }
   if (!status)
     {
@@ -167,7 +157,7 @@ chaplygin_certified_smooth_steady (const double Vstar[2],
       fmpq_mul (e, v, v);
       fmpq_div_2exp (e, e, 1);
       fmpq *const out[4] = { S, v, th, e };
-      status = round_all (out, x, 4);
+      status = chp_cert_round_all (out, 4, x);
     }
   if (!status)
     {

@@ -209,9 +209,7 @@ chaplygin_certified_field (const double L0[2], const double D[2],
     {
       fmpq_add (l, l, d);
       field_q (f, l, v, w, t);
-      status = CHAPLYGIN_SUCCESS;
-      for (int i = 0; i < 4 && !status; i++)
-        status = chp_cert_round_fmpq (f[i], &r[i]);
+      status = chp_cert_round_all (f, 4, r);
     }
   if (!status)
     for (int i = 0; i < 4; i++)
