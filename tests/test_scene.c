@@ -313,6 +313,80 @@ START_TEST (sweeps)
 }
 END_TEST
 
+/* Lines 4-17: [sweep] keys 4-12, L0 14, Delta 15, collisions 17. */
+#define ATLAS SWEEP_HEAD "kind = atlas\nx = V\nx_min = 0.01\nx_max = 1\n" \
+  "nx = 50\ny = Omega\ny_min = -2\ny_max = 2\nny = 40\n[parameters]\n" \
+  "L0 = -1/2\nDelta = 1\n[run]\ncollisions = 1000\n"
+
+/* The atlas: two quantities by name, the others from the scene. */
+START_TEST (atlas)
+{
+  scene sc;
+  parse_ok (ATLAS, &sc);
+  ck_assert_int_eq (sc.sweep, SWEEP_ATLAS);
+  ck_assert_int_eq (sc.x_axis, AXIS_V);
+  ck_assert_int_eq (sc.y_axis, AXIS_OMEGA);
+  ck_assert_uint_eq (sc.n_y, 0);
+  ck_assert (sc.y_min == -2 && sc.y_max == 2 && sc.ny == 40);
+  ck_assert (sc.L0 == -0.5 && sc.Delta == 1 && isnan (sc.V)
+             && isnan (sc.Omega));
+  /* the fate over (L0/Delta, V+) at fixed Delta: L0 and V swept */
+  parse_ok (SWEEP_HEAD "kind = atlas\nx = L0\nx_min = -3\nx_max = 1\n"
+            "nx = 7\ny = V\ny_min = -1\ny_max = 1\nny = 5\n[parameters]\n"
+            "Delta = 1\n[initial]\nOmega = 0.8\n[run]\ncollisions = 9\n",
+            &sc);
+  ck_assert (sc.x_axis == AXIS_L0 && sc.y_axis == AXIS_V);
+  ck_assert (isnan (sc.L0) && sc.Omega == 0.8);
+  /* y_min = y_max: one row, as for stability */
+  parse_ok (SWEEP_HEAD "kind = atlas\nx = Delta\nx_min = 0.5\nx_max = 2\n"
+            "nx = 7\ny = L0\ny_min = 1\ny_max = 1\nny = 1\n[initial]\n"
+            "V = 1\nOmega = 0.8\n[run]\ncollisions = 9\n", &sc);
+  ck_assert (sc.x_axis == AXIS_DELTA && sc.y_axis == AXIS_L0);
+}
+END_TEST
+
+/* What an atlas refuses, each at the key that shows it. */
+START_TEST (atlas_errors)
+{
+  expect_error (SWEEP_HEAD "kind = atlas\nx = theta\n", 5, "[sweep] x",
+                "value 'theta' is not one of L0, Delta, V, Omega");
+  expect_error (ATLAS "[initial]\nV = 1\n", 19, "[initial] V",
+                "not used by this atlas (x or y sweeps V)");
+  expect_error (ATLAS "[initial]\ntheta = 1\n", 19, "[initial] theta",
+                "not used by an atlas sweep (the initial theta is 0)");
+  expect_error (ATLAS "[run]\nmethod = ode\n", 19, "[run] method",
+                "an atlas sweep iterates the (E, H) map");
+  expect_error (ATLAS "[sweep]\ndir = 1\n", 19, "[sweep] dir",
+                "not used by an atlas sweep");
+  /* the y list of sigma4 is not an atlas's y, nor the other way round */
+  expect_error (SWEEP_HEAD "kind = atlas\nx = V\nx_min = 0.01\nx_max = 1\n"
+                "nx = 50\ny = 0.5\n", 9, "[sweep] y",
+                "value '0.5': an atlas's y is the name of the quantity");
+  expect_error (SWEEP_HEAD "kind = sigma4\nx_min = -4\nx_max = 2\nnx = 6\n"
+                "y = Omega\ndir = 1\n", 8, "[sweep] y",
+                "a sigma4 sweep's y is a list of values of (1/Delta)^2");
+  expect_error (SWEEP_HEAD "kind = atlas\nx = V\nx_min = 0.01\nx_max = 1\n"
+                "nx = 50\ny = V\n", 9, "[sweep] y",
+                "x and y are both V");
+  expect_error (SWEEP_HEAD "kind = atlas\ny = Delta\ny_min = 0\ny_max = 1\n",
+                6, "[sweep] y_min", "value '0' is not > 0 (y = Delta");
+  expect_error (SWEEP_HEAD "kind = atlas\nx = Delta\nx_min = -1\n"
+                "x_max = 1\n", 6, "[sweep] x_min",
+                "value '-1' is not > 0 (x = Delta");
+  /* the quantities not swept are required; the grid at most 1e8 */
+  expect_error (SWEEP_HEAD "kind = atlas\nx = V\nx_min = 0.01\nx_max = 1\n"
+                "nx = 50\ny = Omega\ny_min = -2\ny_max = 2\nny = 40\n"
+                "[parameters]\nL0 = 1\n[run]\ncollisions = 10\n", 0,
+                "[parameters] Delta", "missing (required by an atlas sweep)");
+  expect_error (SWEEP_HEAD "kind = atlas\nx = V\nx_min = 0.01\nx_max = 1\n"
+                "nx = 10001\ny = Omega\ny_min = -2\ny_max = 2\n"
+                "ny = 10000\n", 12, "[sweep] ny", "nx ny = 10001 x 10000 "
+                "points is more than 1e8");
+  expect_error (ATLAS "[sweep]\nny = 2\n", 19, "[sweep] ny",
+                "given twice");
+}
+END_TEST
+
 /* The y list holds at most SCENE_SWEEP_YMAX values. */
 START_TEST (y_list_of_64)
 {
@@ -641,8 +715,11 @@ START_TEST (ranges)
   expect_error (SWEEP_HEAD "y = 0.1, x\n", 4, "[sweep] y",
                 "'x' (item 2) is not a number");
   expect_error (SWEEP_HEAD "y = \n", 4, "[sweep] y", "no value");
-  expect_error (SWEEP_HEAD "y_min = -1\n", 4, "[sweep] y_min",
-                "is negative");
+  /* y >= 0 is (1/Delta)^2's range: a stability sweep's (an atlas's y may
+     be any quantity), so a whole-scene check, at the key's line */
+  expect_error (SWEEP_HEAD "kind = stability\nx_min = -4\nx_max = 2\n"
+                "nx = 6\ny_min = -1\ny_max = 1\nny = 3\n", 8,
+                "[sweep] y_min", "value '-1' is negative");
 }
 END_TEST
 
@@ -1034,6 +1111,7 @@ main (void)
   tcase_add_test (valid, massless);
   tcase_add_test (valid, sweeps);
   tcase_add_test (valid, y_list_of_64);
+  tcase_add_test (valid, atlas);
   tcase_add_test (valid, syntax_variants);
   tcase_add_test (errors, long_lines);
   tcase_add_test (errors, many_lines);
@@ -1049,6 +1127,7 @@ main (void)
   tcase_add_test (errors, model_keys);
   tcase_add_test (errors, missing_keys);
   tcase_add_test (errors, sweep_keys);
+  tcase_add_test (errors, atlas_errors);
   tcase_add_test (errors, bounds_keys);
   tcase_add_test (other, writing);
   tcase_add_test (other, messages);

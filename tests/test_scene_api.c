@@ -81,7 +81,7 @@ run_into (const chaplygin_scene *sc, rows_kept *k, int compare,
           chaplygin_scene_report *rep)
 {
   chaplygin_run_options opt = { compare, 0, 1, 0, keep_begin, keep_row,
-                                keep_progress, k, NULL };
+                                keep_progress, k, NULL, NULL };
   return chaplygin_scene_run (sc, &opt, rep);
 }
 
@@ -470,7 +470,8 @@ START_TEST (run_failures)
   ck_assert_msg (strstr (rep.note, "stopped at collision 0 of 1000000000: "
                          "stop_fate"), "%s", rep.note);
   /* EINVAL: options that do not apply */
-  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL, NULL };
+  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL, NULL,
+                                NULL };
   ck_assert_int_eq (chaplygin_scene_run (big, &opt, &rep),
                     CHAPLYGIN_SCENE_EINVAL);
   ck_assert_msg (strstr (rep.message, "--compare needs"), "%s", rep.message);
@@ -748,7 +749,8 @@ START_TEST (interface_edges)
                     CHAPLYGIN_SCENE_EINVAL);
   /* a sweep: compare does not apply; a begin callback that stops it; a
      progress callback that stops it; a shard out of range */
-  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL, NULL };
+  chaplygin_run_options opt = { 1, 0, 1, 0, NULL, NULL, NULL, NULL, NULL,
+                                NULL };
   ck_assert_int_eq (chaplygin_scene_check (sc, &opt, &rep),
                     CHAPLYGIN_SCENE_EINVAL);
   ck_assert_msg (strstr (rep.message, "--compare"), "%s", rep.message);
@@ -896,7 +898,7 @@ run_text (const chaplygin_scene *sc, lines_kept *t, int threads,
 {
   chaplygin_run_options opt = { 0, 0, 1, threads, NULL,
                                 t->rows ? keep_row_of_lines : NULL, NULL, t,
-                                keep_line };
+                                keep_line, NULL };
   return chaplygin_scene_run (sc, &opt, rep);
 }
 

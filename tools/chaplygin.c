@@ -414,7 +414,7 @@ run_skate (int argc, char **argv)
   else
     {
       chaplygin_run_options run = { 0, 0, 1, 0, NULL, NULL, NULL, NULL,
-                                    NULL };
+                                    NULL, NULL };
       rc = write_run (sc, NULL, &run, args.no_provenance ? NULL
                       : cli_command (), args.output, &rep);
     }
@@ -506,7 +506,7 @@ run_scene (int argc, char **argv)
   else if (rc == EXIT_OK)
     {
       chaplygin_run_options run = { args.compare, 0, 1, 0, NULL, NULL, NULL,
-                                    NULL, NULL };
+                                    NULL, NULL, NULL };
       memset (&rep, 0, sizeof rep);
       rc = write_run (sc, args.scene_path, &run, args.no_provenance ? NULL
                       : cli_command (), args.output, &rep);

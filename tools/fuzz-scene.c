@@ -121,6 +121,28 @@ scene_is_sound (const scene *sc)
           || !isnan (sc->V))
         return 0;
       break;
+    case SWEEP_ATLAS:
+      if (sc->x_axis < AXIS_L0 || sc->x_axis > AXIS_OMEGA
+          || sc->y_axis < AXIS_L0 || sc->y_axis > AXIS_OMEGA
+          || sc->x_axis == sc->y_axis || sc->n_y != 0
+          || !(sc->y_min <= sc->y_max) || !isfinite (sc->y_max)
+          || !isfinite (sc->y_min) || sc->ny < 1 || sc->ny > 10000000L
+          || (double) sc->nx * (double) sc->ny > 1e8
+          || sc->collisions < 0
+          || (sc->x_axis == AXIS_DELTA && !(sc->x_min > 0))
+          || (sc->y_axis == AXIS_DELTA && !(sc->y_min > 0)))
+        return 0;
+      /* the two quantities it does not sweep: from the scene */
+      if ((sc->x_axis != AXIS_L0 && sc->y_axis != AXIS_L0)
+          != isfinite (sc->L0)
+          || (sc->x_axis != AXIS_DELTA && sc->y_axis != AXIS_DELTA)
+          != (sc->Delta > 0 && isfinite (sc->Delta))
+          || (sc->x_axis != AXIS_V && sc->y_axis != AXIS_V)
+          != (isfinite (sc->V) && sc->V != 0)
+          || (sc->x_axis != AXIS_OMEGA && sc->y_axis != AXIS_OMEGA)
+          != isfinite (sc->Omega))
+        return 0;
+      break;
     default:
       return 0;
     }
@@ -142,7 +164,7 @@ same_scene (const scene *a, const scene *b)
     && SAME (max_rows) && SAME (sweep) && SAME (x_min) && SAME (x_max)
     && SAME (y_min) && SAME (y_max) && SAME (nx) && SAME (ny)
     && SAME (n_y) && memcmp (a->y, b->y, a->n_y * sizeof a->y[0]) == 0
-    && SAME (dir) && SAME (view);
+    && SAME (dir) && SAME (x_axis) && SAME (y_axis) && SAME (view);
 #undef SAME
 }
 

@@ -212,7 +212,7 @@ check_rows (const figure_plan *p)
     {
       const figure_block *b = &p->block[i];
       chaplygin_run_options run = { b->compare, 0, 1, 0, NULL, NULL, NULL,
-                                    NULL, NULL };
+                                    NULL, NULL, NULL };
       chaplygin_scene_report rep;
       if (chaplygin_scene_check (b->sc, &run, &rep) != CHAPLYGIN_SCENE_OK)
         {
@@ -312,7 +312,7 @@ static int
 survey_run (const figure *f, const figure_block *b, survey *s)
 {
   chaplygin_run_options run = { b->compare, 0, 1, 0, NULL, survey_row, NULL,
-                                s, NULL };
+                                s, NULL, NULL };
   chaplygin_scene_report rep;
   const figure_column *want = figure_columns (f, b->name);
   memset (s, 0, sizeof *s);
@@ -464,7 +464,7 @@ static int
 data_block (FILE *gp, const figure_block *b)
 {
   chaplygin_run_options run = { b->compare, 0, 1, 0, NULL, NULL, NULL, NULL,
-                                NULL };
+                                NULL, NULL };
   csv_options opt = { NULL, "gnuplot", NULL, 1 };
   fprintf (gp, "$%c << EOD\n", b->name);
   int rc = csv_run (b->sc, &run, gp, &opt, NULL);

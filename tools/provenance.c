@@ -13,10 +13,11 @@ method_line (FILE *out, const chaplygin_scene *sc, int compare)
   double tolerance = 0.0;
   (void) chaplygin_scene_text (sc, "kind", kind, sizeof kind);
   (void) chaplygin_scene_text (sc, "method", method, sizeof method);
-  if (strcmp (kind, "basins") == 0 && strcmp (method, "certified") == 0)
+  int fates = strcmp (kind, "basins") == 0 || strcmp (kind, "atlas") == 0;
+  if (fates && strcmp (method, "certified") == 0)
     fputs ("# method: certified: the exact return map on (E, H), every "
            "fate decided exactly (chaplygin_certified_orbit_fate)\n", out);
-  else if (strcmp (kind, "basins") == 0)
+  else if (fates)
     fputs ("# method: the return map on (V+^2, H) "
            "(chaplygin_discrete_fate_phase)\n", out);
   else if (kind[0] && strcmp (method, "certified") == 0)

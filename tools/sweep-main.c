@@ -217,7 +217,7 @@ static int
 write_sweep (const chaplygin_scene *sc, const sweep_args *args)
 {
   chaplygin_run_options run = { 0, args->shard, args->nshards, args->threads,
-                                NULL, NULL, NULL, NULL, NULL };
+                                NULL, NULL, NULL, NULL, NULL, NULL };
   chaplygin_scene_report rep;
   if (chaplygin_scene_check (sc, &run, &rep) != CHAPLYGIN_SCENE_OK)
     {

@@ -371,8 +371,21 @@ typedef int (*chaplygin_begin_fn) (void *user,
  */
 typedef int (*chaplygin_progress_fn) (void *user, double done, double total);
 
-/** How to run a scene.  `{ 0, 0, 1, 0, NULL, NULL, NULL, NULL, NULL }` is
-   a plain run.
+/** A rectangle of a sweep's grid: the rows `i0` .. `i0 + ni - 1` (the y
+   values: a sigma4 sweep's list, the y grid of a stability sweep or an
+   atlas; a basins sweep has the one row 0) and the columns `j0` .. `j0 +
+   nj - 1` (the x grid).  A Dask chunk of an atlas is one.
+   @fields
+ */
+typedef struct
+{
+  size_t i0, ni;                  /** the first row, the number of rows; */
+  size_t j0, nj;                  /** the first column, the number of
+                                      columns. */
+} chaplygin_sweep_window;
+
+/** How to run a scene.  `{ 0, 0, 1, 0, NULL, NULL, NULL, NULL, NULL, NULL
+   }` is a plain run.
    @fields
  */
 typedef struct
@@ -389,7 +402,12 @@ typedef struct
   chaplygin_progress_fn progress; /** may be null; */
   void *user;                     /** passed to the callbacks; */
   chaplygin_text_fn text;         /** may be null: each row's text, after
-                                      `row` (if any) has taken the row. */
+                                      `row` (if any) has taken the row; */
+  const chaplygin_sweep_window *window; /** may be null (the whole sweep, or
+                                      the shard); else a sweep's rectangle,
+                                      not with shards: its points in the
+                                      order of k, each row as in the whole
+                                      sweep, k included. */
 } chaplygin_run_options;
 
 /** The most columns of any run: @expansion. */
@@ -400,7 +418,7 @@ typedef struct
 
    Errors: CHAPLYGIN_SCENE_EINVAL (an empty scene, an option that does not
    apply: compare without a companion, compare in a sweep, a shard out of
-   range; @cap too small).
+   range, a window outside a sweep or with shards; @cap too small).
  */
 int chaplygin_scene_columns (const chaplygin_scene *sc,
                              const chaplygin_run_options *opt,

@@ -28,8 +28,22 @@ typedef enum
   SWEEP_NONE = 0,
   SWEEP_SIGMA4 = 1,
   SWEEP_STABILITY = 2,
-  SWEEP_BASINS = 3
+  SWEEP_BASINS = 3,
+  SWEEP_ATLAS = 4
 } sweep_kind;
+
+/* The quantities an atlas sweeps (its x and y keys), in the order of
+   their words. */
+typedef enum
+{
+  AXIS_NONE = -1,
+  AXIS_L0 = 0,
+  AXIS_DELTA = 1,
+  AXIS_V = 2,
+  AXIS_OMEGA = 3
+} atlas_axis;
+#define ATLAS_AXES 4
+#define SWEEP_KINDS 4           /* the kinds but SWEEP_NONE */
 
 /* What to compute (the "outputs" key): nothing else is computed. */
 enum scene_output
@@ -65,7 +79,7 @@ enum scene_key
   K_V, K_OMEGA, K_THETA,
   K_COLLISIONS, K_DURATION, K_SAMPLES, K_OUTPUTS, K_METHOD, K_TOLERANCE,
   K_EVERY, K_STOP_FATE, K_STOP_H, K_STOP_TAU, K_MAX_ROWS,
-  K_KIND, K_X_MIN, K_X_MAX, K_NX, K_Y_MIN, K_Y_MAX, K_NY, K_Y, K_DIR,
+  K_KIND, K_X, K_X_MIN, K_X_MAX, K_NX, K_Y, K_Y_MIN, K_Y_MAX, K_NY, K_DIR,
   K_VIEW,
   K_COUNT
 };
@@ -108,6 +122,8 @@ struct chaplygin_scene
   long nx, ny;
   double y[SCENE_SWEEP_YMAX];
   size_t n_y;
+  atlas_axis x_axis, y_axis;    /* an atlas's quantities (y_axis: y given
+                                   as a name), else AXIS_NONE */
   int dir;
   /* [plot] */
   plot_view view;               /* default PLOT_PANELS */

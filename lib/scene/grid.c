@@ -57,7 +57,19 @@
                    state just after a collision) is not passed to the
                    library: its status is ESTATE.
 
-   A shard with more points than [run] max_rows is refused before any row
+   atlas (the basins over two quantities), k = i nx + j for the
+   post-collision state of the basins with the quantity [sweep] x = x_j
+   and the quantity y = y_i (two of L0, Delta, V, Omega: the initial V+,
+   Omega+), the other two from the scene:
+     k,X,Y,fate,collisions,reversals,E_final,V_final,status
+       X, Y        the two quantities, headed by their names (V,Omega)
+       the rest    as a basins row; a point where L0 or Delta is swept
+                   and the library rejects the skate has that status
+                   (chaplygin_discrete_init), a V = 0 point ESTATE
+
+   A window (chaplygin_sweep_window) computes a rectangle of rows i and
+   columns j instead of a shard, its points in the order of k.  A shard or
+   a window with more points than [run] max_rows is refused before any row
    (ELIMIT). */
 #include <config.h>
 
@@ -81,7 +93,7 @@
                                        blocks in memory: 16 MB, with the
                                        rows' text 41 MB) */
 #define CHUNK_POINTS 64             /* OpenMP dynamic chunk */
-#define ROW_CELLS 8                 /* cells of the widest row (basins) */
+#define ROW_CELLS 9                 /* cells of the widest row (atlas) */
 
 /* A sweep ready to compute: the scene and what is derived from it. */
 typedef struct
@@ -89,9 +101,23 @@ typedef struct
   const scene *sc;
   uint64_t nx;                /* x grid points */
   uint64_t total;             /* T: points in the whole sweep */
-  uint64_t first, count;      /* the shard's points */
-  chaplygin_discrete sys;     /* basins: the skate */
+  uint64_t first, count;      /* the shard's points (a window: 0 and
+                                 its points) */
+  const chaplygin_sweep_window *window;       /* or NULL */
+  chaplygin_discrete sys;     /* basins, and an atlas that sweeps
+                                 neither L0 nor Delta: the skate */
+  int sys_status;             /* chaplygin_discrete_init's status */
 } sweep_plan;
+
+/* The global index k of the shard's or the window's T-th point. */
+static uint64_t
+plan_k (const sweep_plan *plan, uint64_t t)
+{
+  const chaplygin_sweep_window *w = plan->window;
+  if (!w)
+    return plan->first + t;
+  return ((uint64_t) w->i0 + t / w->nj) * plan->nx + w->j0 + t % w->nj;
+}
 
 /* ------------------------------------------------------------------ */
 /* The points                                                          */
@@ -114,6 +140,16 @@ shard_start (uint64_t total, uint64_t s, uint64_t n)
 {
   uint64_t q = total / n, r = total % n;
   return s * q + s * r / n;
+}
+
+/* Whether SC is an atlas whose skate changes from point to point (it
+   sweeps L0 or Delta). */
+static int
+atlas_sweeps_skate (const scene *sc)
+{
+  return sc->sweep == SWEEP_ATLAS
+    && (sc->x_axis == AXIS_L0 || sc->x_axis == AXIS_DELTA
+        || sc->y_axis == AXIS_L0 || sc->y_axis == AXIS_DELTA);
 }
 
 /* Cells of a row. */
@@ -195,54 +231,92 @@ stability_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
 }
 
 /* Method certified: the fate of the post-collision state (D+, V, 0,
-   Omega) taken exactly, by a certified orbit (exact arithmetic: no
-   velocity scaling; a final energy beyond the doubles is ERANGE).  A
-   status. */
+   Omega) of the skate SYS taken exactly, by a certified orbit (exact
+   arithmetic: no velocity scaling; a final energy beyond the doubles is
+   ERANGE).  A status. */
 static int
-certified_fate (const sweep_plan *plan, double V, chaplygin_fate *fate)
+certified_fate (const chaplygin_discrete *sys, double V, double Omega,
+                unsigned long collisions, chaplygin_fate *fate)
 {
-  const scene *sc = plan->sc;
-  const double q[4] = { V > 0.0 ? 0.0 : plan->sys.Delta, V, 0.0, sc->Omega },
+  const double q[4] = { V > 0.0 ? 0.0 : sys->Delta, V, 0.0, Omega },
     peg[2] = { 0.0, 0.0 };
   chaplygin_certified_orbit *o;
-  int status = chaplygin_certified_orbit_new_phase (&plan->sys, q, 0.0, peg,
-                                                    0, &o);
+  int status = chaplygin_certified_orbit_new_phase (sys, q, 0.0, peg, 0, &o);
   if (status == CHAPLYGIN_SUCCESS)
-    status = chaplygin_certified_orbit_fate (o, (unsigned long)
-                                             sc->collisions, NULL, 0, fate);
+    status = chaplygin_certified_orbit_fate (o, collisions, NULL, 0, fate);
   chaplygin_certified_orbit_free (o);
   return status;
 }
 
-/* The row of basins point K into ROW: the library's
-   chaplygin_discrete_basins for the point (a tiny or huge V+, Omega+ runs
-   in the units of its velocity scaling, and E_final, V_final are delivered
-   in the physical ones, exactly: cell_scaled, as a run delivers them). */
+/* The fate cells fate, collisions, reversals, E_final, V_final, status of
+   the post-collision state {D+, V, 0, Omega} of the skate SYS at CELLS
+   (SYS_STATUS: chaplygin_discrete_init's status for it; a failure is the
+   point's status): the library's chaplygin_discrete_basins for the one
+   point (a tiny or huge V+, Omega+ runs in the units of its velocity
+   scaling, and E_final, V_final are delivered in the physical ones,
+   exactly: cell_scaled, as a run delivers them), or the certified fate. */
+static void
+fate_cells (const scene *sc, const chaplygin_discrete *sys, int sys_status,
+            double V, double Omega, chaplygin_cell *cells)
+{
+  int status = sys_status, m = 0;
+  chaplygin_fate fate;
+  if (status != CHAPLYGIN_SUCCESS)
+    ;
+  else if (sc->method == CHAPLYGIN_CERTIFIED)
+    status = certified_fate (sys, V, Omega, (unsigned long) sc->collisions,
+                             &fate);
+  else
+    (void) chaplygin_discrete_basins (sys, Omega, V, V, 1,
+                                      (unsigned long) sc->collisions, &fate,
+                                      &status, &m);
+  for (int i = 0; i < 5; i++)
+    put_missing (&cells[i]);
+  put_int (&cells[5], status);
+  if (status != CHAPLYGIN_SUCCESS)
+    return;
+  put_int (&cells[0], fate.kind);
+  put_int (&cells[1], (long long) fate.collisions);
+  put_int (&cells[2], (long long) fate.reversals);
+  put_scaled (&cells[3], m, CHAPLYGIN_SCALE_ENERGY, fate.E_final);
+  put_scaled (&cells[4], m, CHAPLYGIN_SCALE_SPEED, fate.V_final);
+}
+
+/* The row of basins point K into ROW. */
 static void
 basins_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
 {
   const scene *sc = plan->sc;
   double V = grid_value (sc->x_min, sc->x_max, plan->nx, k);
-  int status, m = 0;
-  chaplygin_fate fate;
-  if (sc->method == CHAPLYGIN_CERTIFIED)
-    status = certified_fate (plan, V, &fate);
-  else
-    (void) chaplygin_discrete_basins (&plan->sys, sc->Omega, V, V, 1,
-                                      (unsigned long) sc->collisions, &fate,
-                                      &status, &m);
   put_int (&row[0], (long long) k);
   put_real (&row[1], V);
-  for (int i = 2; i < 7; i++)
-    put_missing (&row[i]);
-  put_int (&row[7], status);
-  if (status != CHAPLYGIN_SUCCESS)
-    return;
-  put_int (&row[2], fate.kind);
-  put_int (&row[3], (long long) fate.collisions);
-  put_int (&row[4], (long long) fate.reversals);
-  put_scaled (&row[5], m, CHAPLYGIN_SCALE_ENERGY, fate.E_final);
-  put_scaled (&row[6], m, CHAPLYGIN_SCALE_SPEED, fate.V_final);
+  fate_cells (sc, &plan->sys, plan->sys_status, V, sc->Omega, &row[2]);
+}
+
+/* The row of atlas point K into ROW: the scene's L0, Delta, V, Omega with
+   x and y in place of the two it sweeps. */
+static void
+atlas_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+{
+  const scene *sc = plan->sc;
+  double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
+  double y = grid_value (sc->y_min, sc->y_max, (uint64_t) sc->ny,
+                         k / plan->nx);
+  double q[ATLAS_AXES] = { sc->L0, sc->Delta, sc->V, sc->Omega };
+  q[sc->x_axis] = x;
+  q[sc->y_axis] = y;
+  put_int (&row[0], (long long) k);
+  put_real (&row[1], x);
+  put_real (&row[2], y);
+  if (atlas_sweeps_skate (sc))
+    {
+      chaplygin_discrete sys;
+      int status = chaplygin_discrete_init (&sys, q[AXIS_L0], q[AXIS_DELTA]);
+      fate_cells (sc, &sys, status, q[AXIS_V], q[AXIS_OMEGA], &row[3]);
+    }
+  else
+    fate_cells (sc, &plan->sys, plan->sys_status, q[AXIS_V], q[AXIS_OMEGA],
+                &row[3]);
 }
 
 /* The row of point K into ROW. */
@@ -259,6 +333,9 @@ point_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
       break;
     case SWEEP_BASINS:
       basins_row (plan, k, row);
+      break;
+    case SWEEP_ATLAS:
+      atlas_row (plan, k, row);
       break;
     case SWEEP_NONE:
       break;
@@ -287,6 +364,19 @@ grid_columns (const scene *sc, chaplygin_column *col)
     { "E_final", CHAPLYGIN_COLUMN_REAL }, { "V_final", CHAPLYGIN_COLUMN_REAL },
     { "status", CHAPLYGIN_COLUMN_STATUS }
   };
+  /* an atlas: k, its two quantities by name, then basins' fate columns */
+  static const chaplygin_column axis[ATLAS_AXES] = {
+    { "L0", CHAPLYGIN_COLUMN_REAL }, { "Delta", CHAPLYGIN_COLUMN_REAL },
+    { "V", CHAPLYGIN_COLUMN_REAL }, { "Omega", CHAPLYGIN_COLUMN_REAL }
+  };
+  if (sc->sweep == SWEEP_ATLAS)
+    {
+      col[0] = basins[0];
+      col[1] = axis[sc->x_axis];
+      col[2] = axis[sc->y_axis];
+      memcpy (col + 3, basins + 2, 6 * sizeof *col);
+      return 9;
+    }
   const chaplygin_column *c = sc->sweep == SWEEP_SIGMA4 ? sigma4
     : sc->sweep == SWEEP_STABILITY ? stability : basins;
   size_t n = sc->sweep == SWEEP_SIGMA4 ? 5
@@ -299,9 +389,20 @@ grid_columns (const scene *sc, chaplygin_column *col)
 /* Checking the sweep                                                  */
 /* ------------------------------------------------------------------ */
 
-/* PLAN of the shard OPT names of the sweep of SC (valid).  Returns OK, or
-   EMODEL where the library rejects the skate of a basins sweep, or ELIMIT
-   where the shard has more points than max_rows. */
+/* The rows of the grid of SC: the y values (1 for basins). */
+static uint64_t
+grid_rows (const scene *sc)
+{
+  return sc->sweep == SWEEP_SIGMA4 ? (uint64_t) sc->n_y
+    : sc->sweep == SWEEP_STABILITY || sc->sweep == SWEEP_ATLAS
+    ? (uint64_t) sc->ny : 1;
+}
+
+/* PLAN of the shard or window OPT names of the sweep of SC (valid).  Returns OK, or
+   EMODEL where the library rejects the skate of a basins sweep or of an
+   atlas that sweeps neither L0 nor Delta, EINVAL for a window outside the
+   grid, or ELIMIT where the shard or window has more points than
+   max_rows. */
 static int
 plan_sweep (const scene *sc, const chaplygin_run_options *opt,
             sweep_plan *plan, chaplygin_scene_report *rep)
@@ -309,10 +410,10 @@ plan_sweep (const scene *sc, const chaplygin_run_options *opt,
   memset (plan, 0, sizeof *plan);
   plan->sc = sc;
   plan->nx = (uint64_t) sc->nx;
-  plan->total = plan->nx * (sc->sweep == SWEEP_SIGMA4 ? (uint64_t) sc->n_y
-                            : sc->sweep == SWEEP_STABILITY
-                            ? (uint64_t) sc->ny : 1);
-  if (sc->sweep == SWEEP_BASINS)
+  uint64_t rows = grid_rows (sc);
+  plan->total = plan->nx * rows;
+  if ((sc->sweep == SWEEP_BASINS || sc->sweep == SWEEP_ATLAS)
+      && !atlas_sweeps_skate (sc))
     {
       int status = chaplygin_discrete_init (&plan->sys, sc->L0, sc->Delta);
       if (status != CHAPLYGIN_SUCCESS)
@@ -324,14 +425,24 @@ plan_sweep (const scene *sc, const chaplygin_run_options *opt,
                               sc->L0, sc->Delta, chaplygin_strerror (status));
         }
     }
+  const chaplygin_sweep_window *w = opt->window;
+  if (w && (w->ni > rows || w->i0 > rows - w->ni || w->nj > plan->nx
+            || w->j0 > plan->nx - w->nj))
+    return report_fail (rep, CHAPLYGIN_SCENE_EINVAL, "%s: the window of "
+                        "rows %zu + %zu and columns %zu + %zu is outside the "
+                        "grid of %" PRIu64 " rows and %" PRIu64 " columns",
+                        sc->name, w->i0, w->ni, w->j0, w->nj, rows, plan->nx);
   uint64_t s = (uint64_t) opt->shard, n = (uint64_t) opt->nshards;
-  plan->first = shard_start (plan->total, s, n);
-  plan->count = shard_start (plan->total, s + 1, n) - plan->first;
+  plan->window = w;
+  plan->first = w ? 0 : shard_start (plan->total, s, n);
+  plan->count = w ? (uint64_t) w->ni * w->nj
+    : shard_start (plan->total, s + 1, n) - plan->first;
   chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
-  return report_limit (rep, sc->name, n > 1 ? "the shard" : "the sweep",
-                       (double) plan->count, (int) grid_columns (sc, col),
-                       sc->max_rows, "split it (--shard i/N) or raise the "
-                       "limit ([run] max_rows, or --max-rows)");
+  return report_limit (rep, sc->name, w ? "the window" : n > 1 ? "the shard"
+                       : "the sweep", (double) plan->count,
+                       (int) grid_columns (sc, col), sc->max_rows,
+                       "split it (--shard i/N) or raise the limit ([run] "
+                       "max_rows, or --max-rows)");
 }
 
 int
@@ -478,7 +589,7 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
       /* compute block b while block b - 1 is delivered */
       row_block *fill = b < nblocks ? &blocks[b % 2] : NULL;
       const row_block *drain = b > 0 ? &blocks[(b - 1) % 2] : NULL;
-      const uint64_t base = plan->first + b * block;
+      const uint64_t base = b * block;
       const int n = fill ? (int) (count - b * block < block
                                   ? count - b * block : block) : 0;
       if (fill)
@@ -499,7 +610,8 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
           {
             if (get_stop (&stop))
               continue;
-            block_row (plan, fill, i, base + (uint64_t) i, col, ncols);
+            block_row (plan, fill, i, plan_k (plan, base + (uint64_t) i),
+                       col, ncols);
             uint64_t now;
 #ifdef _OPENMP
 #pragma omp atomic capture
@@ -542,7 +654,13 @@ grid_run (const scene *sc, const chaplygin_run_options *opt,
     return report_fail (rep, rc, "out of memory");
   if (rc != CHAPLYGIN_SCENE_OK)
     return report_fail (rep, rc, "%s: stopped by the caller", sc->name);
-  if (plan.count > 0)
+  if (plan.window && plan.count > 0)
+    snprintf (rep->end, sizeof rep->end, "complete: %" PRIu64 " points, "
+              "rows %zu .. %zu, columns %zu .. %zu of %" PRIu64, plan.count,
+              plan.window->i0, plan.window->i0 + plan.window->ni - 1,
+              plan.window->j0, plan.window->j0 + plan.window->nj - 1,
+              plan.total);
+  else if (plan.count > 0)
     snprintf (rep->end, sizeof rep->end, "complete: %" PRIu64 " points, k = "
               "%" PRIu64 " .. %" PRIu64 " of %" PRIu64, plan.count,
               plan.first, plan.first + plan.count - 1, plan.total);

@@ -1160,11 +1160,14 @@ check_options (const scene *sc, const chaplygin_run_options *opt,
       && (opt->nshards < 1 || opt->shard < 0 || opt->shard >= opt->nshards))
     return report_fail (rep, CHAPLYGIN_SCENE_EINVAL, "shard %d/%d: need 0 <= "
                         "i < N", opt->shard, opt->nshards);
+  if (opt->window && (sc->sweep == SWEEP_NONE || opt->nshards > 1))
+    return report_fail (rep, CHAPLYGIN_SCENE_EINVAL, "%s: a window is a "
+                        "rectangle of a sweep, without shards", sc->name);
   return CHAPLYGIN_SCENE_OK;
 }
 
 static const chaplygin_run_options plain_run = { 0, 0, 1, 0, NULL, NULL,
-                                                 NULL, NULL, NULL };
+                                                 NULL, NULL, NULL, NULL };
 
 int
 chaplygin_scene_columns (const chaplygin_scene *sc,

@@ -111,7 +111,7 @@ static const char *const section_keys[SEC_COUNT] = {
   "V, Omega, theta",
   "collisions, duration, samples, outputs, method, tolerance, every, "
   "stop_fate, stop_H, stop_tau, max_rows",
-  "kind, x_min, x_max, nx, y_min, y_max, ny, y, dir",
+  "kind, x, x_min, x_max, nx, y, y_min, y_max, ny, dir",
   "view"
 };
 
@@ -119,7 +119,11 @@ static const char *const model_names[] = { "discrete", "smooth", "massless" };
 static const char *const method_names[] =
   { "closed-form", "quadrature", "ode", "certified" };
 static const char *const kind_names[] =
-  { "none", "sigma4", "stability", "basins" };
+  { "none", "sigma4", "stability", "basins", "atlas" };
+/* The quantities of an atlas (atlas_axis), as its x and y keys name
+   them and its columns are headed. */
+static const char *const axis_names[ATLAS_AXES] =
+  { "L0", "Delta", "V", "Omega" };
 static const char *const yes_no[] = { "no", "yes" };
 static const char *const view_names[] = { "panels", "phase-space" };
 
@@ -145,7 +149,6 @@ typedef enum
   V_REAL,       /* any finite number */
   V_POSITIVE,   /* > 0 */
   V_INTERVAL,   /* lo < x <= hi, or lo <= x < hi (closed_lo) */
-  V_NONNEG,     /* >= 0: a value of y = (1/Delta)^2 */
   V_INTEGER,    /* an integer lo..hi into the long at field */
   V_OUTPUTS,    /* the outputs list */
   V_YLIST,      /* the y list */
@@ -154,14 +157,16 @@ typedef enum
 
 /* How a scene uses a key (use_rule): not, optional, required; required
    with compare = smooth (else not); optional unless the method is
-   closed-form (then not). */
+   closed-form (then not); in an atlas, required unless x or y sweeps
+   the key's quantity (then not). */
 enum use_rule
 {
   N = 0,
   O = 1,
   R = 2,
   C = 3,
-  T = 4
+  T = 4,
+  S = 5
 };
 
 enum key_use
@@ -187,67 +192,71 @@ typedef struct
      the key is not used (NULL: "required by ..." or optional). */
   unsigned char use[3];
   const char *why[3];
-  /* Use in a sweep: by kind sigma4, stability, basins; why not (NULL:
-     "not used by a KIND sweep"). */
-  unsigned char sweep_use[3];
-  const char *sweep_why[3];
+  /* Use in a sweep: by kind sigma4, stability, basins, atlas; why not
+     (NULL: "not used by a KIND sweep"). */
+  unsigned char sweep_use[SWEEP_KINDS];
+  const char *sweep_why[SWEEP_KINDS];
 } key_spec;
 
 #define F(member) offsetof (scene, member)
 #define WORDS(w, base, text) w, (int) (sizeof w / sizeof w[0]) - (base), \
     base, text
 #define NOWORDS NULL, 0, 0, NULL
-#define NOT_SWEPT { N, N, N }, { NULL, NULL, NULL }
+#define NOT_SWEPT { N, N, N, N }, { NULL, NULL, NULL, NULL }
 #define SWEEP_ONLY { N, N, N }, { "only in a sweep (kind is missing)", \
       "only in a sweep (kind is missing)", \
       "only in a sweep (kind is missing)" }
+#define ALL_SWEEPS(rule) { rule, rule, rule, rule }, { NULL, NULL, NULL, NULL }
 #define SMOOTH_RUNS "not used by model smooth (it runs for a duration, in " \
   "samples)"
 
 static const key_spec keys[K_COUNT] = {
   [K_MODEL] = { SEC_SCENE, "model", V_WORD, F (model),
                 WORDS (model_names, 0, "discrete, smooth, massless"), 0, 0,
-                0, { R, R, R }, { NULL, NULL, NULL }, { R, R, R },
-                { NULL, NULL, NULL } },
+                0, { R, R, R }, { NULL, NULL, NULL }, ALL_SWEEPS (R) },
   [K_COMPARE] = { SEC_SCENE, "compare", V_COMPARE, F (compare), NOWORDS, 0,
                   0, 0, { O, N, N },
                   { NULL, "only with model discrete (model is smooth)",
                     "only with model discrete (model is massless)" },
                   NOT_SWEPT },
   [K_TITLE] = { SEC_SCENE, "title", V_TITLE, F (title), NOWORDS, 0, 0, 0,
-                { O, O, O }, { NULL, NULL, NULL }, { O, O, O },
-                { NULL, NULL, NULL } },
+                { O, O, O }, { NULL, NULL, NULL }, ALL_SWEEPS (O) },
   [K_L0] = { SEC_PARAMETERS, "L0", V_REAL, F (L0), NOWORDS, 0, 0, 0,
              { R, N, R },
              { NULL, "not a parameter of model smooth (it has L)", NULL },
-             { N, N, R }, { NULL, NULL, NULL } },
+             { N, N, R, S }, { NULL, NULL, NULL, "not used by this atlas (x "
+                               "or y sweeps L0)" } },
   [K_DELTA] = { SEC_PARAMETERS, "Delta", V_POSITIVE, F (Delta), NOWORDS, 0,
                 0, 0, { R, N, N },
                 { NULL, "not a parameter of model smooth",
                   "not a parameter of model massless (lengths are in units "
-                  "of the slot length)" }, { N, N, R },
-                { NULL, NULL, NULL } },
+                  "of the slot length)" }, { N, N, R, S },
+                { NULL, NULL, NULL, "not used by this atlas (x or y sweeps "
+                  "Delta)" } },
   [K_L] = { SEC_PARAMETERS, "L", V_REAL, F (L), NOWORDS, 0, 0, 0,
             { C, R, N },
             { "not a parameter of model discrete (only with compare = "
               "smooth)", NULL, "not a parameter of model massless" },
             NOT_SWEPT },
   [K_V] = { SEC_INITIAL, "V", V_REAL, F (V), NOWORDS, 0, 0, 0, { R, R, R },
-            { NULL, NULL, NULL }, { N, N, N },
-            { NULL, NULL, "not used by a basins sweep (x is the initial V)" } },
+            { NULL, NULL, NULL }, { N, N, N, S },
+            { NULL, NULL, "not used by a basins sweep (x is the initial V)",
+              "not used by this atlas (x or y sweeps V)" } },
   [K_OMEGA] = { SEC_INITIAL, "Omega", V_REAL, F (Omega), NOWORDS, 0, 0, 0,
-                { R, R, R }, { NULL, NULL, NULL }, { N, N, R },
-                { NULL, NULL, NULL } },
+                { R, R, R }, { NULL, NULL, NULL }, { N, N, R, S },
+                { NULL, NULL, NULL, "not used by this atlas (x or y sweeps "
+                  "Omega)" } },
   [K_THETA] = { SEC_INITIAL, "theta", V_REAL, F (theta), NOWORDS, 0, 0, 0,
-                { O, O, O }, { NULL, NULL, NULL }, { N, N, N },
+                { O, O, O }, { NULL, NULL, NULL }, { N, N, N, N },
                 { NULL, NULL, "not used by a basins sweep (the initial theta "
+                  "is 0)", "not used by an atlas sweep (the initial theta "
                   "is 0)" } },
   [K_COLLISIONS] = { SEC_RUN, "collisions", V_INTEGER, F (collisions),
                      NOWORDS, 0, (double) SCENE_COLLISIONS_MAX, 0,
                      { R, N, R },
                      { NULL, "not used by model smooth (it runs for a "
-                       "duration)", NULL }, { N, N, R },
-                     { NULL, NULL, NULL } },
+                       "duration)", NULL }, { N, N, R, R },
+                     { NULL, NULL, NULL, NULL } },
   [K_DURATION] = { SEC_RUN, "duration", V_INTERVAL, F (duration), NULL, 0,
                    0, "(0 < duration <= 1e9)", 0, 1e9, 0, { C, R, N },
                    { "not used by model discrete (only with compare = "
@@ -261,8 +270,7 @@ static const key_spec keys[K_COUNT] = {
   [K_METHOD] = { SEC_RUN, "method", V_WORD, F (method),
                  WORDS (method_names, 0,
                         "closed-form, quadrature, ode, certified"), 0,
-                 0, 0, { O, O, O }, { NULL, NULL, NULL }, { O, O, O },
-                 { NULL, NULL, NULL } },
+                 0, 0, { O, O, O }, { NULL, NULL, NULL }, ALL_SWEEPS (O) },
   [K_TOLERANCE] = { SEC_RUN, "tolerance", V_INTERVAL, F (tolerance), NULL,
                     0, 0, "(1e-15 <= tolerance < 1)", 1e-15, 1.0, 1,
                     { T, T, T }, { NULL, NULL, NULL }, NOT_SWEPT },
@@ -281,46 +289,62 @@ static const key_spec keys[K_COUNT] = {
                    NOT_SWEPT },
   [K_MAX_ROWS] = { SEC_RUN, "max_rows", V_INTEGER, F (max_rows), NOWORDS, 1,
                    (double) SCENE_MAX_ROWS_MAX, 0, { O, O, O },
-                   { NULL, NULL, NULL }, { O, O, O }, { NULL, NULL, NULL } },
+                   { NULL, NULL, NULL }, ALL_SWEEPS (O) },
   [K_KIND] = { SEC_SWEEP, "kind", V_WORD, F (sweep),
-               WORDS (kind_names, 1, "sigma4, stability, basins"), 0, 0, 0,
-               SWEEP_ONLY, { R, R, R }, { NULL, NULL, NULL } },
+               WORDS (kind_names, 1, "sigma4, stability, basins, atlas"), 0,
+               0, 0, SWEEP_ONLY, ALL_SWEEPS (R) },
+  [K_X] = { SEC_SWEEP, "x", V_WORD, F (x_axis),
+            WORDS (axis_names, 0, "L0, Delta, V, Omega"), 0, 0, 0,
+            SWEEP_ONLY, { N, N, N, R },
+            { "not used by a sigma4 sweep (x is L0/Delta)",
+              "not used by a stability sweep (x is L0/Delta)",
+              "not used by a basins sweep (x is the initial V)", NULL } },
   [K_X_MIN] = { SEC_SWEEP, "x_min", V_REAL, F (x_min), NOWORDS, 0, 0, 0,
-                SWEEP_ONLY, { R, R, R }, { NULL, NULL, NULL } },
+                SWEEP_ONLY, ALL_SWEEPS (R) },
   [K_X_MAX] = { SEC_SWEEP, "x_max", V_REAL, F (x_max), NOWORDS, 0, 0, 0,
-                SWEEP_ONLY, { R, R, R }, { NULL, NULL, NULL } },
+                SWEEP_ONLY, ALL_SWEEPS (R) },
   [K_NX] = { SEC_SWEEP, "nx", V_INTEGER, F (nx), NOWORDS, 1, 1e7, 0,
-             SWEEP_ONLY, { R, R, R }, { NULL, NULL, NULL } },
-  [K_Y_MIN] = { SEC_SWEEP, "y_min", V_NONNEG, F (y_min), NOWORDS, 0, 0, 0,
-                SWEEP_ONLY, { N, R, N }, { NULL, NULL, NULL } },
-  [K_Y_MAX] = { SEC_SWEEP, "y_max", V_NONNEG, F (y_max), NOWORDS, 0, 0, 0,
-                SWEEP_ONLY, { N, R, N }, { NULL, NULL, NULL } },
+             SWEEP_ONLY, ALL_SWEEPS (R) },
+  [K_Y_MIN] = { SEC_SWEEP, "y_min", V_REAL, F (y_min), NOWORDS, 0, 0, 0,
+                SWEEP_ONLY, { N, R, N, R }, { NULL, NULL, NULL, NULL } },
+  [K_Y_MAX] = { SEC_SWEEP, "y_max", V_REAL, F (y_max), NOWORDS, 0, 0, 0,
+                SWEEP_ONLY, { N, R, N, R }, { NULL, NULL, NULL, NULL } },
   [K_NY] = { SEC_SWEEP, "ny", V_INTEGER, F (ny), NOWORDS, 1, 1e7, 0,
-             SWEEP_ONLY, { N, R, N }, { NULL, NULL, NULL } },
+             SWEEP_ONLY, { N, R, N, R }, { NULL, NULL, NULL, NULL } },
   [K_Y] = { SEC_SWEEP, "y", V_YLIST, F (y), NOWORDS, 0, 0, 0, SWEEP_ONLY,
-            { R, N, N }, { NULL, NULL, NULL } },
+            { R, N, N, R }, { NULL, NULL, NULL, NULL } },
   [K_DIR] = { SEC_SWEEP, "dir", V_DIR, F (dir), NOWORDS, 0, 0, 0, SWEEP_ONLY,
-              { R, N, N }, { NULL, NULL, NULL } },
+              { R, N, N, N }, { NULL, NULL, NULL, NULL } },
   [K_VIEW] = { SEC_PLOT, "view", V_WORD, F (view),
                WORDS (view_names, 0, "panels, phase-space"), 0, 0, 0,
-               { O, O, O }, { NULL, NULL, NULL }, { N, N, N },
+               { O, O, O }, { NULL, NULL, NULL }, { N, N, N, N },
                { "not used by a sweep (it has one view)",
+                 "not used by a sweep (it has one view)",
                  "not used by a sweep (it has one view)",
                  "not used by a sweep (it has one view)" } }
 };
+
+/* Whether the x or y of the atlas SC sweeps the quantity of key K. */
+static int
+atlas_sweeps (const scene *sc, int k)
+{
+  static const int axis_key[ATLAS_AXES] = { K_L0, K_DELTA, K_V, K_OMEGA };
+  return (sc->x_axis != AXIS_NONE && axis_key[sc->x_axis] == k)
+    || (sc->y_axis != AXIS_NONE && axis_key[sc->y_axis] == k);
+}
 
 /* How the scene SC uses key K; *WHY receives why it is not used or what
    requires it. */
 static enum key_use
 key_use (const scene *sc, int k, const char **why)
 {
-  static const char *const sweep_required[] = {
+  static const char *const sweep_required[SWEEP_KINDS] = {
     "required by a sigma4 sweep", "required by a stability sweep",
-    "required by a basins sweep"
+    "required by a basins sweep", "required by an atlas sweep"
   };
-  static const char *const sweep_not[] = {
+  static const char *const sweep_not[SWEEP_KINDS] = {
     "not used by a sigma4 sweep", "not used by a stability sweep",
-    "not used by a basins sweep"
+    "not used by a basins sweep", "not used by an atlas sweep"
   };
   static const char *const model_required[] = {
     "required by model discrete", "required by model smooth",
@@ -336,6 +360,8 @@ key_use (const scene *sc, int k, const char **why)
       int i = (int) sc->sweep - 1;
       rule = ks->sweep_use[i];
       special = ks->sweep_why[i];
+      if (rule == S)
+        rule = atlas_sweeps (sc, k) ? N : R;
       *why = rule == R ? sweep_required[i] : rule == O ? ""
         : special ? special : sweep_not[i];
     }
@@ -652,7 +678,8 @@ read_outputs (parse_ctx *c, const char *value, unsigned *outputs_out)
   return 0;
 }
 
-/* The y list VALUE into c->sc.y, c->sc.n_y. */
+/* The y list VALUE into c->sc.y, c->sc.n_y; or, where VALUE is the name
+   of a quantity (an atlas's y), that quantity into c->sc.y_axis. */
 static int
 read_y_list (parse_ctx *c, const char *value)
 {
@@ -660,7 +687,12 @@ read_y_list (parse_ctx *c, const char *value)
   const char *pos = value;
   size_t n = 0;
   double y;
-  int r;
+  int r = find_word (value, axis_names, ATLAS_AXES);
+
+  c->sc.y_axis = r >= 0 ? (atlas_axis) r : AXIS_NONE;
+  c->sc.n_y = 0;
+  if (r >= 0)
+    return 0;
 
   while (next_item (&pos, item, sizeof item) == 0)
     {
@@ -717,7 +749,7 @@ read_title (parse_ctx *c, int k, const char *value)
   return 0;
 }
 
-/* A real of key K (kind V_POSITIVE, V_INTERVAL, V_NONNEG or V_REAL) from
+/* A real of key K (kind V_POSITIVE, V_INTERVAL or V_REAL) from
    VALUE, within its range, into *X. */
 static int
 read_ranged (parse_ctx *c, int k, const char *value, double *x)
@@ -736,9 +768,6 @@ read_ranged (parse_ctx *c, int k, const char *value, double *x)
                 && (ks->closed_lo ? v < ks->hi : v <= ks->hi)))
     fail_key (c, k, c->lineno, "value '%s' is out of range %s",
               shown (buf, sizeof buf, value), ks->list);
-  else if (ks->kind == V_NONNEG && v < 0)
-    fail_key (c, k, c->lineno, "value '%s' is negative "
-              "(y = (1/Delta)^2 >= 0)", shown (buf, sizeof buf, value));
   else
     {
       *x = v;
@@ -789,7 +818,6 @@ read_value (parse_ctx *c, int k, const char *value)
     case V_REAL:
     case V_POSITIVE:
     case V_INTERVAL:
-    case V_NONNEG:
       return read_ranged (c, k, value, (double *) (void *) field);
     case V_INTEGER:
       return read_integer (c, k, value, (long) ks->lo, (long) ks->hi,
@@ -1030,6 +1058,20 @@ last_of_pair (const parse_ctx *c, int k, int a, int b)
   return c->order_of[a] && c->order_of[b] && k == later_key (c, a, b);
 }
 
+/* The checks of an atlas's key K (x or y, given, at LINE): y is a name,
+   the two names differ. */
+static void
+check_atlas_axis (parse_ctx *c, int k, long line)
+{
+  const scene *sc = &c->sc;
+  if (k == K_Y && sc->y_axis == AXIS_NONE)
+    fail_key (c, k, line, "value '" RAW_FMT "': an atlas's y is the name "
+              "of the quantity it sweeps (L0, Delta, V, Omega)", RAW (c, k));
+  else if (last_of_pair (c, k, K_X, K_Y) && sc->x_axis == sc->y_axis)
+    fail_key (c, k, line, "x and y are both %s (an atlas sweeps two "
+              "different quantities)", axis_names[sc->x_axis]);
+}
+
 /* The checks of key K (given, at its line) that need the whole scene. */
 /* method = certified: what this build and the certified method cover (a
    discrete run with per-collision or dense rows, where stop_H and stop_tau
@@ -1067,11 +1109,13 @@ check_key (parse_ctx *c, int k)
               "closed-form", RAW (c, k), model_names[sc->model]);
   else if (k == K_METHOD && sc->method == CHAPLYGIN_CERTIFIED)
     check_certified (c, k, line);
-  else if (k == K_METHOD && sc->sweep == SWEEP_BASINS
+  else if (k == K_METHOD && (sc->sweep == SWEEP_BASINS
+                             || sc->sweep == SWEEP_ATLAS)
            && sc->method != CHAPLYGIN_CLOSED_FORM)
-    fail_key (c, k, line, "value '" RAW_FMT "': a basins sweep iterates "
+    fail_key (c, k, line, "value '" RAW_FMT "': a%s sweep iterates "
               "the (E, H) map, with no integral: method closed-form (the "
-              "default) or certified", RAW (c, k));
+              "default) or certified", RAW (c, k),
+              sc->sweep == SWEEP_BASINS ? " basins" : "n atlas");
   else if (k == K_METHOD && sc->sweep != SWEEP_NONE
            && sc->method != CHAPLYGIN_CLOSED_FORM)
     fail_key (c, k, line, "value '" RAW_FMT "': a %s sweep evaluates "
@@ -1096,14 +1140,29 @@ check_key (parse_ctx *c, int k)
            && !(sc->x_min < sc->x_max))
     fail_key (c, k, line, "x_min = " RAW_FMT " is not less than x_max = "
               RAW_FMT, RAW (c, K_X_MIN), RAW (c, K_X_MAX));
+  else if ((k == K_Y_MIN || k == K_Y_MAX) && sc->sweep == SWEEP_STABILITY
+           && (k == K_Y_MIN ? sc->y_min : sc->y_max) < 0)
+    fail_key (c, k, line, "value '" RAW_FMT "' is negative "
+              "(y = (1/Delta)^2 >= 0)", RAW (c, k));
   else if ((k == K_Y_MIN || k == K_Y_MAX)
            && last_of_pair (c, k, K_Y_MIN, K_Y_MAX)
            && !(sc->y_min <= sc->y_max))
     fail_key (c, k, line, "y_min = " RAW_FMT " is greater than y_max = "
               RAW_FMT, RAW (c, K_Y_MIN), RAW (c, K_Y_MAX));
+  else if (sc->sweep == SWEEP_ATLAS && (k == K_X || k == K_Y))
+    check_atlas_axis (c, k, line);
+  else if (sc->sweep == SWEEP_SIGMA4 && k == K_Y && sc->y_axis != AXIS_NONE)
+    fail_key (c, k, line, "value '" RAW_FMT "': a sigma4 sweep's y is a "
+              "list of values of (1/Delta)^2 >= 0", RAW (c, k));
+  else if (sc->sweep == SWEEP_ATLAS && (k == K_X_MIN || k == K_Y_MIN)
+           && (k == K_X_MIN ? sc->x_axis : sc->y_axis) == AXIS_DELTA
+           && !((k == K_X_MIN ? sc->x_min : sc->y_min) > 0))
+    fail_key (c, k, line, "value '" RAW_FMT "' is not > 0 (%s = Delta, the "
+              "slot length)", RAW (c, k), k == K_X_MIN ? "x" : "y");
   else if (k == K_NX || k == K_NY || k == K_Y)
     {
-      /* The points of the grid: nx ny (stability), nx n_y (sigma4). */
+      /* The points of the grid: nx ny (stability, atlas), nx n_y
+         (sigma4). */
       int sigma4 = sc->sweep == SWEEP_SIGMA4;
       int other = sigma4 ? K_Y : K_NY;
       long n_other = sigma4 ? (long) sc->n_y : sc->ny;
@@ -1190,6 +1249,7 @@ scene_defaults (scene *sc)
   sc->sweep = SWEEP_NONE;
   sc->x_min = sc->x_max = sc->y_min = sc->y_max = NAN;
   sc->nx = sc->ny = -1;
+  sc->x_axis = sc->y_axis = AXIS_NONE;
   sc->view = PLOT_PANELS;
 }
 
@@ -1481,7 +1541,6 @@ scene_value_text (const scene *sc, int k, char *buf, size_t size)
     case V_REAL:
     case V_POSITIVE:
     case V_INTERVAL:
-    case V_NONNEG:
       {
         double x;
         memcpy (&x, field, sizeof x);
@@ -1519,6 +1578,8 @@ scene_value_text (const scene *sc, int k, char *buf, size_t size)
     case V_YLIST:
       if (sc->as_given && sc->text[k][0])
         return sc->text[k];
+      if (sc->y_axis != AXIS_NONE)
+        return axis_names[sc->y_axis];
       buf[0] = '\0';
       for (size_t i = 0; i < sc->n_y; i++)
         {
@@ -1575,7 +1636,6 @@ chaplygin_scene_number (const chaplygin_scene *sc, const char *key,
     case V_REAL:
     case V_POSITIVE:
     case V_INTERVAL:
-    case V_NONNEG:
       memcpy (&v, field, sizeof v);
       break;
     case V_INTEGER:

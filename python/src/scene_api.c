@@ -146,7 +146,7 @@ chp_py_scene_run (const char *path, size_t n, const char *const *section,
   r = path ? chaplygin_scene_read_file (sc, path, rep)
     : chaplygin_scene_read_pairs (sc, n, section, key, value, name, rep);
   chaplygin_run_options run = { compare, 0, 1, 0, NULL, take_row,
-                                poll_progress, t, NULL };
+                                poll_progress, t, NULL, NULL };
   if (r == CHAPLYGIN_SCENE_OK)
     r = chaplygin_scene_columns (sc, &run, t->col, CHAPLYGIN_COLUMNS_MAX,
                                  &t->ncols);
