@@ -15,7 +15,8 @@ PY_PACKAGE = python/chaplygin/__init__.py python/chaplygin/_core.py \
 	python/chaplygin/smooth.py python/chaplygin/massless.py \
 	python/chaplygin/printed.py python/chaplygin/sweep.py \
 	python/chaplygin/scene.py python/chaplygin/vectorised.py \
-	python/chaplygin/equation.py python/chaplygin/certified.py
+	python/chaplygin/equation.py python/chaplygin/certified.py \
+	python/chaplygin/dataset.py
 PY_TESTS = python/tests/conftest.py \
 	python/tests/test_reachable.py python/tests/test_values.py \
 	python/tests/test_eq.py python/tests/test_errors.py \
@@ -25,15 +26,15 @@ PY_TESTS = python/tests/conftest.py \
 	python/tests/test_equation.py python/tests/test_locale.py \
 	python/tests/test_interrupt.py python/tests/test_pickle.py \
 	python/tests/test_types.py python/tests/test_gen_write.py \
-	python/tests/test_certified.py
+	python/tests/test_certified.py python/tests/test_atlas.py
 PY_GENERATED = python/gen/module.c python/gen/vec.c python/gen/vec.h \
 	python/chaplygin/_generated.py
 EXTRA_DIST += python/gen.py python/README $(PY_PACKAGE) \
 	$(PY_TESTS) \
 	python/tests/run-pytest.in python/tests/cvalues.c \
 	python/src/chp_python.h python/src/orbit.c python/src/basins.c \
-	python/src/scene_api.c python/src/poll.h python/src/poll.c \
-	python/bench/bench.py python/bench/cbench.c \
+	python/src/scene_api.c python/src/atlas.c python/src/poll.h \
+	python/src/poll.c python/bench/bench.py python/bench/cbench.c \
 	python/examples/fig2a.py python/examples/fig3.py
 
 if ENABLE_PYTHON
@@ -66,8 +67,8 @@ python_chaplygin__chaplygin_cffi_la_LIBADD = python/libchp-py.la \
 # public header), and the poll of every loop (Ctrl-C).
 noinst_LTLIBRARIES += python/libchp-py.la
 python_libchp_py_la_SOURCES = python/src/chp_python.h python/src/orbit.c \
-	python/src/basins.c python/src/scene_api.c python/src/poll.h \
-	python/src/poll.c
+	python/src/basins.c python/src/scene_api.c python/src/atlas.c \
+	python/src/poll.h python/src/poll.c
 nodist_python_libchp_py_la_SOURCES = python/gen/vec.c python/gen/vec.h
 python_libchp_py_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/python/src \
 	-I$(srcdir)/lib/scene -Ipython/gen

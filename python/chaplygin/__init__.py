@@ -26,7 +26,8 @@ loop runs in C over their broadcast (chaplygin.vectorised says how, and
 what happens to failing elements).  discrete.orbit and massless.orbit
 iterate the return map along many orbits, discrete.fate / fate_phase /
 basins classify final motions, sweep.sigma4 / sweep.stability are the
-sweeps of Fig. 2, and run_scene runs a scene file (or a dict with the same
+sweeps of Fig. 2, atlas computes a fate atlas as an xarray.Dataset (on a
+Dask cluster with chunks), and run_scene runs a scene file (or a dict with the same
 sections and keys) as `chaplygin run` does and returns its columns, and
 eq evaluates any of the paper's numbered equations by label as `chaplygin
 eq` does (labels lists them).  CertifiedOrbit follows an orbit by the
@@ -76,6 +77,7 @@ from .certified import (CertifiedOrbit, certified_orbit_new,
                         certified_orbit_collisions, certified_orbit_free,
                         method_available)
 from .scene import run_scene
+from .dataset import atlas
 from .equation import eq, labels
 from .sweep import grid_point
 

@@ -33,7 +33,19 @@
    it with chp_py_table_free.  Returns the engine's status (REP has the
    report).  chp_py_table_*: its columns (name, kind), rows, and column J's
    arrays: x (REAL) or n (INTEGER, STATUS), e (NULL while every e is 0: a
-   real is x 2^e) and missing. */
+   real is x 2^e) and missing.
+   chp_py_atlas_window: the window (chaplygin_sweep_window) I0 + NI rows
+   by J0 + NJ columns of the atlas SC (kind = atlas), run by the scene
+   engine with THREADS threads (0: OpenMP's default), each point's fate
+   cells into ARRAYS at its place in the window (row-major, NI NJ points):
+   fate CHP_PY_ATLAS_NO_FATE and collisions, reversals -1, E_final,
+   V_final NaN where the status is not SUCCESS; E_final, V_final beyond
+   the doubles (a velocity-scaled point) rounded, with beyond = 1.  Returns
+   the engine's status (EINVAL, said in REP, for a scene that is not an
+   atlas).
+   chp_py_grid_fill: chaplygin_grid_point (LO, HI, N, i) into OUT[i].
+   chp_py_scene_write_text: chaplygin_scene_write of SC into BUF (SIZE
+   bytes): its length, or -1 (BUF too small, or a failure). */
 #ifndef CHP_PYTHON_H
 #define CHP_PYTHON_H
 
@@ -83,4 +95,23 @@ void chp_py_table_data (const chp_py_table *t, size_t j, double **x,
                         long long **n, int **e, unsigned char **missing);
 
 
+typedef struct
+{
+  signed char *fate;
+  long long *collisions, *reversals;
+  double *E_final, *V_final;
+  int *status;
+  int beyond;
+} chp_py_atlas_arrays;
+enum
+{
+  CHP_PY_ATLAS_NO_FATE = -128
+};
+int chp_py_atlas_window (const chaplygin_scene *sc, size_t i0, size_t ni,
+                         size_t j0, size_t nj, int threads,
+                         chp_py_atlas_arrays *arrays,
+                         chaplygin_scene_report *rep, int (*poll) (void));
+int chp_py_grid_fill (double lo, double hi, size_t n, double *out);
+long chp_py_scene_write_text (const chaplygin_scene *sc, char *buf,
+                              size_t size);
 #endif

@@ -140,6 +140,8 @@ EXEMPT = {
     'scene.run_scene': 'scene values are text by design (the file\'s); '
                        'test_scene checks its TypeErrors',
     'scene.to_ini': 'as run_scene',
+    'dataset.atlas': 'a scene, as run_scene; test_atlas checks its '
+                     'TypeError and ValueErrors (threads, chunks)',
     'equation.eq': 'inputs are numbers or text by design; test_equation '
                    'checks None and bool',
     'equation.labels': 'no parameters',
