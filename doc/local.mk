@@ -2,7 +2,7 @@
 info_TEXINFOS = doc/chaplygin.texi
 doc_chaplygin_TEXINFOS = doc/notation.texi doc/conventions.texi \
 	doc/methods.texi doc/concordance.texi doc/errata.texi \
-	doc/accuracy.texi doc/figures.texi \
+	doc/accuracy.texi doc/figures.texi doc/atlas.texi \
 	doc/bench.texi doc/bench-table.texi doc/python.texi $(GENERATED_TEXINFOS)
 
 # Images are named by their file name alone (@image{fig6,...}) and found

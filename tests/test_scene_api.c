@@ -516,7 +516,7 @@ START_TEST (set_key)
   ck_assert (tol == lib.tol);
   ck_assert_int_eq (chaplygin_scene_key_use (sc, "L0"), 2);
   ck_assert_int_eq (chaplygin_scene_key_use (sc, "view"), 1);
-  ck_assert_int_eq (chaplygin_scene_key_use (sc, "x"), -1);
+  ck_assert_int_eq (chaplygin_scene_key_use (sc, "x_axis"), -1);
   /* the key table */
   size_t n = chaplygin_scene_key_count ();
   ck_assert (n >= 30 && chaplygin_scene_key_name (n) == NULL);
@@ -1005,6 +1005,111 @@ START_TEST (far_slow_start)
 }
 END_TEST
 
+/* SC run with the window W (NULL: none) and the shard S of N into K: the
+   status. */
+static int
+run_window (const chaplygin_scene *sc, const chaplygin_sweep_window *w,
+            int s, int n, rows_kept *k, chaplygin_scene_report *rep)
+{
+  chaplygin_run_options opt = { 0, s, n, 0, NULL, keep_row, NULL, k, NULL,
+                                w };
+  memset (k, 0, sizeof *k);
+  return chaplygin_scene_run (sc, &opt, rep);
+}
+
+/* A window of a sweep's grid gives the rows of the whole sweep at its
+   points, in the order of k, k included (an atlas of 9 x 7 points, a
+   sigma4 sweep over a y list, a basins sweep of one row); a window outside
+   the grid, with shards or of a run is refused. */
+START_TEST (sweep_windows)
+{
+  static rows_kept all, part;
+  chaplygin_scene_report rep;
+  const char *scenes[] = {
+    "[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n"
+    "[run]\ncollisions = 1000\n[sweep]\nkind = atlas\nx = V\n"
+    "x_min = -0.5\nx_max = 0.5\nnx = 9\ny = Omega\ny_min = 0.1\n"
+    "y_max = 2\nny = 7\n",
+    "[scene]\nmodel = discrete\n[sweep]\nkind = sigma4\nx_min = -4\n"
+    "x_max = 2\nnx = 16\ny = 0, 1/3, 1, 9\ndir = 1\n",
+    "[scene]\nmodel = discrete\n[parameters]\nL0 = -0.5\nDelta = 1\n"
+    "[initial]\nOmega = 0.8\n[run]\ncollisions = 1000\n[sweep]\n"
+    "kind = basins\nx_min = 0.01\nx_max = 0.5\nnx = 60\n",
+  };
+  const size_t nx[] = { 9, 16, 60 }, rows[] = { 7, 4, 1 };
+  const chaplygin_sweep_window win[][4] = {
+    { { 2, 3, 4, 5 }, { 0, 7, 0, 9 }, { 6, 1, 8, 1 }, { 3, 0, 2, 4 } },
+    { { 1, 2, 3, 10 }, { 0, 4, 15, 1 }, { 3, 1, 0, 16 }, { 0, 1, 0, 0 } },
+    { { 0, 1, 7, 40 }, { 0, 1, 0, 60 }, { 0, 1, 59, 1 }, { 0, 0, 0, 0 } },
+  };
+  for (size_t s = 0; s < 3; s++)
+    {
+      chaplygin_scene *sc = scene_of (scenes[s]);
+      ck_assert_int_eq (run_window (sc, NULL, 0, 1, &all, &rep), 0);
+      ck_assert_uint_eq (all.rows, nx[s] * rows[s]);
+      for (size_t w = 0; w < 4; w++)
+        {
+          const chaplygin_sweep_window *v = &win[s][w];
+          ck_assert_int_eq (run_window (sc, v, 0, 1, &part, &rep), 0);
+          ck_assert_uint_eq (part.rows, v->ni * v->nj);
+          for (size_t t = 0; t < part.rows; t++)
+            {
+              size_t k = (v->i0 + t / v->nj) * nx[s] + v->j0 + t % v->nj;
+              ck_assert_int_eq (part.cell[t][0].n, (long long) k);
+              ck_assert (memcmp (part.cell[t], all.cell[k],
+                                 all.ncols * sizeof all.cell[k][0]) == 0);
+            }
+          if (part.rows > 0)
+            {
+              char end[128];
+              snprintf (end, sizeof end, "complete: %zu points, rows %zu .. "
+                        "%zu, columns %zu .. %zu of %zu", part.rows, v->i0,
+                        v->i0 + v->ni - 1, v->j0, v->j0 + v->nj - 1,
+                        nx[s] * rows[s]);
+              ck_assert_str_eq (rep.end, end);
+            }
+        }
+      /* outside the grid, by one row or one column, or overflowing */
+      const chaplygin_sweep_window out[] = {
+        { rows[s], 1, 0, 1 }, { 0, rows[s] + 1, 0, 1 }, { 0, 1, nx[s], 1 },
+        { 0, 1, 1, nx[s] }, { (size_t) -1, 2, 0, 1 }, { 0, 1, 2,
+                                                         (size_t) -1 }
+      };
+      for (size_t w = 0; w < sizeof out / sizeof *out; w++)
+        {
+          ck_assert_int_eq (run_window (sc, &out[w], 0, 1, &part, &rep),
+                            CHAPLYGIN_SCENE_EINVAL);
+          ck_assert (strstr (rep.message, "outside the grid") != NULL);
+          ck_assert_uint_eq (part.rows, 0);
+        }
+      ck_assert_int_eq (run_window (sc, &win[s][0], 1, 2, &part, &rep),
+                        CHAPLYGIN_SCENE_EINVAL);
+      ck_assert (strstr (rep.message, "without shards") != NULL);
+      chaplygin_scene_free (sc);
+    }
+  /* a run has no grid; the row limit applies to the window */
+  chaplygin_scene *run = scene_of (FIG6);
+  ck_assert_int_eq (run_window (run, &win[0][0], 0, 1, &part, &rep),
+                    CHAPLYGIN_SCENE_EINVAL);
+  chaplygin_scene_free (run);
+  chaplygin_scene *atlas = scene_of ("[scene]\nmodel = discrete\n"
+                                     "[parameters]\nL0 = -0.5\nDelta = 1\n"
+                                     "[run]\ncollisions = 10\nmax_rows = 15"
+                                     "\n[sweep]\nkind = atlas\nx = V\n"
+                                     "x_min = 0.1\nx_max = 0.5\nnx = 9\n"
+                                     "y = Omega\ny_min = 0.1\ny_max = 2\n"
+                                     "ny = 7\n");
+  ck_assert_int_eq (run_window (atlas, NULL, 0, 1, &part, &rep),
+                    CHAPLYGIN_SCENE_ELIMIT);
+  ck_assert_int_eq (run_window (atlas, &win[0][0], 0, 1, &part, &rep), 0);
+  const chaplygin_sweep_window big = { 0, 2, 0, 8 };
+  ck_assert_int_eq (run_window (atlas, &big, 0, 1, &part, &rep),
+                    CHAPLYGIN_SCENE_ELIMIT);
+  ck_assert (strstr (rep.message, "the window") != NULL);
+  chaplygin_scene_free (atlas);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1025,5 +1130,6 @@ main (void)
   tu_add (s, "text_rows", text_rows);
   tu_add (s, "integer_cells", integer_cells);
   tu_add (s, "far_slow_start", far_slow_start);
+  tu_add (s, "sweep_windows", sweep_windows);
   return tu_run (s);
 }
