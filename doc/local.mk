@@ -15,6 +15,7 @@ MANUAL_FIGURES = doc/figures/fig2a.png doc/figures/fig2b.png \
 	doc/figures/fig3.png doc/figures/fig4.png doc/figures/fig5.png \
 	doc/figures/fig6.png doc/figures/fig7.png doc/figures/fig8.png \
 	doc/figures/fig9.png doc/figures/fig10.png \
+	doc/figures/atlas-omega.png doc/figures/atlas-bistable.png \
 	doc/figures/work-precision.png
 EXTRA_DIST += $(MANUAL_FIGURES) \
 	doc/man2texi.awk doc/check-html.pl doc/check-html.sh doc/hdr2texi.pl

@@ -40,12 +40,13 @@ echo "1..$((n + 1))"
 
 i=0
 missing=""
-for f in example fig2a fig2b fig3 fig4 fig5 fig6 fig7 fig8 fig9 fig10; do
+for f in example fig2a fig2b fig3 fig4 fig5 fig6 fig7 fig8 fig9 fig10 \
+    atlas-omega atlas-bistable; do
   test -r "$destdir$datadir/scenes/$f.ini" || missing="$missing $f.ini"
 done
 i=$((i + 1))
 if test -z "$missing"; then
-  echo "ok $i - the 11 scenes are installed in $datadir/scenes"
+  echo "ok $i - the 13 scenes are installed in $datadir/scenes"
 else
   echo "not ok $i - scenes missing from $datadir/scenes:$missing"
 fi

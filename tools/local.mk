@@ -80,7 +80,8 @@ CLEANFILES += fuzz-scene-libfuzzer
 # `make figures': every scene of scenes/ drawn by `chaplygin plot' into
 # doc/figures/ of the source tree (committed, so that the manual has them
 # without gnuplot).
-FIGURES = fig2a fig2b fig3 fig4 fig5 fig6 fig7 fig8 fig9 fig10
+FIGURES = fig2a fig2b fig3 fig4 fig5 fig6 fig7 fig8 fig9 fig10 atlas-omega \
+	atlas-bistable
 figures: tools/chaplygin
 	@for f in $(FIGURES); do \
 	  echo "  FIGURE   doc/figures/$$f.png"; \
@@ -94,4 +95,5 @@ figures: tools/chaplygin
 scenesdir = $(pkgdatadir)/scenes
 dist_scenes_DATA = scenes/example.ini scenes/fig2a.ini scenes/fig2b.ini \
 	scenes/fig3.ini scenes/fig4.ini scenes/fig5.ini scenes/fig6.ini \
-	scenes/fig7.ini scenes/fig8.ini scenes/fig9.ini scenes/fig10.ini
+	scenes/fig7.ini scenes/fig8.ini scenes/fig9.ini scenes/fig10.ini \
+	scenes/atlas-omega.ini scenes/atlas-bistable.ini
