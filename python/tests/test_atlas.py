@@ -220,3 +220,96 @@ def test_errors(tmp_path):
     assert same(c.atlas(SCENE), lazy.compute(scheduler='synchronous'))
     with pytest.raises(c.SceneError, match='max_rows = 100'):
         c.atlas(small, chunks=(10, 41)).compute(scheduler='synchronous')
+
+
+# ---------------------------------------------------------------------------
+# The science scenes of the manual (scenes/atlas-*.ini)
+
+def b13_fates(V, Omega, Delta=1.0):
+    """Fates of the symmetric skate L0 = -Delta/2 predicted by (B.13) (a
+    different route: the closed form of the sequence, not the iterated
+    map): above c_0 = V^2/Omega^2 of the n = 0 member forward, then
+    alternating between consecutive members (erratum E15)."""
+    members = []
+    n = 0
+    ratio = (np.asarray(V) / np.asarray(Omega)) ** 2
+    while True:
+        cn = c.discrete.spin_sequence(Delta, n)
+        members.append(cn)
+        if cn < ratio.min() / 4:
+            break
+        n += 1
+    above = (np.array(members) > ratio[..., None]).sum(axis=-1)
+    return np.where(above % 2 == 0, 1, -1), len(members)
+
+
+def test_similar_results_for_other_angular_velocities(srcdir):
+    """Figure 3's skate over (V+, Omega+): every one of the 160000 fates is
+    (B.13)'s (the basins are wedges V+/Omega+ between members): the
+    paper's 'similar results hold for different initial angular
+    velocities', exactly."""
+    ds = c.atlas(os.path.join(srcdir, 'scenes', 'atlas-omega.ini'))
+    V, Om = np.meshgrid(ds['V'].values, ds['Omega'].values)
+    pred, members = b13_fates(V, Om)
+    assert members > 10
+    assert (ds['status'] == c.SUCCESS).all()
+    assert np.array_equal(ds['fate'].values, pred)
+    # wedges through the origin: both fates along every row whose V+/Omega+
+    # reaches below c_0, and forward above it, V+/Omega+ > sqrt(5)/4 (the
+    # caption's 1/sqrt(5) at Omega+ = 4/5)
+    rows = ds['Omega'].values > 0.01
+    assert (np.diff(ds['fate'].values[rows], axis=1) != 0).any(axis=1).all()
+    assert (ds['fate'].values[V / Om > np.sqrt(5) / 4 * (1 + 1e-12)] == 1).all()
+
+
+def test_bistable_band(srcdir):
+    """Over (L0/Delta, V+) at Delta = 1, Omega+ = 4/5: the column L0 = -1/2
+    is Figure 3 ((B.13)); a motion with 2E/H^2 > 1 never reverses for
+    L0 >= -1/2, and does, ending backward, in a band of L0 < -1/2 (the
+    skate's r* > 1 there: erratum E14)."""
+    ds = c.atlas(os.path.join(srcdir, 'scenes', 'atlas-bistable.ini'))
+    L0, V = ds['L0'].values, ds['V'].values
+    fate, rev = ds['fate'].values, ds['reversals'].values
+    assert (ds['status'] == c.SUCCESS).all()
+    assert set(np.unique(fate)) == {-1, 1}
+    j = int(np.flatnonzero(L0 == -0.5)[0])
+    assert np.array_equal(fate[:, j], b13_fates(V, 0.8)[0])
+    n0 = 1 + L0[None, :] ** 2       # the peg at D = 0: l0 = L0
+    r = (V[:, None] ** 2 + n0 * 0.8 ** 2) / (n0 ** 2 * 0.8 ** 2)
+    e14 = (r > 1 + 1e-12) & (rev > 0)
+    assert not e14[:, L0 >= -0.5].any()
+    assert e14.sum() > 1000 and (fate[e14] == -1).all()
+    assert L0[e14.any(axis=0)].max() < -0.6
+
+
+def test_certified_decides_the_near_tie(srcdir, tmp_path):
+    """The one point of the bistable atlas the doubles cannot follow: L0 =
+    -3/4, V+ = 3/4, where 2E/H^2 = 1 but for the rounding of Omega+ = 0.8
+    (a hair above 4/5): its first segment reverses with V = 0 at l = 0
+    to within ~1e-17.  The certified method, on the one Dask chunk that
+    holds it, decides: one reversal, then backward with E_final the
+    nearest double to the exact value computed here in fractions."""
+    from fractions import Fraction as F
+    path = tmp_path / 'certified.ini'
+    text = open(os.path.join(srcdir, 'scenes', 'atlas-bistable.ini')).read()
+    path.write_text(text.replace('[run]\n', '[run]\nmethod = certified\n'))
+    lazy = c.atlas(str(path), chunks=(20, 20))
+    point = lazy.sel(L0=-0.75, V=0.75).compute(scheduler='synchronous')
+    closed = c.atlas(os.path.join(srcdir, 'scenes', 'atlas-bistable.ini')) \
+        .sel(L0=-0.75, V=0.75)
+    # exact: u = V^2 = 9/16, H = (1 + l0^2) Omega = 25/16 Omega; the
+    # reversal (B.4) keeps u and multiplies H by C2 = 13/25; the way back
+    # from l = 1/4 to -3/4 then passes for good, u_final = u + k H'^2
+    # with k = 400/969 (fate.c's k), E_final = u_final/2
+    Om = F(0.8)
+    assert Om > F(4, 5)
+    H1 = F(13, 25) * F(25, 16) * Om
+    E_final = (F(9, 16) + F(400, 969) * H1 ** 2) / 2
+    assert point['fate'].item() == -1
+    assert (point['collisions'].item(), point['reversals'].item()) == (1, 1)
+    assert point['E_final'].item() == float(E_final)
+    # the doubles end backward too, but after a detour (two collisions)
+    # and with another final energy
+    assert closed['fate'].item() == -1
+    assert closed['collisions'].item() == 2
+    assert abs(closed['E_final'].item() - float(E_final)) > 0.1
