@@ -109,7 +109,7 @@ static const char usage_text[] =
   "                stop_H = h (skates: end once |H| < h sqrt(2E)), stop_tau\n"
   "                = T (skates: end at the first collision with tau >= T),\n"
   "                max_rows = N (any scene; default 1e7)\n"
-  "  [sweep]       kind = sigma4 | stability | basins, and its grid\n"
+  "  [sweep]       kind = sigma4 | stability | basins | atlas, and its grid\n"
   "  [plot]        view = panels | phase-space (read by plot only)\n"
   "The first peg (the smooth skate's contact point C) is at the origin at\n"
   "tau = 0.  outputs is a comma-separated list of E, H, theta, tau, peg, V,\n"

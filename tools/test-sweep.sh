@@ -13,7 +13,7 @@ prog=${CHAPLYGIN:-${top_builddir:-.}/tools/chaplygin}
 unset CHAPLYGIN_NO_PROGRESS
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-sweep 34
+tap_start test-sweep 37
 
 # say TEXT: a diagnostic line (shown by the TAP driver).
 say () {
@@ -102,6 +102,29 @@ sed -e 's/^x_min = -1$/x_min = 1e200/' -e 's/^x_max = 2$/x_max = 2e200/' \
   -e 's/^nx = 101$/nx = 3/' "$tmp/basins.ini" >"$tmp/huge.ini"
 sed -e 's/^Omega = 0.8$/Omega = 1e-300/' "$tmp/huge.ini" >"$tmp/apart.ini"
 
+# An atlas over (L0, V+): a skate per point, the row V+ = 0 (i = 3 of
+# y's 7) ESTATE.
+cat >"$tmp/atlas.ini" <<'EOF'
+[scene]
+model = discrete
+[parameters]
+Delta = 1
+[initial]
+Omega = 0.8
+[run]
+collisions = 100000
+[sweep]
+kind = atlas
+x = L0
+x_min = -1.5
+x_max = 0.5
+nx = 21
+y = V
+y_min = -0.75
+y_max = 0.75
+ny = 7
+EOF
+
 cat >"$tmp/nosweep.ini" <<'EOF'
 [scene]
 model = discrete
@@ -133,7 +156,7 @@ concat_shards () {
   done
 }
 
-for kind in sigma4 stability basins; do
+for kind in sigma4 stability basins atlas; do
   ok=1
   if "$prog" sweep "$tmp/$kind.ini" --no-provenance >"$tmp/$kind.csv" \
        2>"$tmp/err" \
@@ -157,7 +180,7 @@ fi
 result "$ok" "basins, 5 points in 7 shards (some empty): concatenated = unsharded"
 
 # ---- threads: the same bytes ---------------------------------------------
-for kind in sigma4 stability basins; do
+for kind in sigma4 stability basins atlas; do
   ok=0
   for t in 1 2 4; do
     "$prog" sweep "$tmp/$kind.ini" --threads "$t" --no-provenance \
@@ -333,6 +356,31 @@ then
 fi
 result "$ok" "basins: ... each with status ERANGE (CHAPLYGIN_ERANGE)"
 
+# ---- the atlas: each row of it a basins sweep --------------------------------
+# Row i of an atlas over (V, Omega) is the basins sweep at Omega = y_i over
+# the same V grid (another kind of sweep, run separately): the same fate
+# cells, and the ESTATE row of V = 0 in both.
+ok=0
+for om in 0.25 0.8 3; do
+  sed -e 's/^kind = basins$/kind = atlas\nx = V/' -e '/^Omega = /d' \
+      -e '/^\[initial\]$/d' "$tmp/basins.ini" >"$tmp/row.ini"
+  printf 'y = Omega\ny_min = %s\ny_max = %s\nny = 1\n' "$om" "$om" \
+    >>"$tmp/row.ini"
+  sed "s/^Omega = 0.8$/Omega = $om/" "$tmp/basins.ini" >"$tmp/b.ini"
+  "$prog" sweep "$tmp/row.ini" --no-provenance >"$tmp/a.csv" 2>"$tmp/err" \
+    && "$prog" sweep "$tmp/b.ini" --no-provenance >"$tmp/b.csv" \
+         2>>"$tmp/err" \
+    && test "$(sed 1d "$tmp/a.csv" | wc -l)" -eq 101 \
+    && sed 1d "$tmp/a.csv" | cut -d, -f1,2,4- >"$tmp/a.cut" \
+    && sed 1d "$tmp/b.csv" >"$tmp/b.cut" \
+    && cmp "$tmp/a.cut" "$tmp/b.cut" >/dev/null \
+    || { say "Omega = $om: the atlas row differs"; cat "$tmp/err" >&2; ok=1; }
+done
+head -1 "$tmp/a.csv" \
+  | grep -qx 'k,V,Omega,fate,collisions,reversals,E_final,V_final,status' \
+  || ok=1
+result "$ok" "atlas over (V, Omega): each row is the basins sweep at its Omega"
+
 # ---- the command line ------------------------------------------------------
 expect_status 0 "--shard 0/1 is the whole sweep" \
   sweep "$tmp/stability.ini" --shard 0/1
@@ -375,7 +423,7 @@ fi
 # ---- the progress bar ------------------------------------------------------
 # stderr is a file here: not a byte on it, for every kind, on success.
 ok=0
-for kind in sigma4 stability basins; do
+for kind in sigma4 stability basins atlas; do
   run sweep "$tmp/$kind.ini" -o "$tmp/o.csv"
   if test "$rc" -ne 0 || test -s "$tmp/err"; then
     say "$kind: exit $rc, stderr not empty"
