@@ -382,7 +382,7 @@ write_run (const chaplygin_scene *sc, const char *input,
   int rc = output_open (&out, output_name, input);
   if (rc != EXIT_OK)
     return rc;
-  csv_options opt = { command, out.name, "chaplygin run", 0 };
+  csv_options opt = { command, out.name, "chaplygin run", 0, NULL };
   rc = csv_run (sc, run, out.stream, &opt, rep);
   if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
     rc = EXIT_FAILURE_LIB;

@@ -18,6 +18,8 @@ typedef struct
   const csv_options *opt;
   chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
   size_t ncols;
+  int keep[CHAPLYGIN_COLUMNS_MAX];      /* column i written */
+  int keep_all;
   int write_errno;              /* a write failed with this (EIO if 0) */
   int write_failed;
   progress bar;
@@ -40,10 +42,13 @@ csv_begin (void *user, const chaplygin_scene_report *rep)
 {
   csv_sink *s = user;
   errno = 0;
+  int first = 1;
   for (size_t i = 0; i < s->ncols; i++)
-    if (fputs (i ? "," : "", s->out) == EOF
-        || fputs (s->col[i].name, s->out) == EOF)
+    if (s->keep[i] && (fputs (first ? "" : ",", s->out) == EOF
+                       || fputs (s->col[i].name, s->out) == EOF))
       return write_failed (s);
+    else if (s->keep[i])
+      first = 0;
   if (fputc ('\n', s->out) == EOF)
     return write_failed (s);
   if (s->opt->command)
@@ -57,9 +62,29 @@ csv_text (void *user, const char *line, size_t len)
 {
   csv_sink *s = user;
   errno = 0;
-  if (fwrite (line, 1, len, s->out) != len || putc ('\n', s->out) == EOF)
-    return write_failed (s);
-  return 0;
+  if (s->keep_all)
+    {
+      if (fwrite (line, 1, len, s->out) != len || putc ('\n', s->out) == EOF)
+        return write_failed (s);
+      return 0;
+    }
+  /* the kept fields (the engine's cells hold no comma) */
+  size_t field = 0, start = 0;
+  int first = 1;
+  for (size_t i = 0; i <= len; i++)
+    if (i == len || line[i] == ',')
+      {
+        if (field < s->ncols && s->keep[field])
+          {
+            if ((!first && putc (',', s->out) == EOF)
+                || fwrite (line + start, 1, i - start, s->out) != i - start)
+              return write_failed (s);
+            first = 0;
+          }
+        field++;
+        start = i + 1;
+      }
+  return putc ('\n', s->out) == EOF ? write_failed (s) : 0;
 }
 
 static int
@@ -123,6 +148,14 @@ csv_run (const chaplygin_scene *sc, const chaplygin_run_options *run,
   if (chaplygin_scene_columns (sc, run, s.col, CHAPLYGIN_COLUMNS_MAX,
                                &s.ncols) != CHAPLYGIN_SCENE_OK)
     s.ncols = 0;
+  s.keep_all = !opt->columns;
+  for (size_t i = 0; i < s.ncols; i++)
+    {
+      s.keep[i] = s.keep_all;
+      for (size_t j = 0; opt->columns && opt->columns[j]; j++)
+        if (strcmp (s.col[i].name, opt->columns[j]) == 0)
+          s.keep[i] = 1;
+    }
   r.begin = csv_begin;
   r.row = NULL;
   r.text = csv_text;

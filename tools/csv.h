@@ -19,6 +19,10 @@ typedef struct
   const char *bar_label;        /* the progress bar's label; NULL: none */
   int quiet;                    /* 1: no line on stderr for an early end
                                    (plot: said once, by its survey) */
+  const char *const *columns;   /* NULL: every column; else the names of
+                                   those written (NULL-terminated), in the
+                                   run's order (plot: the columns its
+                                   script reads) */
 } csv_options;
 
 /* Run SC as RUN says (its callbacks are csv's) and write it to OUT as OPT

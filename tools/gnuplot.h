@@ -31,9 +31,10 @@ typedef struct
   struct sigaction saved_pipe;  /* SIGPIPE before: ignored meanwhile */
 } gnuplot_run;
 
-/* Start GNUPLOT (default "gnuplot", with -d: no initialisation file) with
-   the image going to IMAGE (named IMAGE_NAME in messages); G->script is
-   then the stream of its script.  G must stay where it is until
+/* Start GNUPLOT (default "gnuplot") as "GNUPLOT -d /dev/stdin" (no
+   initialisation file; the script read as a file, buffered) with the
+   image going to IMAGE (named IMAGE_NAME in messages); G->script is then
+   the stream of its script.  G must stay where it is until
    gnuplot_finish.  Returns 0, or -1 after a message. */
 int gnuplot_start (gnuplot_run *g, FILE *image, const char *image_name);
 

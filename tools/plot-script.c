@@ -20,12 +20,16 @@
      phase-space: the (S, E/E_f, H) curves of Figures 4, 5 (S the distance
        the slot travels over its pegs, E_f the last E);
      sweeps: sigma4 against x per y (Fig. 2(a)), the stability regions
-       (Fig. 2(b)), the fates against V+ with the basin boundaries (Fig. 3).
+       (Fig. 2(b)), the fates against V+ with the basin boundaries (Fig. 3),
+       an atlas's fate map: its points coloured by fate (forward,
+       backward, spin, undecided, or failed: a status not SUCCESS, no
+       fate), the five in the key whether or not the data have them.
    A run of one row is drawn as a point (a line needs two).  Lengths are
    in units of rho (discrete, smooth) or of the slot length (massless), as
    the axis labels say. */
 #include <config.h>
 
+#include <math.h>
 #include <string.h>
 
 #include "plot-script.h"
@@ -86,6 +90,14 @@ static const figure_column basins_sweep[] = {
   { "V0", 0 }, { "fate", 0 }, { NULL, 0 } };
 static const figure_column none[] = { { NULL, 0 } };
 
+void
+figure_atlas_axes (figure *f, const char *x, const char *y)
+{
+  const figure_column atlas[4] = { { x, 0 }, { y, 0 }, { "fate", 0 },
+                                   { NULL, 0 } };
+  memcpy (f->atlas, atlas, sizeof atlas);
+}
+
 const figure_column *
 figure_columns (const figure *f, char block)
 {
@@ -102,6 +114,8 @@ figure_columns (const figure *f, char block)
       return block == 'd' ? stability_sweep : none;
     case FIGURE_BASINS:
       return block == 'd' ? basins_sweep : none;
+    case FIGURE_ATLAS:
+      return block == 'd' && f->atlas[0].name ? f->atlas : none;
     }
   return none;
 }
@@ -252,6 +266,85 @@ basins_script (FILE *gp, const figure *f)
          "lc rgb '#1f3b73'\n", gp);
 }
 
+/* The axis label of an atlas's quantity NAME (a column name). */
+static const char *
+atlas_label (const char *name)
+{
+  static const char *const label[][2] = {
+    { "L0", "L_0" }, { "Delta", "Δ" }, { "V", "initial V^+" },
+    { "Omega", "initial Ω^+" } };
+  for (size_t i = 0; i < sizeof label / sizeof label[0]; i++)
+    if (strcmp (name, label[i][0]) == 0)
+      return label[i][1];
+  return "";
+}
+
+/* Half the spacing of the N points of a sweep's grid from LO to HI (LO
+   <= HI); the half-width of a cell.  One point, or LO = HI: a cell of
+   the range, else of half its magnitude (1/2 at 0), at most 1e300. */
+static double
+half_cell (double lo, double hi, size_t n)
+{
+  double h = n >= 2 ? (hi / 2 - lo / 2) / (double) (n - 1) : hi / 2 - lo / 2;
+  if (lo == hi)
+    h = lo != 0 ? fabs (lo) / 2 : 0.5;
+  return h <= 1e300 ? h : 1e300;
+}
+
+/* An atlas's fate map: each point of $d coloured by its class, its fate
+   (-1 backward, 0 spin, 1 forward, 2 undecided) where its status is
+   SUCCESS, else failed (its fate cell is empty).  On a full grid
+   (f->grid) an image of a pixel per point; one x, one y, or y_min = y_max
+   (gnuplot's image needs a grid of 2 x 2) boxes of the grid's spacing, the
+   first row only where every row is the same y.  The five classes are in
+   the key whether or not the data have them. */
+static void
+atlas_script (FILE *gp, const figure *f)
+{
+  /* by class: fate + 2 (gnuplot's arrays from 1), failed 5; the
+     Okabe-Ito colours, told apart also by colour-blind eyes */
+  static const struct
+  {
+    unsigned rgb;
+    const char *title;
+  } class[5] = {
+    { 0xd55e00, "backward (V* < 0)" }, { 0x009e73, "spin" },
+    { 0x0072b2, "forward (V* > 0)" }, { 0xf0e442, "undecided" },
+    { 0x000000, "failed (status not SUCCESS)" } };
+  static const int key_order[5] = { 2, 0, 1, 3, 4 };
+  const char *x = f->atlas[0].name, *y = f->atlas[1].name;
+  fprintf (gp, "set xlabel '%s'; set ylabel '%s'\n", atlas_label (x),
+           atlas_label (y));
+  fputs ("array C[5] = [", gp);
+  for (int i = 0; i < 5; i++)
+    fprintf (gp, "%s0x%06x", i ? ", " : "", class[i].rgb);
+  fputs ("]\n"
+         "set autoscale xfix; set autoscale yfix; set tics out; "
+         "set grid noxtics noytics; set border front\n"
+         "set key outside right top vertical Left reverse samplen 1.5 "
+         "title 'fate' noenhanced\n", gp);
+  /* the class's colour of the row: strcol('status') is read first, so the
+     empty fate of a failed point is never read */
+  const char *colour = "(C[strcol('status') eq 'SUCCESS' ? "
+    "int(column('fate')) + 2 : 5])";
+  if (f->grid)
+    fprintf (gp, "plot $d using '%s':'%s':(c = %s, (c >> 16) & 255):"
+             "((c >> 8) & 255):(c & 255) with rgbimage", x, y, colour);
+  else
+    {
+      fprintf (gp, "plot $d using '%s':'%s':(%.17g):(%.17g):%s", x, y,
+               half_cell (f->x_min, f->x_max, f->nx),
+               half_cell (f->y_min, f->y_max, f->ny), colour);
+      if (f->y_min == f->y_max)
+        fprintf (gp, " every ::0::%zu", f->nx - 1);
+      fputs (" with boxxyerror lc rgb variable fs solid 1.0 border", gp);
+    }
+  for (int i = 0; i < 5; i++)
+    fprintf (gp, ", keyentry with boxes fs solid 1.0 lc rgb '#%06x' "
+             "title '%s'", class[key_order[i]].rgb, class[key_order[i]].title);
+  fputc ('\n', gp);
+}
+
 void
 figure_script (FILE *gp, const figure *f)
 {
@@ -272,6 +365,8 @@ figure_script (FILE *gp, const figure *f)
     sigma4_script (gp, f);
   else if (f->kind == FIGURE_STABILITY)
     stability_script (gp, f);
-  else
+  else if (f->kind == FIGURE_BASINS)
     basins_script (gp, f);
+  else
+    atlas_script (gp, f);
 }

@@ -61,14 +61,16 @@ static const char usage_text[] =
   "massless skates with 24 samples between collisions where the scene has\n"
   "none; a discrete scene with compare = smooth with its smooth companion,\n"
   "dashed); [plot] view = phase-space: the (S, E/E_f, H) curves of\n"
-  "Figures 4 and 5; a sweep: its figure (2(a), 2(b) or 3).  The scene's\n"
-  "title heads the figure, as plain text.  A run without rows between\n"
-  "collisions is drawn per collision, a single row as a point.  A scene\n"
-  "with a value gnuplot cannot draw (beyond the doubles, of magnitude over\n"
-  "1e300, or an axis of subnormal numbers only) or with nothing to draw\n"
-  "is refused before gnuplot runs, saying why.  FILE is written as a\n"
-  "temporary file beside it, renamed once the whole image is on disk; it\n"
-  "may not be the scene.\n"
+  "Figures 4 and 5; a sweep: its figure (2(a), 2(b) or 3); an atlas: its\n"
+  "fate map over its x and y, each point coloured as its fate (forward,\n"
+  "backward, spin, undecided; failed where its status is not SUCCESS),\n"
+  "the five in the key.  The scene's title heads the figure, as plain\n"
+  "text.  A run without rows between collisions is drawn per collision,\n"
+  "a single row as a point.  A scene with a value gnuplot cannot draw\n"
+  "(beyond the doubles, of magnitude over 1e300, or an axis of subnormal\n"
+  "numbers only) or with nothing to draw is refused before gnuplot runs,\n"
+  "saying why.  FILE is written as a temporary file beside it, renamed\n"
+  "once the whole image is on disk; it may not be the scene.\n"
   "\n"
   "Options:\n"
   "  -o, --output FILE  the image (required)\n"
@@ -156,14 +158,25 @@ scene_facts (const chaplygin_scene *sc, figure_plan *p)
                                          sizeof p->title) == 0 ? p->title
     : slash ? slash + 1 : name;
   p->fig.massless = chaplygin_scene_model (sc) == CHAPLYGIN_SCENE_MASSLESS;
+  p->fig.ny = p->ny >= 1 ? (size_t) p->ny : 0;
   if (chaplygin_scene_text (sc, "kind", text, sizeof text) == 0)
     p->fig.kind = strcmp (text, "sigma4") == 0 ? FIGURE_SIGMA4
-      : strcmp (text, "stability") == 0 ? FIGURE_STABILITY : FIGURE_BASINS;
+      : strcmp (text, "stability") == 0 ? FIGURE_STABILITY
+      : strcmp (text, "basins") == 0 ? FIGURE_BASINS : FIGURE_ATLAS;
   else if (chaplygin_scene_text (sc, "view", text, sizeof text) == 0
            && strcmp (text, "phase-space") == 0)
     p->fig.kind = FIGURE_PHASE_SPACE;
   else
     p->fig.kind = FIGURE_PANELS;
+  /* an atlas's x and y quantities: its rows' columns 1 and 2, by name */
+  chaplygin_run_options run = { 0, 0, 1, 0, NULL, NULL, NULL, NULL, NULL,
+                                NULL };
+  chaplygin_column col[CHAPLYGIN_COLUMNS_MAX];
+  size_t ncols = 0;
+  if (p->fig.kind == FIGURE_ATLAS
+      && chaplygin_scene_columns (sc, &run, col, CHAPLYGIN_COLUMNS_MAX,
+                                  &ncols) == CHAPLYGIN_SCENE_OK && ncols >= 3)
+    figure_atlas_axes (&p->fig, col[1].name, col[2].name);
 }
 
 /* The blocks of a run's figure P: the skate dense ($d, with every output),
@@ -445,6 +458,9 @@ survey_figure (figure_plan *p)
       if (f->kind == FIGURE_STABILITY)
         f->grid = p->nx >= 2 && p->ny >= 2 && f->y_min < f->y_max
           && s.complete == s.rows;
+      /* an atlas draws its failed points too: an image on any full grid */
+      if (f->kind == FIGURE_ATLAS)
+        f->grid = p->nx >= 2 && p->ny >= 2 && f->y_min < f->y_max;
     }
   if (f->kind == FIGURE_BASINS)
     {
@@ -458,14 +474,20 @@ survey_figure (figure_plan *p)
 /* The drawing                                                         */
 /* ------------------------------------------------------------------ */
 
-/* The run of block B as the data block $NAME of the script GP.  Returns
-   the exit status of the run. */
+/* The run of block B of figure F as the data block $NAME of the script
+   GP; an atlas's only with the columns its script reads (a row of 1e6
+   in 45 bytes, not 100: gnuplot keeps the block in memory).  Returns the
+   exit status of the run. */
 static int
-data_block (FILE *gp, const figure_block *b)
+data_block (FILE *gp, const figure *f, const figure_block *b)
 {
   chaplygin_run_options run = { b->compare, 0, 1, 0, NULL, NULL, NULL, NULL,
                                 NULL, NULL };
-  csv_options opt = { NULL, "gnuplot", NULL, 1 };
+  const char *const atlas[] = { f->atlas[0].name, f->atlas[1].name, "fate",
+                                "status", NULL };
+  csv_options opt = { NULL, "gnuplot", NULL, 1,
+                      f->kind == FIGURE_ATLAS && f->atlas[0].name ? atlas
+                      : NULL };
   fprintf (gp, "$%c << EOD\n", b->name);
   int rc = csv_run (b->sc, &run, gp, &opt, NULL);
   fputs ("EOD\n", gp);
@@ -513,7 +535,7 @@ draw (const figure_plan *p, const output *out, image_format format)
   figure_header (g.script, format);
   int rc = EXIT_OK;
   for (size_t i = 0; i < p->n_block && rc == EXIT_OK; i++)
-    rc = data_block (g.script, &p->block[i]);
+    rc = data_block (g.script, &p->fig, &p->block[i]);
   if (rc == EXIT_OK)
     figure_script (g.script, &p->fig);
   if (gnuplot_finish (&g) != 0 && rc == EXIT_OK)

@@ -235,7 +235,7 @@ write_sweep (const chaplygin_scene *sc, const sweep_args *args)
   else
     snprintf (label, sizeof label, "sweep");
   csv_options opt = { args->no_provenance ? NULL : cli_command (), out.name,
-                      isatty (fileno (out.stream)) ? NULL : label, 0 };
+                      isatty (fileno (out.stream)) ? NULL : label, 0, NULL };
   rc = csv_run (sc, &run, out.stream, &opt, NULL);
   if (output_close (&out, rc == EXIT_OK) != 0 && rc == EXIT_OK)
     rc = EXIT_OUTPUT;

@@ -5,7 +5,8 @@
 # edges: each model and view, collisions = 0 and 1, stop conditions that
 # end a run at once, tiny and huge states, far slots, a straight line
 # (H = 0), sweeps of one point, of one y, of points that all fail or lie
-# beyond what gnuplot draws.  Each case says which it must be: "draw"
+# beyond what gnuplot draws; atlases of one point, one x, one y, y_min =
+# y_max, a 2 x 2 grid.  Each case says which it must be: "draw"
 # (exit 0, a whole SVG, nothing from gnuplot on stderr) or "refuse TEXT"
 # (exit 2, no file, TEXT in the message); and run accepts every scene.
 # A run of one row is drawn as points.  Skipped without gnuplot.
@@ -48,6 +49,13 @@ refuse beyond the doubles | smooth, V = Omega = 1e300 | [scene];model = smooth;[
 refuse up to 1e300 | discrete, V = Omega = 1e150 (E = 1.5e300) | [scene];model = discrete;[parameters];L0 = 1;Delta = 1/3;[initial];V = 1e150;Omega = 1e150;[run];collisions = 3
 refuse subnormal | smooth, Omega = 4.9e-324 | [scene];model = smooth;[parameters];L = 1;[initial];V = 1;Omega = 4.9e-324;[run];duration = 3
 refuse up to 1e300 | basins over V0 = -1.7e308 .. 1.7e308 | [scene];model = discrete;[parameters];L0 = -0.5;Delta = 1;[initial];Omega = 1e-300;[run];collisions = 3;[sweep];kind = basins;x_min = -1.7e308;x_max = 1.7e308;nx = 4
+draw | atlas, one point | [scene];model = discrete;[parameters];L0 = -0.5;Delta = 1;[run];collisions = 10;[sweep];kind = atlas;x = V;x_min = 0.1;x_max = 0.5;nx = 1;y = Omega;y_min = 0.1;y_max = 2;ny = 1
+draw | atlas, one y | [scene];model = discrete;[parameters];L0 = -0.5;Delta = 1;[run];collisions = 10;[sweep];kind = atlas;x = V;x_min = 0.1;x_max = 0.5;nx = 5;y = Omega;y_min = 0.1;y_max = 2;ny = 1
+draw | atlas, y_min = y_max on a 3 x 3 grid | [scene];model = discrete;[parameters];L0 = -0.5;Delta = 1;[run];collisions = 10;[sweep];kind = atlas;x = V;x_min = 0.1;x_max = 0.5;nx = 3;y = Omega;y_min = 0.8;y_max = 0.8;ny = 3
+draw | atlas over (Delta, L0), 2 x 2 | [scene];model = discrete;[initial];V = 0.3;Omega = 0.8;[run];collisions = 10;[sweep];kind = atlas;x = Delta;x_min = 0.5;x_max = 2;nx = 2;y = L0;y_min = -1;y_max = 1;ny = 2
+draw | atlas, one x through V = 0 | [scene];model = discrete;[parameters];Delta = 1;[initial];Omega = 0.8;[run];collisions = 10;[sweep];kind = atlas;x = L0;x_min = -1;x_max = 1;nx = 1;y = V;y_min = -1;y_max = 1;ny = 3
+refuse up to 1e300 | atlas over L0 = -1.7e308 .. 1.7e308 | [scene];model = discrete;[parameters];Delta = 1;[initial];Omega = 0.8;[run];collisions = 3;[sweep];kind = atlas;x = L0;x_min = -1.7e308;x_max = 1.7e308;nx = 3;y = V;y_min = 0.1;y_max = 1;ny = 2
+refuse no row to draw | atlas whose every point fails (V = 0) | [scene];model = discrete;[parameters];Delta = 1;[initial];Omega = 0.8;[run];collisions = 10;[sweep];kind = atlas;x = L0;x_min = -1;x_max = 1;nx = 3;y = V;y_min = 0;y_max = 0;ny = 2
 refuse no row to draw | basins whose one point fails (V0 = 0) | [scene];model = discrete;[parameters];L0 = -0.5;Delta = 1;[initial];Omega = 0.8;[run];collisions = 10;[sweep];kind = basins;x_min = 0;x_max = 1;nx = 1
 EOF
 )

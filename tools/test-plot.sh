@@ -1,7 +1,10 @@
 #!/bin/sh
 # test-plot.sh -- TAP: "chaplygin plot".  A PNG of the size of the style
 # (1200 x 760, read from its IHDR chunk) for a run, a massless run and the
-# three sweeps; SVG; the axis labels per model (in the SVG's text); a
+# three sweeps; SVG; an atlas's fate map (PNG, SVG: its key's five classes
+# and its axes; every point coloured as its class in the key, as gnuplot
+# computes it from the script with 'set table', failed points among them,
+# on an image and on cells of one x; its row limit); the axis labels per model (in the SVG's text); a
 # scene's title or file name that tries to make gnuplot run a command or
 # read a file draws as text and runs nothing; the row limit and -o rules
 # as for run; a missing gnuplot.  A failed write of the image never
@@ -20,7 +23,7 @@ top_srcdir=${top_srcdir:-.}
 prog=${CHAPLYGIN:-$top_builddir/tools/chaplygin}
 
 . "$top_srcdir/tools/tap-lib.sh"
-tap_start test-plot 20
+tap_start test-plot 26
 
 if ! gnuplot -e 'set terminal pngcairo' </dev/null >/dev/null 2>&1; then
   while test "$count" -lt "$plan"; do
@@ -132,6 +135,143 @@ grep -qF 'system("touch PWNED2") @cmd' "$tmp/hostile/h.svg" \
   && grep -q '`touch PWNED1`' "$tmp/hostile/h.svg" \
   && test -z "$(ls "$tmp/hostile" | grep '^PWNED')" && ok=0
 result "$ok" "... the title appears verbatim in the figure"
+
+# ---- an atlas: its fate map ---------------------------------------------------------
+# The scene of the example (x = V, y = Omega), a smaller grid; and x = L0,
+# y = V on a grid through V = 0 (its row ESTATE: failed) with few
+# collisions (some points undecided).
+cat >"$tmp/atlas.ini" <<'EOF'
+[scene]
+model = discrete
+title = Fates over (V+, Omega+), L0 = -1/2, Delta = 1
+[parameters]
+L0 = -0.5
+Delta = 1
+[run]
+collisions = 100000
+[sweep]
+kind = atlas
+x = V
+x_min = 0.01
+x_max = 0.5
+nx = 60
+y = Omega
+y_min = 0.1
+y_max = 2
+ny = 40
+EOF
+cat >"$tmp/atlas-fail.ini" <<'EOF'
+[scene]
+model = discrete
+[parameters]
+Delta = 1
+[initial]
+Omega = 0.8
+[run]
+collisions = 4
+[sweep]
+kind = atlas
+x = L0
+x_min = -3
+x_max = 1
+nx = 60
+y = V
+y_min = -1
+y_max = 1
+ny = 41
+EOF
+sed 's/^nx = 60$/nx = 1/' "$tmp/atlas-fail.ini" >"$tmp/atlas-col.ini"
+
+run plot "$tmp/atlas.ini" -o "$tmp/atlas.png"
+ok=1
+test "$rc" -eq 0 && png_ok "$tmp/atlas.png" 10000 && test ! -s "$tmp/err" && ok=0
+test "$ok" -eq 0 || sed 's/^/# /' "$tmp/err"
+result "$ok" "an atlas: a 1200 x 760 PNG"
+
+# The SVG's text: the five classes of the key (also those absent from the
+# data: this atlas has forward and backward only), the axes named as the
+# quantities, the title.
+run plot "$tmp/atlas.ini" -o "$tmp/atlas.svg"
+ok=1
+if test "$rc" -eq 0 && grep -q '</svg>' "$tmp/atlas.svg"; then
+  ok=0
+  for t in '>forward (V\* > 0)<' '>backward (V\* &lt; 0)<' '>spin<' '>undecided<' \
+           '>failed (status not SUCCESS)<' '>initial V</tspan><tspan[^>]*>+<' \
+           '>initial Ω</tspan><tspan[^>]*>+<' \
+           '>Fates over (V+, Omega+), L0 = -1/2, Delta = 1<'; do
+    grep -q "$t" "$tmp/atlas.svg" || { say "not in the SVG: $t"; ok=1; }
+  done
+fi
+result "$ok" "an atlas's SVG: the five classes in the key, the axes initial V+ and Omega+, the title"
+
+# colours_check SCENE: the scene drawn through a gnuplot that keeps its
+# script; that script run again with 'set table' before its plot gives
+# each point's colour as gnuplot computed it (an image: red green blue;
+# boxes: 0xRRGGBB), in the order of the rows of 'chaplygin run'.  Every
+# point must have the colour of its class in the key (fate -1 backward,
+# 0 spin, 1 forward, 2 undecided, status not SUCCESS failed), the key's
+# five colours distinct, and the classes FOUND (a list) all present.
+cat >"$tmp/gp-keep" <<EOF
+#!/bin/sh
+tee "$tmp/kept.gp" | gnuplot "\$@"
+EOF
+chmod +x "$tmp/gp-keep"
+colours_check () {
+  rm -f "$tmp/kept.gp" "$tmp/table"
+  rc=0
+  GNUPLOT=$tmp/gp-keep "$prog" plot "$1" -o "$tmp/c.svg" 2>"$tmp/err" || rc=$?
+  test "$rc" -eq 0 || { sed 's/^/# /' "$tmp/err"; return 1; }
+  sed "/^plot \\\$d/i set table '$tmp/table'" "$tmp/kept.gp" | gnuplot -d >/dev/null 2>&1
+  "$prog" run "$1" 2>/dev/null | grep -v '^#' >"$tmp/rows"
+  grep -o "keyentry [^,]*lc rgb '#[0-9a-f]*' title '[a-z]*" "$tmp/kept.gp" \
+    | sed "s/.*'#\\([0-9a-f]*\\)' title '\\(.*\\)/\\2 \\1/" >"$tmp/key"
+  awk -v found="$2" '
+    FILENAME == ARGV[1] { key[$1] = $2; n_key++; next }
+    FILENAME == ARGV[2] { if (FNR > 1) { nrow++; split($0, c, ",");
+        cls[nrow] = c[9] != "SUCCESS" ? "failed" : c[4] == -1 ? "backward" \
+          : c[4] == 0 ? "spin" : c[4] == 1 ? "forward" : c[4] == 2 ? "undecided" : "?" }
+      next }
+    /^# Curve/ { curve++; next }
+    curve == 1 && NF >= 5 && $1 !~ /^#/ {
+      np++
+      col = $(NF - 1) ~ /^0x/ ? substr($(NF - 1), 3) : sprintf("%02x%02x%02x", $3, $4, $5)
+      seen[cls[np]] = 1
+      if (col != key[cls[np]]) { bad++; if (bad < 4) printf "# row %d (%s): colour %s, key %s\n", np, cls[np], col, key[cls[np]] }
+    }
+    END {
+      for (a in key) for (b in key) if (a < b && key[a] == key[b]) { print "# same colour: " a ", " b; bad++ }
+      if (n_key != 5) { print "# key entries: " n_key; bad++ }
+      if (np != nrow || np == 0) { print "# points " np ", rows " nrow; bad++ }
+      n = split(found, f, ",")
+      for (i = 1; i <= n; i++) if (!seen[f[i]]) { print "# no " f[i] " point"; bad++ }
+      exit bad > 0
+    }' "$tmp/key" "$tmp/rows" "$tmp/table"
+}
+
+ok=0; colours_check "$tmp/atlas-fail.ini" failed,forward,backward,undecided || ok=1
+result "$ok" "an atlas through V = 0 (an image): each point the key's colour of its class, failed (ESTATE) among them; five distinct colours"
+
+ok=0; colours_check "$tmp/atlas-col.ini" failed,backward || ok=1
+result "$ok" "... of one x (cells): each point the key's colour of its class, failed among them"
+
+# ... and the cells are drawn (gnuplot's image of one column draws
+# nothing, silently): filled shapes of the failed and backward colours
+# beyond the key's two swatches.
+ok=0
+for c in failed backward; do
+  fill=$(awk -v c="$c" 'function x(s) { return 16 * (index("0123456789abcdef",
+      substr(s, 1, 1)) - 1) + index("0123456789abcdef", substr(s, 2, 1)) - 1 }
+    $1 == c { printf "rgb(%3d, %3d, %3d)", x(substr($2, 1, 2)),
+      x(substr($2, 3, 2)), x(substr($2, 5, 2)) }' "$tmp/key")
+  n=$(grep -c "fill = '$fill'" "$tmp/c.svg")
+  test "$n" -ge 2 || { say "$c ($fill): $n filled shapes"; ok=1; }
+done
+result "$ok" "... its cells drawn in the SVG, not an empty image"
+
+run plot "$tmp/atlas.ini" -o "$tmp/atlas-big.png" --max-rows 2399
+ok=1
+test "$rc" -eq 2 && test ! -e "$tmp/atlas-big.png" && grep -q 'max_rows' "$tmp/err" && ok=0
+result "$ok" "an atlas beyond the row limit (2400 points, --max-rows 2399): refused, no file"
 
 # ---- bounds and files -----------------------------------------------------------
 sed 's/^collisions = 20$/collisions = 1e9/' "$tmp/fig6.ini" >"$tmp/big.ini"
