@@ -280,6 +280,11 @@ def test_bistable_band(srcdir):
     assert not e14[:, L0 >= -0.5].any()
     assert e14.sum() > 1000 and (fate[e14] == -1).all()
     assert L0[e14.any(axis=0)].max() < -0.6
+    # the interleaved basins: only in a band around the symmetric skate
+    both = (fate == 1).any(axis=0) & (fate == -1).any(axis=0)
+    assert L0[both].min() == -0.735 and L0[both].max() == -0.38
+    assert (fate[:, L0 < -0.735] == -1).all()
+    assert (fate[:, L0 > -0.38] == 1).all()
 
 
 def test_certified_decides_the_near_tie(srcdir, tmp_path):
