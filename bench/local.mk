@@ -7,13 +7,24 @@
 ## found (BENCH_PYTHONS: PYTHON, python3, /usr/bin/python3, the first
 ## that imports scipy.integrate), bench/scipy-ivp.py adds the rows of
 ## SciPy's solve_ivp (DOP853) on the same states; without it they are
-## skipped, and said so.
+## skipped, and said so.  Then bench/atlas: the atlas sweep's kernel
+## (chaplygin_discrete_fates_phase, and the scalar chaplygin_discrete_basins
+## per point) in ns per collision as ratios to the same baseline chain on
+## the same step set, and the sweep's parallel efficiency with 2 threads
+## (stdout only).
 ## Not part of `make check'.
 noinst_PROGRAMS += bench/work-precision
 bench_work_precision_SOURCES = bench/work-precision.c verification/tap.h
 bench_work_precision_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/verification \
 	-DBENCH_CFLAGS='"$(CFLAGS)"'
 bench_work_precision_LDADD = lib/libchaplygin.la $(CODE_COVERAGE_LIBS) -lm
+
+noinst_PROGRAMS += bench/atlas
+bench_atlas_SOURCES = bench/atlas.c bench/baseline.h
+bench_atlas_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
+bench_atlas_LDADD = lib/libchaplygin-scene.la lib/libchaplygin.la \
+	$(CODE_COVERAGE_LIBS) -lm
+bench_work_precision_SOURCES += bench/baseline.h
 
 EXTRA_DIST += bench/work-precision.gp bench/work-precision.csv \
 	bench/scipy-ivp.py
@@ -64,6 +75,8 @@ bench: bench/work-precision
 	$(GNUPLOT) -e "csv = '$(srcdir)/bench/work-precision.csv'" \
 	  -e "png = '$(srcdir)/doc/figures/work-precision.png'" \
 	  $(srcdir)/doc/figures/style.gp $(srcdir)/bench/work-precision.gp
+	$(MAKE) $(AM_MAKEFLAGS) bench/atlas
+	./bench/atlas --states $(BENCH_STATES)
 .PHONY: bench
 
 # `make bench-carlson': the fused Carlson kernel (lib/carlson.c) against

@@ -3428,6 +3428,50 @@ int chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
                                chaplygin_fate *fates, int *status,
                                int *scale);
 
+/** The fates of @n post-collision states $(D^+, V_i, 0, Omega_i)$, each
+   exactly as chaplygin_discrete_basins computes the one-point grid
+   $V_(lo) = V_(hi) = V_i$ with $Omega_0 = Omega_i$: bit for bit the same
+   `@fates[i]` and `@scale[i]`, and as `@status[i]` that call's return
+   value (so also CHAPLYGIN_EDOM for a non-finite $V_i$ or $Omega_i$).  The
+   batch kernel of the atlas and basins sweeps, for any set of points of one
+   skate.  $n = 0$ does nothing (@V, @Omega, @fates may then be null).
+
+   Method: the fate coefficients of the skate are formed once per call, not
+   once per point, and the (B.3)/(B.4) iteration runs 8 orbits at a time,
+   one collision of each in turn, so that the processor overlaps their
+   independent chains; an orbit that ends hands its place to the next
+   point, so that long and short orbits mix.  Every orbit does the
+   operations of chaplygin_discrete_fate_phase in its order (fma() where it
+   uses fma(): correctly rounded, in hardware where the CPU has FMA); the
+   results do not depend on @n or on the other points (test
+   `fates_phase_bits`).  A far system (@pxref{Far slots}) goes point by
+   point through chaplygin_discrete_basins.  Cost: measured by
+   @file{bench/atlas.c} (@command{make bench}) on an atlas of Figure 3's skate,
+   2.5 collisions per point on average (@ref{Measured figures}).
+
+   @status (may be null) and @scale (may be null) as in
+   chaplygin_discrete_basins: without @status every point must succeed, and
+   nothing is written otherwise.  The return value is CHAPLYGIN_SUCCESS if
+   every point succeeded, else the status of the first point (in index
+   order) that failed.
+
+   Accuracy: that of chaplygin_discrete_fate_phase (the same results).
+
+   Domain: @sys as for chaplygin_discrete_fate; any doubles $V_i$,
+   $Omega_i$ (the points outside the domain of chaplygin_discrete_basins
+   fail alone).
+
+   Errors: CHAPLYGIN_EINVAL (null @sys, or null @V, @Omega or @fates with
+   $n > 0$), CHAPLYGIN_EDOM (a system chaplygin_discrete_init would not
+   make), CHAPLYGIN_ENOMEM (without @status); for a point, those of
+   chaplygin_discrete_basins.
+ */
+int chaplygin_discrete_fates_phase (const chaplygin_discrete *sys, size_t n,
+                                    const double *V, const double *Omega,
+                                    unsigned long max_collisions,
+                                    chaplygin_fate *fates, int *status,
+                                    int *scale);
+
 /** Figure 3, its dashed lines.  The boundaries between the basins on the grid
    of chaplygin_discrete_basins with @n_grid points: every grid point whose
    motion spins, and for each pair of neighbouring grid points with opposite

@@ -58,12 +58,38 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "chaplygin.h"
 #include "eft.h"
 #include "far.h"
 #include "motion.h"
+
+/* ldexp (x, e) and ilogb (x) without a call where that is exact: x 2^e by
+   one multiplication when 2^e is a normal double (a product by a power of
+   two is correctly rounded, as ldexp is, also into the subnormal range and
+   to infinity), the exponent field of a normal x; otherwise libm's. */
+static inline double
+fast_ldexp (double x, int e)
+{
+  if (e < -1022 || e > 1023)
+    return ldexp (x, e);
+  const uint64_t b = (uint64_t) (e + 1023) << 52;
+  double p;
+  memcpy (&p, &b, sizeof p);
+  return x * p;
+}
+
+static inline int
+fast_ilogb (double x)
+{
+  uint64_t b;
+  memcpy (&b, &x, sizeof b);
+  const int f = (int) (b >> 52 & 0x7ff);
+  return f != 0 && f != 0x7ff ? f - 1023 : ilogb (x);
+}
 
 /* One direction of travel, from the end l0 where the peg starts to l1. */
 typedef struct
@@ -136,6 +162,42 @@ fate_coef_init (const chaplygin_discrete *sys, fate_coef *c)
   return CHAPLYGIN_SUCCESS;
 }
 
+/* The fate of a run that ended with KIND in direction DIR at the state
+   (u, H) (scaled by 2^-scale in V and H), UF the final u of a straight-line
+   fate, after N collisions with NREV reversals, the last at LAST: into
+   *OUT, or CHAPLYGIN_ERANGE where the energy leaves the double range.
+   Shared by fate_run and the lanes of chaplygin_discrete_fates_phase, so
+   that both deliver the same bits; never inlined (the lanes may be
+   compiled for FMA, where GCC would contract u + H (H/n0)). */
+static int __attribute__ ((noinline))
+fate_result (const fate_coef *c, int kind, int dir, double u, double uf,
+             double H, int scale, unsigned long n, unsigned long nrev,
+             unsigned long last, chaplygin_fate *out)
+{
+  chaplygin_fate r;
+  r.kind = kind;
+  r.collisions = n;
+  r.reversals = nrev;
+  r.last_reversal = last;
+  if (kind == CHAPLYGIN_FATE_FORWARD || kind == CHAPLYGIN_FATE_BACKWARD)
+    {
+      r.E_final = fast_ldexp (0.5 * uf, 2 * scale);
+      r.V_final = dir * fast_ldexp (sqrt (uf), scale);
+    }
+  else
+    {
+      const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
+      r.E_final = fast_ldexp (0.5 * (u + H * (H / n0)), 2 * scale);
+      r.V_final = kind == CHAPLYGIN_FATE_SPIN ? 0.0
+        : dir * fast_ldexp (sqrt (u), scale);
+    }
+  /* an energy beyond the double range (|V+| above ~1e154) */
+  if (!isfinite (r.E_final) || !isfinite (r.V_final))
+    return CHAPLYGIN_ERANGE;
+  *out = r;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* Iterate (u, H) in direction dir (scaled by 2^-scale in V and H) until
    the fate is certain, the motion spins, or max collisions are done. */
 static int
@@ -196,28 +258,7 @@ fate_run (const fate_coef *c, int dir, double u, double H, int scale,
         }
     }
 
-  chaplygin_fate r;
-  r.kind = kind;
-  r.collisions = n;
-  r.reversals = nrev;
-  r.last_reversal = last;
-  if (kind == CHAPLYGIN_FATE_FORWARD || kind == CHAPLYGIN_FATE_BACKWARD)
-    {
-      r.E_final = ldexp (0.5 * uf, 2 * scale);
-      r.V_final = dir * ldexp (sqrt (uf), scale);
-    }
-  else
-    {
-      const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
-      r.E_final = ldexp (0.5 * (u + H * (H / n0)), 2 * scale);
-      r.V_final = kind == CHAPLYGIN_FATE_SPIN ? 0.0
-        : dir * ldexp (sqrt (u), scale);
-    }
-  /* an energy beyond the double range (|V+| above ~1e154) */
-  if (!isfinite (r.E_final) || !isfinite (r.V_final))
-    return CHAPLYGIN_ERANGE;
-  *out = r;
-  return CHAPLYGIN_SUCCESS;
+  return fate_result (c, kind, dir, u, uf, H, scale, n, nrev, last, out);
 }
 
 /* The fate from a phase state V+ != 0, Omega+ (both finite), the peg at the
@@ -229,21 +270,21 @@ phase_scale (const fate_coef *c, double V, double Omega, double *u,
 {
   const int dir = V > 0.0 ? 1 : -1;
   const double n0 = c->leg[dir > 0 ? 0 : 1].n0;
-  int kk = ilogb (V);
+  int kk = fast_ilogb (V);
   if (Omega != 0.0)
     {
-      int kO = ilogb (Omega) + ilogb (n0) / 2;
+      int kO = fast_ilogb (Omega) + fast_ilogb (n0) / 2;
       if (kO > kk)
         kk = kO;
     }
-  const double Vs = ldexp (V, -kk);
-  const double H = n0 * ldexp (Omega, -kk);
+  const double Vs = fast_ldexp (V, -kk);
+  const double H = n0 * fast_ldexp (Omega, -kk);
   /* V+^2 below the normal range beside (1 + l0^2) Omega+^2 (|V+| under
      ~1e-154 of it) counts by its sign alone, as in start_u; an energy
      beyond the double range has no final energy: refused before anything
      is written */
   const double uu = Vs * Vs >= DBL_MIN ? Vs * Vs : 0x1p-1074;
-  if (!isfinite (ldexp (0.5 * (uu + H * (H / n0)), 2 * kk)))
+  if (!isfinite (fast_ldexp (0.5 * (uu + H * (H / n0)), 2 * kk)))
     return CHAPLYGIN_ERANGE;
   *u = uu;
   *Hs = H;
@@ -478,6 +519,29 @@ check_grid (const chaplygin_discrete *sys, double Omega0, double V_lo,
   return CHAPLYGIN_SUCCESS;
 }
 
+/* The fate R of a point in the units of its velocity scaling *M into
+   *FATE: as it is where SCALED, else brought back to the physical units
+   (*m = 0), CHAPLYGIN_ERANGE where E_final or V_final is not a double there
+   (beyond DBL_MAX, or below DBL_MIN with bits lost).  Shared by
+   basin_point and chaplygin_discrete_fates_phase. */
+static int __attribute__ ((noinline))
+basin_unscale (chaplygin_fate *r, int scaled, int *m, chaplygin_fate *fate)
+{
+  if (!scaled && *m != 0)
+    {
+      int exact_E, exact_V;
+      CHP_TRY (chaplygin_velocity_scale (-*m, CHAPLYGIN_SCALE_ENERGY,
+                                         r->E_final, &r->E_final, &exact_E));
+      CHP_TRY (chaplygin_velocity_scale (-*m, CHAPLYGIN_SCALE_SPEED,
+                                         r->V_final, &r->V_final, &exact_V));
+      if (!exact_E || !exact_V)
+        return CHAPLYGIN_ERANGE;
+      *m = 0;
+    }
+  *fate = *r;
+  return CHAPLYGIN_SUCCESS;
+}
+
 /* The fate of the post-collision state {D+, V, 0, Omega0} (D+ = 0 for
    V > 0, Delta for V < 0) in the units of its velocity scaling
    (chaplygin_velocity_scaling at l0 = L0 + D+: *m, 0 wherever E and H are
@@ -499,19 +563,7 @@ basin_point (const chaplygin_discrete *sys, double Omega0, double V,
                                        &q[CHAPLYGIN_OMEGA]));
   CHP_TRY (chaplygin_discrete_fate_phase (sys, q, max_collisions, NULL, 0,
                                           &r));
-  if (!scaled && *m != 0)
-    {
-      int exact_E, exact_V;
-      CHP_TRY (chaplygin_velocity_scale (-*m, CHAPLYGIN_SCALE_ENERGY,
-                                         r.E_final, &r.E_final, &exact_E));
-      CHP_TRY (chaplygin_velocity_scale (-*m, CHAPLYGIN_SCALE_SPEED,
-                                         r.V_final, &r.V_final, &exact_V));
-      if (!exact_E || !exact_V)
-        return CHAPLYGIN_ERANGE;
-      *m = 0;
-    }
-  *fate = r;
-  return CHAPLYGIN_SUCCESS;
+  return basin_unscale (&r, scaled, m, fate);
 }
 
 /* chaplygin_discrete_basins: Figure 3, the fates of the post-collision
@@ -593,6 +645,292 @@ chaplygin_discrete_basins (const chaplygin_discrete *sys, double Omega0,
             if (scale)
               scale[i] = m_out[i];
           }
+      free (out);
+      free (m_out);
+    }
+  return first;
+}
+
+/* chaplygin_discrete_fates_phase: the lanes.  FATE_LANES orbits are
+   iterated at once, one collision of each in turn, so that the CPU overlaps
+   their independent chains of floating-point operations (one orbit's
+   collision is a chain of a multiply, two fmas and a compare); an orbit
+   that ends hands its lane to the next point, so short and long orbits
+   mix.  Each lane does fate_run's operations in fate_run's order on its
+   own (u, H): the same bits, whatever the lanes' company. */
+#define FATE_LANES 8
+
+/* One orbit in a lane: fate_run's variables. */
+typedef struct
+{
+  double u, H;
+  unsigned long n, nrev, last;
+  int dir, k, m;
+  size_t i;                     /* its point */
+} fate_lane;
+
+/* The points of one call and where their results go. */
+typedef struct
+{
+  const chaplygin_discrete *sys;
+  const fate_coef *c;
+  const double *V, *Omega;
+  size_t n, next;               /* points; the next one to start */
+  unsigned long max;
+  int scaled;
+  chaplygin_fate *fates;
+  int *status, *scale;
+  double l0[2];                 /* L0 + D+ for V+ > 0, V+ < 0 (as
+                                   basin_point forms it) */
+  double hyp[2], lmax[2];       /* hypot (1, l0), fmax (1, |l0|) */
+} fate_batch;
+
+/* Start point I in LN: chaplygin_discrete_basins's checks of a one-point
+   grid, basin_point's velocity scaling, chaplygin_discrete_fate_phase's
+   checks of the scaled state and phase_scale, in their order (the system's
+   checks are done once by the caller).  A status. */
+static int __attribute__ ((noinline))
+batch_start (const fate_batch *b, size_t i, fate_lane *ln)
+{
+  const double V = b->V[i], Omega = b->Omega[i];
+  double Vs, Os;
+  if (!isfinite (V) || !isfinite (Omega))
+    return CHAPLYGIN_EDOM;
+  if (V == 0.0)
+    return CHAPLYGIN_ESTATE;
+  /* chaplygin_velocity_scaling: m = 0 and the inputs themselves wherever
+     its speed sp = max(|V|, hypot(1, l0) |Omega|) (lib/far.c, speed) is in
+     [2^-400, 2^450/max(1, |l0|)]: decided here by the same operations
+     (hypot formed once per call); the library's function otherwise */
+  const int d = V > 0.0 ? 0 : 1;
+  const double sp = fmax (fabs (V), b->hyp[d] * fabs (Omega));
+  if (sp >= 0x1p-400 && sp * b->lmax[d] <= 0x1p450)
+    {
+      ln->m = 0;
+      Vs = V;
+      Os = Omega;
+    }
+  else
+    CHP_TRY (chaplygin_velocity_scaling (b->l0[d], V, Omega, &ln->m, &Vs,
+                                         &Os));
+  if (!chp_finite2 (Vs, Os))
+    return CHAPLYGIN_EDOM;
+  if (Vs == 0.0)
+    return CHAPLYGIN_ESTATE;
+  CHP_TRY (phase_scale (b->c, Vs, Os, &ln->u, &ln->H, &ln->k));
+  ln->dir = Vs > 0.0 ? 1 : -1;
+  ln->n = ln->nrev = ln->last = 0;
+  ln->i = i;
+  return CHAPLYGIN_SUCCESS;
+}
+
+/* The next point that starts into LN (those that fail get their status):
+   1, or 0 when none is left. */
+static int __attribute__ ((noinline))
+batch_fill (fate_batch *b, fate_lane *ln)
+{
+  while (b->next < b->n)
+    {
+      const size_t i = b->next++;
+      const int st = batch_start (b, i, ln);
+      if (st == CHAPLYGIN_SUCCESS)
+        return 1;
+      b->status[i] = st;
+    }
+  return 0;
+}
+
+/* The orbit of LN ended with KIND (UF: fate_run's uf): its results, as
+   fate_run and basin_point deliver them. */
+static void __attribute__ ((noinline))
+batch_finish (fate_batch *b, const fate_lane *ln, int kind, double uf)
+{
+  chaplygin_fate r, out;
+  int m = ln->m;
+  int st = fate_result (b->c, kind, ln->dir, ln->u, uf, ln->H, ln->k, ln->n,
+                        ln->nrev, ln->last, &r);
+  if (st == CHAPLYGIN_SUCCESS)
+    st = basin_unscale (&r, b->scaled, &m, &out);
+  if (st == CHAPLYGIN_SUCCESS)
+    {
+      b->fates[ln->i] = out;
+      if (b->scale)
+        b->scale[ln->i] = m;
+    }
+  b->status[ln->i] = st;
+}
+
+/* The lanes' loop: one collision of every busy lane per round, fate_run's
+   step per lane (the same operations in the same order: the only
+   arithmetic here is the fmas and products of fate_run, none that a
+   compiler could contract, and the rest is in the noinline functions
+   above). */
+static inline __attribute__ ((always_inline)) void
+lanes_body (fate_batch *b)
+{
+  const fate_coef *c = b->c;
+  const unsigned long max = b->max;
+  fate_lane L[FATE_LANES];
+  unsigned busy = 0;
+  for (int l = 0; l < FATE_LANES; l++)
+    if (batch_fill (b, &L[l]))
+      busy |= 1u << l;
+  while (busy)
+    for (int l = 0; l < FATE_LANES; l++)
+      {
+        if (!(busy >> l & 1u))
+          continue;
+        fate_lane *ln = &L[l];
+        const double u = ln->u, H = ln->H;
+        const int dir = ln->dir;
+        const fate_leg *g = &c->leg[dir > 0 ? 0 : 1];
+        double uf = u;
+        int kind;
+        if (H == 0.0)
+          kind = dir;
+        else
+          {
+            const double q = fma (-(g->b * H), H, u);
+            const int outcome = chp_segment_rule (g->crosses, q);
+            if (g->stable && outcome == CHP_SEGMENT_PASS
+                && (uf = fma (g->k * H, H, u)) > 0.0)
+              kind = dir;
+            else if (outcome == CHP_SEGMENT_SPIN)
+              kind = CHAPLYGIN_FATE_SPIN;
+            else if (ln->n == max)
+              kind = CHAPLYGIN_FATE_UNDECIDED;
+            else
+              {
+                const unsigned long n = ++ln->n;
+                if (outcome == CHP_SEGMENT_REVERSE)
+                  {
+                    ln->H = H * g->C2_start;
+                    ln->dir = -dir;
+                    ln->nrev++;
+                    ln->last = n;
+                  }
+                else
+                  {
+                    ln->u = fma (g->e * H, H, q);
+                    ln->H = H * g->C2_far;
+                  }
+                continue;
+              }
+          }
+        batch_finish (b, ln, kind, uf);
+        if (!batch_fill (b, ln))
+          busy &= ~(1u << l);
+      }
+}
+
+static void __attribute__ ((noinline))
+lanes_generic (fate_batch *b)
+{
+  lanes_body (b);
+}
+
+#if defined __GNUC__ && defined __x86_64__
+/* The same compiled for FMA (the default x86-64 target calls libm's fma(),
+   an out-of-line call; one instruction here).  fma() is correctly rounded
+   either way, and nothing else in the body contracts: the same bits. */
+#define FATE_LANES_FMA 1
+static void __attribute__ ((target ("fma"), noinline))
+lanes_fma (fate_batch *b)
+{
+  lanes_body (b);
+}
+#endif
+
+/* chaplygin_discrete_fates_phase: per point i exactly
+   chaplygin_discrete_basins (sys, Omega[i], V[i], V[i], 1, max_collisions,
+   &fates[i], ..., scale ? &scale[i] : NULL) with its return value as
+   status[i], bit for bit; the fate coefficients computed once, the orbits
+   iterated FATE_LANES at a time (above).  Far systems (lib/far.c), and a
+   system whose coefficients fail, go point by point through
+   chaplygin_discrete_basins.  status NULL: every point must succeed, and
+   nothing is written otherwise (buffers of n: CHAPLYGIN_ENOMEM).  The FMA
+   build of the lanes is chosen by the CPU's features (GCC's
+   __builtin_cpu_supports, set once by libgcc at load time).
+   Errors: CHAPLYGIN_EINVAL (NULL sys; V, Omega or fates NULL with n > 0),
+   those of chp_far_open_sys (the system), CHAPLYGIN_ENOMEM; per point
+   those of chaplygin_discrete_basins. */
+int
+chaplygin_discrete_fates_phase (const chaplygin_discrete *sys, size_t n,
+                                const double *V, const double *Omega,
+                                unsigned long max_collisions,
+                                chaplygin_fate *fates, int *status,
+                                int *scale)
+{
+  chp_far f;
+  fate_coef c;
+  if (!sys || (n > 0 && (!V || !Omega || !fates)))
+    return CHAPLYGIN_EINVAL;
+  CHP_TRY (chp_far_open_sys (sys, &f));
+  if (n == 0)
+    return CHAPLYGIN_SUCCESS;
+  int *st = status, *m_out = scale;
+  chaplygin_fate *out = fates;
+  if (!status)
+    {
+      st = malloc (n * sizeof *st);
+      out = malloc (n * sizeof *out);
+      m_out = scale ? malloc (n * sizeof *m_out) : NULL;
+      if (!st || !out || (scale && !m_out))
+        {
+          free (st);
+          free (out);
+          free (m_out);
+          return CHAPLYGIN_ENOMEM;
+        }
+    }
+  if (f.k == 0 && fate_coef_init (sys, &c) == CHAPLYGIN_SUCCESS)
+    {
+      fate_batch b = { sys, &c, V, Omega, n, 0, max_collisions,
+                       scale != NULL, out, st, m_out,
+                       { sys->L0 + 0.0, sys->L0 + sys->Delta }, { 0, 0 },
+                       { 0, 0 } };
+      for (int d = 0; d < 2; d++)
+        {
+          b.hyp[d] = hypot (1.0, b.l0[d]);
+          b.lmax[d] = fmax (1.0, fabs (b.l0[d]));
+          if (!isfinite (b.l0[d]))      /* never: the library decides */
+            b.hyp[d] = b.lmax[d] = INFINITY;
+        }
+#ifdef FATE_LANES_FMA
+      if (__builtin_cpu_supports ("fma"))
+        lanes_fma (&b);
+      else
+#endif
+        lanes_generic (&b);
+    }
+  else
+    for (size_t i = 0; i < n; i++)
+      {
+        chaplygin_fate r;
+        int s, m = 0;
+        st[i] = chaplygin_discrete_basins (sys, Omega[i], V[i], V[i], 1,
+                                           max_collisions, &r, &s,
+                                           scale ? &m : NULL);
+        if (st[i] == CHAPLYGIN_SUCCESS)
+          {
+            out[i] = r;
+            if (m_out)
+              m_out[i] = m;
+          }
+      }
+  int first = CHAPLYGIN_SUCCESS;
+  for (size_t i = 0; i < n && first == CHAPLYGIN_SUCCESS; i++)
+    first = st[i];
+  if (!status)
+    {
+      if (first == CHAPLYGIN_SUCCESS)
+        for (size_t i = 0; i < n; i++)
+          {
+            fates[i] = out[i];
+            if (scale)
+              scale[i] = m_out[i];
+          }
+      free (st);
       free (out);
       free (m_out);
     }

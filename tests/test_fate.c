@@ -13,6 +13,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "internal.h"
 #include "testutil.h"
@@ -1508,6 +1509,237 @@ START_TEST (basins_status_scale)
 }
 END_TEST
 
+/* chaplygin_discrete_fates_phase against chaplygin_discrete_basins on the
+   one-point grid, point by point: the same status, and where it succeeds
+   the same bits of every field of the fate and the same scale.  Outputs
+   of failing points are not written (the sentinel survives). */
+static int
+same_bits (double a, double b)
+{
+  unsigned long long x, y;
+  memcpy (&x, &a, sizeof x);
+  memcpy (&y, &b, sizeof y);
+  return x == y;
+}
+
+static void
+check_batch (const chaplygin_discrete *sys, size_t n, const double *V,
+             const double *Om, unsigned long max, int with_scale,
+             size_t *n_ok)
+{
+  chaplygin_fate *f = malloc ((n ? n : 1) * sizeof *f);
+  int *st = malloc ((n ? n : 1) * sizeof *st);
+  int *m = malloc ((n ? n : 1) * sizeof *m);
+  ck_assert (f && st && m);
+  memset (f, 0xa5, (n ? n : 1) * sizeof *f);
+  for (size_t i = 0; i < n; i++)
+    m[i] = -77777;
+  int first = chaplygin_discrete_fates_phase (sys, n, V, Om, max, f, st,
+                                              with_scale ? m : NULL);
+  int want_first = CHAPLYGIN_SUCCESS;
+  chaplygin_fate sentinel;
+  memset (&sentinel, 0xa5, sizeof sentinel);
+  for (size_t i = 0; i < n; i++)
+    {
+      chaplygin_fate g;
+      int sg = -1, mg = 0;
+      int rc = chaplygin_discrete_basins (sys, Om[i], V[i], V[i], 1, max, &g,
+                                          &sg, with_scale ? &mg : NULL);
+      if (rc != st[i])
+        ck_abort_msg ("point %zu (V = %a, Omega = %a, max %lu): status %d, "
+                      "basins %d", i, V[i], Om[i], max, st[i], rc);
+      if (want_first == CHAPLYGIN_SUCCESS)
+        want_first = rc;
+      if (rc != CHAPLYGIN_SUCCESS)
+        {
+          ck_assert (!memcmp (&f[i], &sentinel, sizeof sentinel));
+          ck_assert_int_eq (m[i], -77777);
+          continue;
+        }
+      ++*n_ok;
+      if (!(f[i].kind == g.kind && f[i].collisions == g.collisions
+            && f[i].reversals == g.reversals
+            && f[i].last_reversal == g.last_reversal
+            && same_bits (f[i].E_final, g.E_final)
+            && same_bits (f[i].V_final, g.V_final)
+            && (!with_scale || m[i] == mg)))
+        ck_abort_msg ("point %zu (V = %a, Omega = %a, max %lu): kind %d/%d "
+                      "collisions %lu/%lu reversals %lu/%lu last %lu/%lu "
+                      "E_final %a/%a V_final %a/%a scale %d/%d", i, V[i],
+                      Om[i], max, f[i].kind, g.kind, f[i].collisions,
+                      g.collisions, f[i].reversals, g.reversals,
+                      f[i].last_reversal, g.last_reversal, f[i].E_final,
+                      g.E_final, f[i].V_final, g.V_final, m[i], mg);
+    }
+  ck_assert_int_eq (first, want_first);
+  free (f);
+  free (st);
+  free (m);
+}
+
+/* A value of magnitude between 1e-300 and 1e200 (log-uniform) or moderate,
+   either sign, or a special one. */
+static double
+batch_value (tu_rng *r, double moderate)
+{
+  double p = tu_uniform (r, 0, 1);
+  double sign = tu_uniform (r, 0, 1) < 0.5 ? -1.0 : 1.0;
+  if (p < 0.5)
+    return sign * moderate * tu_uniform (r, 0.001, 1.0);
+  if (p < 0.85)
+    return sign * pow (10.0, tu_uniform (r, -300, 200));
+  static const double special[] = { 0.0, -0.0, 1e-300, 1e200, -1e-300,
+    DBL_MIN, DBL_TRUE_MIN, DBL_MAX, 0x1p-1074, 1e154, 1e-154
+  };
+  return sign * special[(int) tu_uniform (r, 0, 11)];
+}
+
+START_TEST (fates_phase_bits)
+{
+  /* the skates: Figure 3, no reversal either way, a rest boundary (r* > 1),
+     the mass centre at an end, segments through l = 0 with |C2| > 1
+     (forward, backward: passes that do not settle the fate), random ones,
+     and far slots */
+  double skates[][2] = {
+    { -0.5, 1.0 }, { 0.3, 1.0 }, { -2.5, 1.0 }, { -0.95, 1.0 },
+    { -1.0, 1.0 }, { 0.0, 2.0 }, { -0.25, 0.125 }, { -7.0, 3.0 },
+    { -5.0, 6.0 }, { -1.0, 6.0 },
+    { 1e300, 1.0 }, { -1e300, 1.0 }, { -1e300, 3e299 }, { 0, 0 }, { 0, 0 },
+    { 0, 0 }, { 0, 0 }
+  };
+  const size_t nsk = sizeof skates / sizeof skates[0];
+  tu_rng r;
+  tu_rng_seed (&r, 0xfa7e5ULL);
+  for (size_t s = 13; s < nsk; s++)
+    {
+      skates[s][0] = tu_uniform (&r, -3, 2);
+      skates[s][1] = tu_uniform (&r, 0.1, 3);
+    }
+  enum { N = 700 };
+  double V[N], Om[N];
+  size_t n_ok = 0;
+  static const unsigned long maxes[] = { 0, 1, 3, 100000 };
+  for (size_t s = 0; s < nsk; s++)
+    {
+      chaplygin_discrete sys;
+      ck_assert_ok (chaplygin_discrete_init (&sys, skates[s][0],
+                                             skates[s][1]));
+      const double L0 = skates[s][0], Delta = skates[s][1];
+      size_t n = 0;
+      /* the Figure 3 boundaries and their neighbours (spin and rest
+         boundaries: the last doubles of each basin), Omega = 4/5 */
+      double b[48];
+      size_t nb = 0;
+      if (s < 4)
+        ck_assert_ok (chaplygin_discrete_basin_boundaries (&sys, 0.8, 1e-9,
+                                                           0.6, 4000, 100000,
+                                                           b, 48, &nb));
+      for (size_t i = 0; i < nb && i < 48 && n + 4 <= N; i++)
+        {
+          const double v[4] = { b[i], nextafter (b[i], 0), nextafter (b[i], 1),
+                                -b[i] };
+          for (int j = 0; j < 4; j++)
+            {
+              V[n] = v[j];
+              Om[n++] = 0.8;
+            }
+        }
+      /* the spinning state at collision 0: V+^2 = l0^2 (1 + l0^2) Omega^2 */
+      for (int j = 0; j < 8 && n < N; j++)
+        {
+          const double Omj = tu_uniform (&r, 0.1, 2);
+          const double l0 = j % 2 ? L0 : L0 + Delta;
+          const double v = fabs (l0) * sqrt (1 + l0 * l0) * Omj;
+          V[n] = j % 2 ? v : -v;
+          Om[n++] = Omj;
+        }
+      /* NaN and infinities, in both places */
+      const double odd[][2] = { { NAN, 0.5 }, { 0.5, NAN }, { INFINITY, 1 },
+                                { 1, -INFINITY }, { 0.0, 1.0 }, { -0.0, 1.0 },
+                                { 0.25, 0.0 }, { -0.25, 0.0 } };
+      for (size_t j = 0; j < sizeof odd / sizeof odd[0]; j++)
+        {
+          V[n] = odd[j][0];
+          Om[n++] = odd[j][1];
+        }
+      while (n < N)
+        {
+          V[n] = batch_value (&r, 2.0);
+          Om[n++] = batch_value (&r, 3.0);
+        }
+      for (size_t k = 0; k < sizeof maxes / sizeof maxes[0]; k++)
+        for (int sc = 0; sc < 2; sc++)
+          {
+            check_batch (&sys, N, V, Om, maxes[k], sc, &n_ok);
+            /* other company: short calls from other offsets */
+            const size_t len[] = { 0, 1, 7, 9, 64 };
+            for (size_t j = 0; j < 5; j++)
+              {
+                size_t off = (size_t) tu_uniform (&r, 0, N - 64);
+                check_batch (&sys, len[j], V + off, Om + off, maxes[k], sc,
+                             &n_ok);
+              }
+          }
+    }
+  /* the comparison is not empty */
+  ck_assert (n_ok > 20000);
+}
+END_TEST
+
+START_TEST (fates_phase_errors)
+{
+  chaplygin_discrete sys;
+  ck_assert_ok (chaplygin_discrete_init (&sys, -0.5, 1.0));
+  const double V[3] = { 0.3, -0.2, 0.1 }, Om[3] = { 0.8, 0.8, 0.8 },
+    Vbad[3] = { 0.3, 0.0, NAN };
+  chaplygin_fate f[3], g[3];
+  int st[3], m[3], mg[3];
+  ck_assert_status (chaplygin_discrete_fates_phase (NULL, 3, V, Om, 10, f, st,
+                                                    m), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_fates_phase (&sys, 3, NULL, Om, 10, f,
+                                                    st, m), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_fates_phase (&sys, 3, V, NULL, 10, f,
+                                                    st, m), CHAPLYGIN_EINVAL);
+  ck_assert_status (chaplygin_discrete_fates_phase (&sys, 3, V, Om, 10, NULL,
+                                                    st, m), CHAPLYGIN_EINVAL);
+  ck_assert_ok (chaplygin_discrete_fates_phase (&sys, 0, NULL, NULL, 10, NULL,
+                                                NULL, NULL));
+  /* without status: all or nothing */
+  ck_assert_ok (chaplygin_discrete_fates_phase (&sys, 3, V, Om, 100000, f,
+                                                NULL, m));
+  ck_assert_ok (chaplygin_discrete_basins (&sys, 0.8, 0.3, 0.3, 1, 100000,
+                                           &g[0], NULL, &mg[0]));
+  ck_assert (f[0].kind == g[0].kind && same_bits (f[0].E_final, g[0].E_final)
+             && m[0] == mg[0]);
+  memset (g, 0x5a, sizeof g);
+  memcpy (f, g, sizeof f);
+  for (int i = 0; i < 3; i++)
+    m[i] = mg[i] = 12345;
+  ck_assert_status (chaplygin_discrete_fates_phase (&sys, 3, Vbad, Om, 100000,
+                                                    f, NULL, m),
+                    CHAPLYGIN_ESTATE);
+  ck_assert (!memcmp (f, g, sizeof f) && !memcmp (m, mg, sizeof m));
+  /* the first failing point's status in index order */
+  ck_assert_status (chaplygin_discrete_fates_phase (&sys, 3, Vbad, Om, 100000,
+                                                    f, st, NULL),
+                    CHAPLYGIN_ESTATE);
+  ck_assert (st[0] == CHAPLYGIN_SUCCESS && st[1] == CHAPLYGIN_ESTATE
+             && st[2] == CHAPLYGIN_EDOM);
+  /* a system chaplygin_discrete_init would not make: as basins */
+  chaplygin_discrete bad = sys;
+  bad.Delta = NAN;
+  ck_assert_status (chaplygin_discrete_fates_phase (&bad, 3, V, Om, 10, f, st,
+                                                    m),
+                    chaplygin_discrete_basins (&bad, 0.8, 0.3, 0.3, 1, 10, g,
+                                               st, m));
+  bad = sys;
+  bad.C2[0] = INFINITY;
+  size_t n_ok = 0;
+  check_batch (&bad, 3, V, Om, 10, 1, &n_ok);
+  ck_assert_int_eq (n_ok, 0);
+}
+END_TEST
+
 int
 main (void)
 {
@@ -1527,5 +1759,7 @@ main (void)
   tu_add (s, "basins_nonsymmetric", basins_nonsymmetric);
   tu_add (s, "basins_errors", basins_errors);
   tu_add (s, "basins_status_scale", basins_status_scale);
+  tu_add (s, "fates_phase_bits", fates_phase_bits);
+  tu_add (s, "fates_phase_errors", fates_phase_errors);
   return tu_run (s);
 }

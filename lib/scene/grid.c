@@ -92,7 +92,9 @@
 #define BLOCK_POINTS 32768          /* points computed per block (two
                                        blocks in memory: 16 MB, with the
                                        rows' text 41 MB) */
-#define CHUNK_POINTS 64             /* OpenMP dynamic chunk */
+#define CHUNK_POINTS 64             /* OpenMP dynamic chunk, and the
+                                       points of one call of
+                                       chaplygin_discrete_fates_phase */
 #define ROW_CELLS 9                 /* cells of the widest row (atlas) */
 
 /* A sweep ready to compute: the scene and what is derived from it. */
@@ -248,6 +250,9 @@ certified_fate (const chaplygin_discrete *sys, double V, double Omega,
   return status;
 }
 
+static void put_fate (int status, int m, const chaplygin_fate *fate,
+                      chaplygin_cell *cells);
+
 /* The fate cells fate, collisions, reversals, E_final, V_final, status of
    the post-collision state {D+, V, 0, Omega} of the skate SYS at CELLS
    (SYS_STATUS: chaplygin_discrete_init's status for it; a failure is the
@@ -270,16 +275,25 @@ fate_cells (const scene *sc, const chaplygin_discrete *sys, int sys_status,
     (void) chaplygin_discrete_basins (sys, Omega, V, V, 1,
                                       (unsigned long) sc->collisions, &fate,
                                       &status, &m);
+  put_fate (status, m, &fate, cells);
+}
+
+/* The fate cells of a point with STATUS, scaling M and FATE (read only on
+   success) at CELLS. */
+static void
+put_fate (int status, int m, const chaplygin_fate *fate,
+          chaplygin_cell *cells)
+{
   for (int i = 0; i < 5; i++)
     put_missing (&cells[i]);
   put_int (&cells[5], status);
   if (status != CHAPLYGIN_SUCCESS)
     return;
-  put_int (&cells[0], fate.kind);
-  put_int (&cells[1], (long long) fate.collisions);
-  put_int (&cells[2], (long long) fate.reversals);
-  put_scaled (&cells[3], m, CHAPLYGIN_SCALE_ENERGY, fate.E_final);
-  put_scaled (&cells[4], m, CHAPLYGIN_SCALE_SPEED, fate.V_final);
+  put_int (&cells[0], fate->kind);
+  put_int (&cells[1], (long long) fate->collisions);
+  put_int (&cells[2], (long long) fate->reversals);
+  put_scaled (&cells[3], m, CHAPLYGIN_SCALE_ENERGY, fate->E_final);
+  put_scaled (&cells[4], m, CHAPLYGIN_SCALE_SPEED, fate->V_final);
 }
 
 /* The row of basins point K into ROW. */
@@ -293,18 +307,30 @@ basins_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
   fate_cells (sc, &plan->sys, plan->sys_status, V, sc->Omega, &row[2]);
 }
 
-/* The row of atlas point K into ROW: the scene's L0, Delta, V, Omega with
-   x and y in place of the two it sweeps. */
+/* Atlas point K: its x and y, and the scene's L0, Delta, V, Omega with x
+   and y in place of the two it sweeps (Q, indexed by the axes). */
+static void
+atlas_point (const sweep_plan *plan, uint64_t k, double *x, double *y,
+             double q[ATLAS_AXES])
+{
+  const scene *sc = plan->sc;
+  *x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
+  *y = grid_value (sc->y_min, sc->y_max, (uint64_t) sc->ny, k / plan->nx);
+  q[AXIS_L0] = sc->L0;
+  q[AXIS_DELTA] = sc->Delta;
+  q[AXIS_V] = sc->V;
+  q[AXIS_OMEGA] = sc->Omega;
+  q[sc->x_axis] = *x;
+  q[sc->y_axis] = *y;
+}
+
+/* The row of atlas point K into ROW. */
 static void
 atlas_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
 {
   const scene *sc = plan->sc;
-  double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
-  double y = grid_value (sc->y_min, sc->y_max, (uint64_t) sc->ny,
-                         k / plan->nx);
-  double q[ATLAS_AXES] = { sc->L0, sc->Delta, sc->V, sc->Omega };
-  q[sc->x_axis] = x;
-  q[sc->y_axis] = y;
+  double x, y, q[ATLAS_AXES];
+  atlas_point (plan, k, &x, &y, q);
   put_int (&row[0], (long long) k);
   put_real (&row[1], x);
   put_real (&row[2], y);
@@ -538,6 +564,85 @@ block_row (const sweep_plan *plan, row_block *b, int i, uint64_t k,
                                     ROW_TEXT, ncols, col, cells);
 }
 
+/* Whether the fates of PLAN's points are computed a chunk at a time by
+   chaplygin_discrete_fates_phase: a basins sweep, or an atlas of a fixed
+   skate, by the library's iteration (the certified method goes point by
+   point). */
+static int
+plan_batches (const sweep_plan *plan)
+{
+  const scene *sc = plan->sc;
+  return (sc->sweep == SWEEP_BASINS
+          || (sc->sweep == SWEEP_ATLAS && !atlas_sweeps_skate (sc)))
+    && sc->method != CHAPLYGIN_CERTIFIED
+    && plan->sys_status == CHAPLYGIN_SUCCESS;
+}
+
+/* Rows I0 .. I1 - 1 of B (at most CHUNK_POINTS) for the points BASE + i of
+   PLAN.  Where plan_batches, their fates in one call of
+   chaplygin_discrete_fates_phase (bit for bit each point's
+   chaplygin_discrete_basins, as fate_cells calls it: the same rows),
+   otherwise point by point. */
+static void
+block_rows (const sweep_plan *plan, row_block *b, int i0, int i1,
+            uint64_t base, const chaplygin_column *col, size_t ncols)
+{
+  if (!plan_batches (plan))
+    {
+      for (int i = i0; i < i1; i++)
+        block_row (plan, b, i, plan_k (plan, base + (uint64_t) i), col,
+                   ncols);
+      return;
+    }
+  const scene *sc = plan->sc;
+  double V[CHUNK_POINTS] = { 0 }, Om[CHUNK_POINTS] = { 0 },
+    x[CHUNK_POINTS], y[CHUNK_POINTS];
+  uint64_t k[CHUNK_POINTS];
+  chaplygin_fate fate[CHUNK_POINTS];
+  int status[CHUNK_POINTS], m[CHUNK_POINTS];
+  const int n = i1 - i0;
+  for (int j = 0; j < n; j++)
+    {
+      k[j] = plan_k (plan, base + (uint64_t) (i0 + j));
+      if (sc->sweep == SWEEP_BASINS)
+        {
+          V[j] = grid_value (sc->x_min, sc->x_max, plan->nx, k[j]);
+          Om[j] = sc->Omega;
+        }
+      else
+        {
+          double q[ATLAS_AXES];
+          atlas_point (plan, k[j], &x[j], &y[j], q);
+          V[j] = q[AXIS_V];
+          Om[j] = q[AXIS_OMEGA];
+        }
+      m[j] = 0;
+    }
+  (void) chaplygin_discrete_fates_phase (&plan->sys, (size_t) n, V, Om,
+                                         (unsigned long) sc->collisions, fate,
+                                         status, m);
+  for (int j = 0; j < n; j++)
+    {
+      chaplygin_cell *cells = b->cells + (size_t) (i0 + j) * ROW_CELLS;
+      put_int (&cells[0], (long long) k[j]);
+      if (sc->sweep == SWEEP_BASINS)
+        {
+          put_real (&cells[1], V[j]);
+          put_fate (status[j], m[j], &fate[j], &cells[2]);
+        }
+      else
+        {
+          put_real (&cells[1], x[j]);
+          put_real (&cells[2], y[j]);
+          put_fate (status[j], m[j], &fate[j], &cells[3]);
+        }
+      if (b->text)
+        b->len[i0 + j] = chaplygin_row_text (b->text
+                                             + (size_t) (i0 + j) * ROW_TEXT,
+                                             ROW_TEXT, ncols, col, cells);
+    }
+}
+
 /* Deliver the rows of B (NCOLS cells each) through S, in order: 0, or -1
    where the caller asks to stop. */
 static int
@@ -603,21 +708,24 @@ run_blocks (const sweep_plan *plan, sink *s, int threads)
 #endif
         if (drain && deliver (s, drain, ncols) != 0)
           set_stop (&stop);
+        /* a chunk of CHUNK_POINTS rows per task (the last one shorter) */
+        const int nchunks = (n + CHUNK_POINTS - 1) / CHUNK_POINTS;
 #ifdef _OPENMP
-#pragma omp for schedule(dynamic, CHUNK_POINTS)
+#pragma omp for schedule(dynamic, 1)
 #endif
-        for (int i = 0; i < n; i++)
+        for (int c = 0; c < nchunks; c++)
           {
             if (get_stop (&stop))
               continue;
-            block_row (plan, fill, i, plan_k (plan, base + (uint64_t) i),
-                       col, ncols);
+            const int i0 = c * CHUNK_POINTS;
+            const int i1 = n - i0 < CHUNK_POINTS ? n : i0 + CHUNK_POINTS;
+            block_rows (plan, fill, i0, i1, base, col, ncols);
             uint64_t now;
 #ifdef _OPENMP
 #pragma omp atomic capture
 #endif
-            now = ++done;
-            if (thread_number () == 0 && now % CHUNK_POINTS == 0
+            now = done += (uint64_t) (i1 - i0);
+            if (thread_number () == 0
                 && sink_progress (s, (double) now, (double) count) != 0)
               set_stop (&stop);
           }
