@@ -8,6 +8,8 @@ shows the header's comment and the C prototype), and by hand:
   step_eh_n(sys, state, n)    n E,H-only steps (the library's fast path)
   fate, fate_phase            the final motion, from one or many states
   basins, basin_boundaries    Figure 3's grid of fates and its boundaries
+  fates_phase(sys, V, Omega, n)  the fates of many (V+, Omega+) at once
+                              (the batch kernel of the atlas)
 
 A system is made once: sys = chaplygin.discrete.init(L0, Delta) (or
 chaplygin.Discrete(L0, Delta)).
@@ -19,7 +21,7 @@ from . import _core
 from ._core import (_ffi, _lib, _NULL, _fail, _as_int, _as_struct, _flat,
                     _ptr, _options, _request, _struct_class, _nt, _SC,
                     _check_errors, _scalar_dtype, _polled, _real,
-                    _refuse_masked)
+                    _refuse_masked, _as_float)
 from ._groups import export
 
 __all__ = []
@@ -32,7 +34,7 @@ Fate = _struct_class('chaplygin_fate')
 _UL = _scalar_dtype('unsigned long')
 
 __all__ += ['orbit', 'step_eh_n', 'fate', 'fate_phase', 'basins',
-            'basin_boundaries', 'Discrete', 'DiscreteState',
+            'fates_phase', 'basin_boundaries', 'Discrete', 'DiscreteState',
             'DiscreteEvent', 'Fate']
 
 
@@ -322,6 +324,66 @@ def basins(sys, Omega0, V_lo, V_hi, n, max_collisions, *, errors='raise'):
         flat = np.flatnonzero(status)
         _fail(rc, 'chaplygin_discrete_basins', statuses=status, partial=out,
               index=int(flat[0]) if flat.size else None)
+    if errors == 'return':
+        return _nt(('fates', 'status'))(out, status)
+    return out
+
+
+# Points per call of fates_phase: a few ms (the interpreter runs signal
+# handlers between the calls: Ctrl-C interrupts it).
+_FATES_BLOCK = 1 << 16
+
+
+def fates_phase(sys, V, Omega, max_collisions, *, errors='raise'):
+    """discrete.fates_phase(sys, V, Omega, max_collisions, *,
+    errors='raise')
+
+    The fates of the post-collision states {D+, V[i], 0, Omega[i]} (V and
+    Omega broadcast together; D+ = 0 for V > 0, Delta for V < 0), each bit
+    for bit what discrete.basins gives for the one-point grid V[i] at
+    Omega0 = Omega[i], as a structured array of Fate.dtype of the broadcast
+    shape (a Fate for two numbers): the library's batch kernel, the skate's
+    coefficients formed once and several orbits iterated at once.  A point
+    that fails (V = 0: StateError; a non-finite one: DomainError; a final
+    energy beyond the doubles: RangeError) fails alone: its row is zero.
+    errors='raise' raises the first failure's exception (statuses and
+    partial attached); errors='return' returns (fates, status).
+
+    C: int chaplygin_discrete_fates_phase(const chaplygin_discrete *sys,
+    size_t n, const double *V, const double *Omega,
+    unsigned long max_collisions, chaplygin_fate *fates, int *status,
+    int *scale)
+    """
+    _check_errors(errors)
+    _system(sys)
+    Va, Oa = np.broadcast_arrays(_as_float('V', V), _as_float('Omega',
+                                                              Omega))
+    max_collisions = _count('max_collisions', max_collisions)
+    shape = Va.shape
+    Vf = np.ascontiguousarray(Va).reshape(-1)
+    Of = np.ascontiguousarray(Oa).reshape(-1)
+    n = Vf.size
+    out = np.zeros(n, Fate.dtype)
+    status = np.zeros(n, np.intc)
+    first = 0
+    for j in range(0, n, _FATES_BLOCK):
+        k = min(_FATES_BLOCK, n - j)
+        rc = _lib.chaplygin_discrete_fates_phase(
+            sys._c, k, _ffi.cast('double *', _ptr(Vf)) + j,
+            _ffi.cast('double *', _ptr(Of)) + j, max_collisions,
+            _ffi.cast('chaplygin_fate *', _ptr(out)) + j,
+            _ffi.cast('int *', _ptr(status)) + j, _NULL)
+        if rc and not first:
+            first = rc
+    out, status = out.reshape(shape), status.reshape(shape)
+    if first and errors == 'raise':
+        flat = np.flatnonzero(status.reshape(-1))
+        _fail(first, 'chaplygin_discrete_fates_phase', statuses=status,
+              partial=out, index=np.unravel_index(int(flat[0]), shape)
+              if shape else None)
+    if not shape:
+        out = Fate.from_record(out[()])
+        status = int(status)
     if errors == 'return':
         return _nt(('fates', 'status'))(out, status)
     return out

@@ -318,3 +318,30 @@ def test_certified_decides_the_near_tie(srcdir, tmp_path):
     assert closed['fate'].item() == -1
     assert closed['collisions'].item() == 2
     assert abs(closed['E_final'].item() - float(E_final)) > 0.1
+
+
+def test_fates_phase_is_basins_point_by_point():
+    """discrete.fates_phase, the batch kernel of the atlas, against
+    discrete.basins on the one-point grid of each point: the same fates bit
+    for bit, failures alone (V = 0, NaN)."""
+    sys_ = c.discrete.init(-0.5, 1.0)
+    rng = np.random.default_rng(29)
+    V = np.concatenate([rng.uniform(-1, 1, 300), [0.0, np.nan, 1e-300,
+                                                   1e200, -0.75]])
+    Om = np.concatenate([rng.uniform(-2, 2, 300), [0.8, 0.8, 1e-300, 1e200,
+                                                    0.8]])
+    got, status = c.discrete.fates_phase(sys_, V, Om, 10**5,
+                                         errors='return')
+    for i in range(V.size):
+        one, st = c.discrete.basins(sys_, Om[i], V[i], V[i], 1, 10**5,
+                                    errors='return') \
+            if np.isfinite(V[i]) else (None, [c.EDOM])
+        assert status[i] == st[0], i
+        if st[0] == 0:         # field by field: padding is no value
+            for name in c.Fate.dtype.names:
+                assert got[i][name].tobytes() == one[0][name].tobytes(), i
+    assert status[300] == c.ESTATE and status[301] == c.EDOM
+    with pytest.raises(c.StateError):
+        c.discrete.fates_phase(sys_, [0.3, 0.0], 0.8, 10)
+    f = c.discrete.fates_phase(sys_, 0.3, 0.8, 10**5)
+    assert isinstance(f, c.Fate) and f.kind == -1

@@ -89,6 +89,11 @@ HAND = {
     'discrete.basins': [
         lambda: d.basins(FIG3, 0.8, -0.1, 0.1, 3, 1000, errors='return'),
         lambda: d.basins(FIG3, 0.8, -0.1, 0.1, 3, 1000)],
+    'discrete.fates_phase': [
+        lambda: d.fates_phase(FIG3, [0.3, 0.0, -0.5], 0.8, 1000,
+                              errors='return'),
+        lambda: d.fates_phase(FIG3, 0.3, 0.8, 1000),
+        lambda: d.fates_phase(FIG3, [0.3, 0.0], 0.8, 1000)],
     'discrete.basin_boundaries': [
         lambda: d.basin_boundaries(FIG3, 0.8, 0.0005, 0.5, 200, 10**5)],
     'smooth.path': [

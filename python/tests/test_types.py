@@ -57,6 +57,10 @@ HAND = {
         ('real', lambda v: d.basins(FIG3, 0.8, 0.1, v, 3, 9)),
         ('int', lambda v: d.basins(FIG3, 0.8, 0.1, 0.5, v, 9)),
         ('int', lambda v: d.basins(FIG3, 0.8, 0.1, 0.5, 3, v))],
+    'discrete.fates_phase': [
+        ('reals', lambda v: d.fates_phase(FIG3, v, 0.8, 9)),
+        ('reals', lambda v: d.fates_phase(FIG3, 0.3, v, 9)),
+        ('int', lambda v: d.fates_phase(FIG3, 0.3, 0.8, v))],
     'discrete.basin_boundaries': [
         ('real', lambda v: d.basin_boundaries(FIG3, v, 0.1, 0.5, 3, 9)),
         ('real', lambda v: d.basin_boundaries(FIG3, 0.8, v, 0.5, 3, 9)),
