@@ -21,7 +21,7 @@ unset CHAPLYGIN_NO_PROGRESS SLURM_ARRAY_TASK_ID SLURM_ARRAY_TASK_COUNT \
   SLURM_CPUS_PER_TASK SCENE SHARD_DIR MERGED
 
 . "${top_srcdir:-.}/tools/tap-lib.sh"
-tap_start test-merge 32
+tap_start test-merge 33
 
 # The program by an absolute name (the scripts run in other directories).
 case $prog in
@@ -274,6 +274,10 @@ sed '$s/^# end: .*/# end: stopped at collision 3 of 9: the row limit/' \
 refuse "a shard whose end line is not complete" \
   "stopped\.csv: the shard is not complete: its end line is '# end: stopped" \
   shard-0.csv shard-1.csv stopped.csv shard-3.csv
+sed '$s/ of 1200$/ of 1500/' shard-2.csv >total.csv
+refuse "a shard whose end line gives another number of points in all" \
+  'total\.csv: a shard of a sweep of 1500 points, shard-0\.csv of one of 1200' \
+  shard-0.csv shard-1.csv total.csv shard-3.csv
 # A row deleted inside the shard: its end line is intact, so only the
 # copy (pass 2) sees it; the output is still not written.
 awk '!/^#/ && $0 ~ /^650,/ { next } { print }' shard-2.csv >lost.csv
