@@ -3,6 +3,8 @@
  *   chaplygin run SCENE.ini [OPTION...]
  *                                 run a scene (scene.h, run.c)
  *   chaplygin sweep SCENE.ini ... a parameter sweep (sweep-main.c)
+ *   chaplygin merge [-o FILE] SHARD.csv...
+ *                                 a sweep's shards joined, checked (merge.c)
  *   chaplygin skate [OPTION...]   iterate the discrete skate's return map
  *   chaplygin plot SCENE.ini -o FILE   draw a scene (plot.c)
  *   chaplygin eq LABEL ...        evaluate an equation (eq.c)
@@ -34,6 +36,7 @@
 #include "cli.h"
 #include "csv.h"
 #include "eq.h"
+#include "merge.h"
 #include "output.h"
 #include "plot.h"
 #include "sweep.h"
@@ -50,6 +53,7 @@ static const char usage_text[] =
   "Usage: chaplygin run SCENE.ini [-o FILE] [--compare] [--stats]\n"
   "                     [--max-rows N] [--no-provenance] [--print-scene]\n"
   "       chaplygin sweep SCENE.ini [--shard i/N] [--threads N] [-o FILE] ...\n"
+  "       chaplygin merge [-o FILE] SHARD.csv...\n"
   "       chaplygin skate [OPTION...]\n"
   "       chaplygin plot SCENE.ini -o FILE.png|FILE.svg [--format F]\n"
   "       chaplygin eq LABEL [NAME=VALUE...] [--csv] | eq --list [--csv]\n"
@@ -66,6 +70,9 @@ static const char usage_text[] =
   "             an initial state (or the scene's sweep), CSV on stdout\n"
   "  sweep      the parameter sweep of a scene's [sweep] section (Figures 2,\n"
   "             3), in parallel or in shards ('chaplygin sweep --help')\n"
+  "  merge      join the outputs of a sweep's shards into the whole sweep's,\n"
+  "             checking that no point is lost or repeated ('chaplygin merge\n"
+  "             --help')\n"
   "  skate      iterate the discrete skate's return map (B.3)/(B.4) from a\n"
   "             post-collision state given by options (below)\n"
   "  plot       draw a scene with gnuplot: the path and V, Omega, theta, E,\n"
@@ -546,6 +553,8 @@ main (int argc, char **argv)
     return run_scene (argc - 2, argv + 2);
   if (strcmp (cmd, "sweep") == 0)
     return sweep_main (argc - 2, argv + 2);
+  if (strcmp (cmd, "merge") == 0)
+    return merge_main (argc - 2, argv + 2);
   if (strcmp (cmd, "eq") == 0)
     return eq_main (argc - 2, argv + 2);
   if (strcmp (cmd, "plot") == 0)

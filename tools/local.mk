@@ -6,7 +6,7 @@ tools_chaplygin_SOURCES = tools/chaplygin.c tools/csv.c tools/csv.h \
 	tools/eq.c tools/eq.h tools/cli.c tools/cli.h tools/output.c \
 	tools/output.h tools/provenance.c tools/provenance.h tools/plot.c \
 	tools/plot.h tools/plot-script.c tools/plot-script.h tools/gnuplot.c \
-	tools/gnuplot.h
+	tools/gnuplot.h tools/merge.c tools/merge.h
 nodist_tools_chaplygin_SOURCES = tools/plot-style.h
 tools_chaplygin_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene \
 	-I$(top_builddir)/tools -DCHAPLYGIN_SCENES_DIR='"$(scenesdir)"'
@@ -50,9 +50,10 @@ CLI_TESTS = tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
 	tools/test-scenes.sh tools/test-eq.sh tools/test-manpage.sh \
 	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
 	tools/test-scaled.sh tools/test-output.sh tools/test-plot-scenes.sh \
-	tools/test-certified.sh
+	tools/test-certified.sh tools/test-merge.sh
 TESTS += $(CLI_TESTS)
 EXTRA_DIST += tools/tap-lib.sh tools/test-cli.sh tools/test-run.sh tools/test-sweep.sh \
+	tools/test-merge.sh \
 	tools/test-scaled.sh tools/test-certified.sh \
 	tools/test-bounds.sh tools/test-provenance.sh tools/test-plot.sh \
 	tools/test-output.sh tools/test-plot-scenes.sh tools/fuzz-replay.sh tools/test-scenes.sh tools/test-eq.sh \

@@ -159,10 +159,7 @@ output_init (void)
 /* Files                                                               */
 /* ------------------------------------------------------------------ */
 
-/* Whether the output NAME (NULL or "-": standard output) is the regular
-   file the input INPUT ("-": standard input; NULL: none) is, by device
-   and inode, symbolic links followed. */
-static int
+int
 output_is_input (const char *name, const char *input)
 {
   struct stat in, out;

@@ -23,6 +23,12 @@ typedef struct
    as a write error instead of killing the program. */
 void output_init (void);
 
+/* Whether the output NAME (NULL or "-": standard output) is the regular
+   file the input INPUT ("-": standard input; NULL: none) is, by device
+   and inode, symbolic links followed (output_open refuses it; a command
+   of several inputs asks for each). */
+int output_is_input (const char *name, const char *input);
+
 /* Open the output NAME (NULL or "-": standard output) of a command that
    reads INPUT (a file name, "-" for standard input, or NULL): a temporary
    file in the directory of the file NAME leads to (NAME a symbolic link,

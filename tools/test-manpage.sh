@@ -9,8 +9,8 @@
 #  3. every status of the library (lib/chaplygin.h) is in STATUS CODES;
 #  4. the generated chapter doc/program.texi indexes every scene key;
 #  5. every subcommand of --help has its entry in COMMANDS;
-#  6. every option of the --help texts (the program's, sweep's, plot's,
-#     eq's) is named in the man page;
+#  6. every option of the --help texts (the program's, sweep's, merge's,
+#     plot's, eq's) is named in the man page;
 #  7. every status the sweeps print (by name) is a tag of STATUS CODES,
 #     and every status of the library has its name there.
 # POSIX sh.
@@ -161,7 +161,7 @@ result "$ok" "every subcommand of --help ($(echo $subs)) has its entry in COMMAN
 
 # 6: options
 : > "$tmp/options"
-for args in "--help" "sweep --help" "plot --help" "eq --help"; do
+for args in "--help" "sweep --help" "merge --help" "plot --help" "eq --help"; do
   # shellcheck disable=SC2086
   run $args
   grep -o -- '--[a-zA-Z][a-zA-Z0-9-]*' "$tmp/out" | grep -vx -- '--name' >> "$tmp/options"
