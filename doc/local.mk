@@ -8,6 +8,9 @@ doc_chaplygin_TEXINFOS = doc/notation.texi doc/conventions.texi \
 # Images are named by their file name alone (@image{fig6,...}) and found
 # in doc/figures: the HTML manual then holds them beside its pages.
 AM_MAKEINFOFLAGS = -I $(srcdir)/doc/figures
+# The HTML pages: a figure (1200 pixels wide) shrinks to the window.
+AM_MAKEINFOHTMLFLAGS = $(AM_MAKEINFOFLAGS) \
+	-c 'EXTRA_HEAD=<style>img { max-width: 100%; height: auto; }</style>'
 
 # The figures of `make figures' (tools/local.mk) and the work-precision
 # diagram of `make bench' (bench/local.mk), committed.
