@@ -38,32 +38,11 @@
 #include "chaplygin.h"
 #include "chaplygin-scene.h"
 #include "baseline.h"
+#include "timing.h"
 
 #define CHUNK 64                /* points per call, as lib/scene/grid.c */
 #define MAX_COLLISIONS 100000UL
 #define TARGET_S 0.05           /* least duration of one timing */
-
-static double
-now (void)
-{
-  struct timespec ts;
-  clock_gettime (CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static int
-cmp_double (const void *a, const void *b)
-{
-  double x = *(const double *) a, y = *(const double *) b;
-  return (x > y) - (x < y);
-}
-
-static double
-median (double *t, int n)
-{
-  qsort (t, n, sizeof *t, cmp_double);
-  return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
-}
 
 /* The baseline's orbits. */
 typedef struct

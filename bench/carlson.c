@@ -53,6 +53,7 @@
 
 #include "carlson.h"
 #include "internal.h"
+#include "timing.h"
 
 #define SEED 0x5eed0c4a11ULL
 #define NDEFAULT 20000
@@ -297,21 +298,6 @@ ulps (double got, const arb_t want)
 }
 
 /* ---- timing ------------------------------------------------------ */
-
-static double
-now (void)
-{
-  struct timespec ts;
-  clock_gettime (CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-static int
-cmp_double (const void *a, const void *b)
-{
-  double x = *(const double *) a, y = *(const double *) b;
-  return (x > y) - (x < y);
-}
 
 /* ---- instruction counts ------------------------------------------ */
 

@@ -20,11 +20,11 @@ bench_work_precision_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/verification \
 bench_work_precision_LDADD = lib/libchaplygin.la $(CODE_COVERAGE_LIBS) -lm
 
 noinst_PROGRAMS += bench/atlas
-bench_atlas_SOURCES = bench/atlas.c bench/baseline.h
+bench_atlas_SOURCES = bench/atlas.c bench/baseline.h bench/timing.h
 bench_atlas_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
 bench_atlas_LDADD = lib/libchaplygin-scene.la lib/libchaplygin.la \
 	$(CODE_COVERAGE_LIBS) -lm
-bench_work_precision_SOURCES += bench/baseline.h
+bench_work_precision_SOURCES += bench/baseline.h bench/timing.h
 
 EXTRA_DIST += bench/work-precision.gp bench/work-precision.csv \
 	bench/scipy-ivp.py
@@ -85,7 +85,7 @@ bench: bench/work-precision
 # (callgrind, when valgrind is installed), as ratios to GSL in one run;
 # writes bench/carlson.csv.  Needs Arb; not part of `make check'.
 EXTRA_PROGRAMS += bench/carlson
-bench_carlson_SOURCES = bench/carlson.c
+bench_carlson_SOURCES = bench/carlson.c bench/timing.h
 bench_carlson_CFLAGS = $(AM_CFLAGS) $(GSL_CFLAGS)
 bench_carlson_LDADD = lib/libchaplygin-core.la $(GSL_LIBS) $(ARB_LIBS) \
 	$(CODE_COVERAGE_LIBS) -lm

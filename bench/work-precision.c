@@ -78,6 +78,7 @@
 
 #include "chaplygin.h"
 #include "baseline.h"
+#include "timing.h"
 
 /* tap.h's generator; the TAP functions are not used here */
 #pragma GCC diagnostic push
@@ -758,22 +759,6 @@ rel_err (double x, const double r[2])
   return r[0] != 0.0 ? d / fabs (r[0]) : d;
 }
 
-static int
-cmp_double (const void *a, const void *b)
-{
-  double x = *(const double *) a, y = *(const double *) b;
-  return (x > y) - (x < y);
-}
-
-static double
-median (double *x, size_t n)
-{
-  if (n == 0)
-    return NAN;
-  qsort (x, n, sizeof *x, cmp_double);
-  return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
-}
-
 /* The errors of the outputs of the last pass; scratch has b->n doubles. */
 static void
 measure_errors (const bench *b, row_t *r, double *scratch)
@@ -821,14 +806,6 @@ measure_errors (const bench *b, row_t *r, double *scratch)
     }
   r->max_tt_eps = r->max_tt / DBL_EPSILON;
   r->med_err = median (scratch, m);
-}
-
-static double
-now (void)
-{
-  struct timespec ts;
-  clock_gettime (CLOCK_MONOTONIC, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
 typedef void (*pass_fn) (bench *, const chaplygin_options *);
