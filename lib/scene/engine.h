@@ -186,6 +186,10 @@ int scene_has_stop (const scene *sc);
 
 /* The text of the effective value of key K into BUF (SIZE bytes), or NULL
    (scene_write's value). */
+/* The name of the atlas quantity A (its x and y keys' word, its column's
+   heading). */
+const char *scene_axis_name (atlas_axis a);
+
 const char *scene_value_text (const scene *sc, int k, char *buf,
                               size_t size);
 

@@ -391,15 +391,12 @@ grid_columns (const scene *sc, chaplygin_column *col)
     { "status", CHAPLYGIN_COLUMN_STATUS }
   };
   /* an atlas: k, its two quantities by name, then basins' fate columns */
-  static const chaplygin_column axis[ATLAS_AXES] = {
-    { "L0", CHAPLYGIN_COLUMN_REAL }, { "Delta", CHAPLYGIN_COLUMN_REAL },
-    { "V", CHAPLYGIN_COLUMN_REAL }, { "Omega", CHAPLYGIN_COLUMN_REAL }
-  };
   if (sc->sweep == SWEEP_ATLAS)
     {
       col[0] = basins[0];
-      col[1] = axis[sc->x_axis];
-      col[2] = axis[sc->y_axis];
+      col[1].name = scene_axis_name (sc->x_axis);
+      col[2].name = scene_axis_name (sc->y_axis);
+      col[1].kind = col[2].kind = CHAPLYGIN_COLUMN_REAL;
       memcpy (col + 3, basins + 2, 6 * sizeof *col);
       return 9;
     }

@@ -1529,6 +1529,12 @@ chaplygin_scene_key_words (size_t i)
 }
 
 const char *
+scene_axis_name (atlas_axis a)
+{
+  return axis_names[a];
+}
+
+const char *
 scene_value_text (const scene *sc, int k, char *buf, size_t size)
 {
   const key_spec *ks = &keys[k];

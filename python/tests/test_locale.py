@@ -65,3 +65,25 @@ def test_run_scene_and_eq_under_de_DE(german):
     # the numbers themselves: E of row 0 is (3.3) at the start
     E = c.discrete.energy(1, 0, 1, 0.5)
     assert a_dict['E'][0] == E and a_dict['theta'][0] == 0.25
+
+
+def test_atlas_under_de_DE(german):
+    """chaplygin.atlas: the scene's decimal numbers, its effective scene's
+    text (which Dask tasks carry) and the values, as under the C locale."""
+    pytest.importorskip('xarray')
+    pytest.importorskip('dask')
+    scene = {'scene': {'model': 'discrete'},
+             'parameters': {'L0': -0.5, 'Delta': 1.0},
+             'run': {'collisions': 1000},
+             'sweep': {'kind': 'atlas', 'x': 'V', 'x_min': 0.05,
+                       'x_max': 0.5, 'nx': 7, 'y': 'Omega', 'y_min': 0.25,
+                       'y_max': 1.5, 'ny': 5}}
+    a = c.atlas(scene), c.atlas(scene, chunks=(2, 3)).compute(
+        scheduler='synchronous')
+    locale.setlocale(locale.LC_ALL, 'C')
+    b = c.atlas(scene)
+    for x in a:
+        assert x.attrs['scene'] == b.attrs['scene']
+        assert 'x_min = 0.05' in x.attrs['scene']
+        for k in list(x.variables):
+            assert np.array_equal(x[k].values, b[k].values), k
