@@ -13,7 +13,7 @@
 #                       (which a second run writes with --only=NODE)
 #   --concordance=TSV   a function named in TSV's columns `function' or
 #                       `printed_function' (comma-separated lists; -, same
-#                       and none name none) gets the line @implements_NAME{}
+#                       and none name none) gets the line @implementsName{}
 #                       after its @deftypefun line (the macro that
 #                       doc/concordance.awk writes); a name there that the
 #                       header does not declare is an error
@@ -41,7 +41,7 @@
 #    between them (no blank line):
 #      function prototype  -> @anchor{NAME}, @deftypefun made from the
 #                             prototype itself (parameters as @var), the
-#                             @implements_NAME{} line (--concordance), the
+#                             @implementsName{} line (--concordance), the
 #                             comment's text; every function needs one;
 #      typedef struct / typedef enum / enum TAG -> @anchor{NAME} (typedefs),
 #                             @deftp {Data type} / {Enumerated type}, the
@@ -92,6 +92,9 @@
 
 use strict;
 use warnings;
+use FindBin;
+use lib "$FindBin::Bin/../lib";
+use TexinfoName qw(implements_macro);
 
 my @PREFIXES;
 my %RAW_ARG = map { $_ => 1 } qw(pxref ref xref samp file command option url);
@@ -550,7 +553,8 @@ sub entry_texi {
     my $args = join ', ', map { "$_->{type}\@var{$_->{name}}$_->{suffix}" } @{$it->{params}};
     $args = 'void' unless @{$it->{params}};
     push @out, "\@anchor{$it->{name}}", "\@deftypefun $ret $it->{name} ($args)";
-    push @out, "\@implements_$it->{name}\{\}" if $implements{$it->{name}};
+    push @out, "\@" . implements_macro ($it->{name}) . "\{\}"
+      if $implements{$it->{name}};
     push @out, body_texi($c, $cx), '@end deftypefun';
   } elsif ($it->{what} eq 'fntype') {
     my %p = map { $_->{name} => 1 } @{$it->{params}};

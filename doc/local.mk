@@ -37,7 +37,8 @@ dist_doc_DATA = doc/concordance.tsv
 GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/concordance-macros.texi doc/program.texi doc/api.texi \
 	doc/api-printed.texi doc/api-scene.texi
-LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl
+LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
+	$(srcdir)/lib/TexinfoName.pm
 LABELS_GEN = $(PERL) $(srcdir)/lib/labels.pl
 CONCORDANCE_INPUTS = $(srcdir)/doc/accuracy.texi $(srcdir)/doc/errata.texi \
 	$(wildcard $(srcdir)/tests/*.c)
@@ -53,12 +54,13 @@ $(srcdir)/doc/concordance-macros.texi: $(LABELS_DEPS)
 $(srcdir)/doc/concordance.tsv: $(LABELS_DEPS)
 	$(AM_V_GEN)$(LABELS_GEN) -o $@ tsv $(srcdir)/lib/labels.txt
 # The chapter "Library reference", and its section of the paper's printed
-# forms in a file of its own; @implements_FUNCTION{} after the entry of
+# forms in a file of its own; @implementsFunction{} (lib/TexinfoName.pm) after the entry of
 # every function of the concordance.  (tests/apiref.sh runs the same
 # invocations and checks the files against them.)
 HDR2TEXI = perl $(srcdir)/doc/hdr2texi.pl --name=lib/chaplygin.h \
 	--concordance=$(srcdir)/doc/concordance.tsv
 APIREF_INPUTS = $(srcdir)/lib/chaplygin.h $(srcdir)/doc/hdr2texi.pl \
+	$(srcdir)/lib/TexinfoName.pm \
 	$(srcdir)/doc/concordance.tsv
 $(srcdir)/doc/api.texi: $(APIREF_INPUTS)
 	$(AM_V_GEN)$(HDR2TEXI) --chapter='Library reference' \

@@ -17,7 +17,7 @@
 #   audit    the table of the errata chapter's "Audit of every label";
 #   macros   the flag labelcount (@set labelcount N: the number of
 #            labels, for the manual's text) and one Texinfo macro a
-#            function of the registry, @implements_FUNCTION{}, which the
+#            function of the registry, @implementsFunction{} (TexinfoName.pm), which the
 #            function's entry in the library reference calls: its index
 #            entries "(3.10)" and a reference to the concordance entry;
 #   field NAME
@@ -37,6 +37,9 @@
 use strict;
 use warnings;
 use File::Basename qw(basename dirname);
+use FindBin;
+use lib $FindBin::Bin;
+use TexinfoName qw(implements_macro);
 
 my $me = 'labels.pl';
 my $tmp;                        # the temporary output, removed on failure
@@ -345,7 +348,7 @@ sub printed_functions {
 # The macro of function FN for the labels LABELS.
 sub macro {
   my ($fn, $verb, @labels) = @_;
-  my $s = "\@macro implements_$fn\n";
+  my $s = "\@macro " . implements_macro ($fn) . "\n";
   $s .= "\@cindex ($_)\n" for @labels;
   my $n = @labels;
   $s .= $verb;

@@ -79,7 +79,7 @@ include_HEADERS = lib/chaplygin.h
 
 # The registry of the paper's equation labels and its reader/generator
 # (doc/local.mk's generated files, tests/concordance.sh).
-EXTRA_DIST += lib/labels.txt lib/labels.pl
+EXTRA_DIST += lib/labels.txt lib/labels.pl lib/TexinfoName.pm
 pkgconfig_DATA = chaplygin.pc
 
 

@@ -10,7 +10,7 @@
 #  - per label: every function named (implementing, or evaluating the
 #    printed form) is exported by the built library and has an entry in the
 #    library reference (doc/api*.texi) with an anchor and the generated
-#    @implements_ call that links it back to the concordance; every unit
+#    @implementsFunction call that links it back to the concordance; every unit
 #    test named is a TCase in tests/*.c; every verification check named
 #    has a program verification/NAME.c; every erratum named has an entry in
 #    doc/errata.texi, and they are the errata that `chaplygin eq --list'
@@ -99,12 +99,15 @@ else
 fi
 
 # The library reference: FUNCTION's @deftypefun line followed by its
-# @implements_FUNCTION{} call, and an @anchor{FUNCTION} before it.
+# @implementsFunction{} call (the macro's name: lib/TexinfoName.pm), and an
+# @anchor{FUNCTION} before it.
 api=$(cat "$top_srcdir"/doc/api.texi "$top_srcdir"/doc/api-printed.texi)
 api_entry () {
-  echo "$api" | awk -v f="$1" '
+  m=$(perl -I"$top_srcdir/lib" -MTexinfoName=implements_macro \
+        -e 'print implements_macro ($ARGV[0])' "$1") || return 1
+  echo "$api" | awk -v f="$1" -v m="$m" '
     prev ~ "^@anchor\\{" f "\\}$" && $0 ~ "^@deftypefun .*[ *]" f " \\(" { d = 1; prev = $0; next }
-    d == 1 { ok = ($0 == "@implements_" f "{}"); d = 0 }
+    d == 1 { ok = ($0 == "@" m "{}"); d = 0 }
     { prev = $0 }
     END { exit !ok }'
 }
@@ -119,7 +122,7 @@ while IFS="$tab" read -r eq fn ut ver err pf call; do
   case $pf in -|same|none) ;; *) fns="$fns,$pf" ;; esac
   for f in $(echo "$fns" | tr ',' ' '); do
     echo "$symbols" | grep -qx "$f" || msg="$msg [function $f not exported]"
-    api_entry "$f" || msg="$msg [no @anchor/@deftypefun/@implements_ entry for $f in doc/api*.texi]"
+    api_entry "$f" || msg="$msg [no @anchor/@deftypefun/@implements entry for $f in doc/api*.texi]"
   done
   if [ "$err" != "-" ]; then
     for e in $(echo "$err" | tr ',' ' '); do
