@@ -8,6 +8,11 @@ doc_chaplygin_TEXINFOS = doc/notation.texi doc/conventions.texi \
 # Images are named by their file name alone (@image{fig6,...}) and found
 # in doc/figures: the HTML manual then holds them beside its pages.
 AM_MAKEINFOFLAGS = -I $(srcdir)/doc/figures
+# The PDF manual (`make pdf', optional: TeX): automake puts the directory
+# of TEXINFO_TEX first on TeX's path, so naming one in doc/figures lets
+# TeX find the figures (@image) there; no texinfo.tex is there, and TeX
+# takes the system's (Debian's texinfo).
+TEXINFO_TEX = doc/figures/texinfo.tex
 # The HTML pages: a figure (1200 pixels wide) shrinks to the window.
 AM_MAKEINFOHTMLFLAGS = $(AM_MAKEINFOFLAGS) \
 	-c 'EXTRA_HEAD=<style>img { max-width: 100%; height: auto; }</style>'
