@@ -250,8 +250,23 @@ certified_fate (const chaplygin_discrete *sys, double V, double Omega,
   return status;
 }
 
-static void put_fate (int status, int m, const chaplygin_fate *fate,
-                      chaplygin_cell *cells);
+/* The fate cells of a point with STATUS, scaling M and FATE (read only on
+   success) at CELLS. */
+static void
+put_fate (int status, int m, const chaplygin_fate *fate,
+          chaplygin_cell *cells)
+{
+  for (int i = 0; i < 5; i++)
+    put_missing (&cells[i]);
+  put_int (&cells[5], status);
+  if (status != CHAPLYGIN_SUCCESS)
+    return;
+  put_int (&cells[0], fate->kind);
+  put_int (&cells[1], (long long) fate->collisions);
+  put_int (&cells[2], (long long) fate->reversals);
+  put_scaled (&cells[3], m, CHAPLYGIN_SCALE_ENERGY, fate->E_final);
+  put_scaled (&cells[4], m, CHAPLYGIN_SCALE_SPEED, fate->V_final);
+}
 
 /* The fate cells fate, collisions, reversals, E_final, V_final, status of
    the post-collision state {D+, V, 0, Omega} of the skate SYS at CELLS
@@ -278,71 +293,52 @@ fate_cells (const scene *sc, const chaplygin_discrete *sys, int sys_status,
   put_fate (status, m, &fate, cells);
 }
 
-/* The fate cells of a point with STATUS, scaling M and FATE (read only on
-   success) at CELLS. */
-static void
-put_fate (int status, int m, const chaplygin_fate *fate,
-          chaplygin_cell *cells)
-{
-  for (int i = 0; i < 5; i++)
-    put_missing (&cells[i]);
-  put_int (&cells[5], status);
-  if (status != CHAPLYGIN_SUCCESS)
-    return;
-  put_int (&cells[0], fate->kind);
-  put_int (&cells[1], (long long) fate->collisions);
-  put_int (&cells[2], (long long) fate->reversals);
-  put_scaled (&cells[3], m, CHAPLYGIN_SCALE_ENERGY, fate->E_final);
-  put_scaled (&cells[4], m, CHAPLYGIN_SCALE_SPEED, fate->V_final);
-}
-
-/* The row of basins point K into ROW. */
-static void
-basins_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+/* The head of the row of basins or atlas point K in ROW (k, then V, or
+   the atlas's x and y), and into Q the point's L0, Delta, V, Omega (the
+   scene's, with the swept ones in place); returns its fate cells. */
+static chaplygin_cell *
+fate_row_head (const sweep_plan *plan, uint64_t k, chaplygin_cell *row,
+               double q[ATLAS_AXES])
 {
   const scene *sc = plan->sc;
-  double V = grid_value (sc->x_min, sc->x_max, plan->nx, k);
-  put_int (&row[0], (long long) k);
-  put_real (&row[1], V);
-  fate_cells (sc, &plan->sys, plan->sys_status, V, sc->Omega, &row[2]);
-}
-
-/* Atlas point K: its x and y, and the scene's L0, Delta, V, Omega with x
-   and y in place of the two it sweeps (Q, indexed by the axes). */
-static void
-atlas_point (const sweep_plan *plan, uint64_t k, double *x, double *y,
-             double q[ATLAS_AXES])
-{
-  const scene *sc = plan->sc;
-  *x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
-  *y = grid_value (sc->y_min, sc->y_max, (uint64_t) sc->ny, k / plan->nx);
   q[AXIS_L0] = sc->L0;
   q[AXIS_DELTA] = sc->Delta;
   q[AXIS_V] = sc->V;
   q[AXIS_OMEGA] = sc->Omega;
-  q[sc->x_axis] = *x;
-  q[sc->y_axis] = *y;
-}
-
-/* The row of atlas point K into ROW. */
-static void
-atlas_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
-{
-  const scene *sc = plan->sc;
-  double x, y, q[ATLAS_AXES];
-  atlas_point (plan, k, &x, &y, q);
   put_int (&row[0], (long long) k);
+  if (sc->sweep == SWEEP_BASINS)
+    {
+      q[AXIS_V] = grid_value (sc->x_min, sc->x_max, plan->nx, k);
+      put_real (&row[1], q[AXIS_V]);
+      return &row[2];
+    }
+  double x = grid_value (sc->x_min, sc->x_max, plan->nx, k % plan->nx);
+  double y = grid_value (sc->y_min, sc->y_max, (uint64_t) sc->ny,
+                         k / plan->nx);
+  q[sc->x_axis] = x;
+  q[sc->y_axis] = y;
   put_real (&row[1], x);
   put_real (&row[2], y);
+  return &row[3];
+}
+
+/* The row of basins or atlas point K into ROW, point by point (an atlas
+   that sweeps L0 or Delta: a skate per point). */
+static void
+fate_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
+{
+  const scene *sc = plan->sc;
+  double q[ATLAS_AXES];
+  chaplygin_cell *cells = fate_row_head (plan, k, row, q);
   if (atlas_sweeps_skate (sc))
     {
       chaplygin_discrete sys;
       int status = chaplygin_discrete_init (&sys, q[AXIS_L0], q[AXIS_DELTA]);
-      fate_cells (sc, &sys, status, q[AXIS_V], q[AXIS_OMEGA], &row[3]);
+      fate_cells (sc, &sys, status, q[AXIS_V], q[AXIS_OMEGA], cells);
     }
   else
     fate_cells (sc, &plan->sys, plan->sys_status, q[AXIS_V], q[AXIS_OMEGA],
-                &row[3]);
+                cells);
 }
 
 /* The row of point K into ROW. */
@@ -358,10 +354,8 @@ point_row (const sweep_plan *plan, uint64_t k, chaplygin_cell *row)
       stability_row (plan, k, row);
       break;
     case SWEEP_BASINS:
-      basins_row (plan, k, row);
-      break;
     case SWEEP_ATLAS:
-      atlas_row (plan, k, row);
+      fate_row (plan, k, row);
       break;
     case SWEEP_NONE:
       break;
@@ -592,27 +586,18 @@ block_rows (const sweep_plan *plan, row_block *b, int i0, int i1,
       return;
     }
   const scene *sc = plan->sc;
-  double V[CHUNK_POINTS] = { 0 }, Om[CHUNK_POINTS] = { 0 },
-    x[CHUNK_POINTS], y[CHUNK_POINTS];
-  uint64_t k[CHUNK_POINTS];
+  double V[CHUNK_POINTS] = { 0 }, Om[CHUNK_POINTS] = { 0 };
+  chaplygin_cell *cells[CHUNK_POINTS];
   chaplygin_fate fate[CHUNK_POINTS];
   int status[CHUNK_POINTS], m[CHUNK_POINTS];
   const int n = i1 - i0;
   for (int j = 0; j < n; j++)
     {
-      k[j] = plan_k (plan, base + (uint64_t) (i0 + j));
-      if (sc->sweep == SWEEP_BASINS)
-        {
-          V[j] = grid_value (sc->x_min, sc->x_max, plan->nx, k[j]);
-          Om[j] = sc->Omega;
-        }
-      else
-        {
-          double q[ATLAS_AXES];
-          atlas_point (plan, k[j], &x[j], &y[j], q);
-          V[j] = q[AXIS_V];
-          Om[j] = q[AXIS_OMEGA];
-        }
+      double q[ATLAS_AXES];
+      cells[j] = fate_row_head (plan, plan_k (plan, base + (uint64_t) (i0 + j)),
+                                b->cells + (size_t) (i0 + j) * ROW_CELLS, q);
+      V[j] = q[AXIS_V];
+      Om[j] = q[AXIS_OMEGA];
       m[j] = 0;
     }
   (void) chaplygin_discrete_fates_phase (&plan->sys, (size_t) n, V, Om,
@@ -620,23 +605,13 @@ block_rows (const sweep_plan *plan, row_block *b, int i0, int i1,
                                          status, m);
   for (int j = 0; j < n; j++)
     {
-      chaplygin_cell *cells = b->cells + (size_t) (i0 + j) * ROW_CELLS;
-      put_int (&cells[0], (long long) k[j]);
-      if (sc->sweep == SWEEP_BASINS)
-        {
-          put_real (&cells[1], V[j]);
-          put_fate (status[j], m[j], &fate[j], &cells[2]);
-        }
-      else
-        {
-          put_real (&cells[1], x[j]);
-          put_real (&cells[2], y[j]);
-          put_fate (status[j], m[j], &fate[j], &cells[3]);
-        }
+      put_fate (status[j], m[j], &fate[j], cells[j]);
       if (b->text)
         b->len[i0 + j] = chaplygin_row_text (b->text
                                              + (size_t) (i0 + j) * ROW_TEXT,
-                                             ROW_TEXT, ncols, col, cells);
+                                             ROW_TEXT, ncols, col,
+                                             b->cells
+                                             + (size_t) (i0 + j) * ROW_CELLS);
     }
 }
 
