@@ -50,8 +50,6 @@ VARIABLES = (('fate', np.int8, -128), ('collisions', np.int64, -1),
 NO_FATE = _lib.CHP_PY_ATLAS_NO_FATE
 
 _SCENE_TEXT_MAX = 1 << 20
-_SCENE_EINVAL = 1
-_SCENE_ENOMEM = 8
 _LONG_NAME = {
     'fate': 'the final motion: -1 straight line backward, 0 spinning, '
             '1 forward, 2 undecided after [run] collisions',
@@ -74,7 +72,7 @@ def _require():
 
 def _report_error(rc, rep):
     msg = _ffi.string(rep.message).decode('utf-8', 'replace')
-    if rc == _SCENE_ENOMEM:
+    if rc == _scene._SCENE_STATUS['ENOMEM']:
         raise MemoryError('atlas: out of memory')
     raise SceneError(None, None, detail=msg)
 
