@@ -6,7 +6,10 @@
 #  2. every figure of the manual is shown by some page;
 #  3. every equation label has its concordance entry (anchor) and index
 #     entry in the single page, and every function of doc/concordance.tsv
-#     its anchor in the library reference.
+#     its anchor in the library reference;
+#  4. no page loads a remote script or style sheet, and every formula
+#     (MathJax's \(...\)), those of the concordance first, is well-formed
+#     TeX (doc/check-math.pl).
 # The directory checked is $CHAPLYGIN_HTML_DIR (`make installcheck': the
 # installed manual), else doc/chaplygin.html of the build tree (`make
 # check', which builds it first).  POSIX sh; needs perl (as makeinfo does).
@@ -17,7 +20,7 @@ top_builddir=${top_builddir:-.}
 dir=${CHAPLYGIN_HTML_DIR:-$top_builddir/doc/chaplygin.html}
 tsv=$top_srcdir/doc/concordance.tsv
 
-echo "1..3"
+echo "1..4"
 if test ! -r "$dir/index.html" || test ! -r "$dir/one-page.html"; then
   echo "Bail out! $dir/index.html or one-page.html missing (make html)"
   exit 1
@@ -62,4 +65,11 @@ if test -z "$missing"; then
   echo "ok 3 - every label has its concordance anchor and index entry, every function its anchor"
 else
   echo "not ok 3 - missing:$missing"
+fi
+
+if out=$(perl "$top_srcdir/doc/check-math.pl" "$dir" 2>&1); then
+  echo "ok 4 - $out"
+else
+  echo "$out" | sed 's/^/# /'
+  echo "not ok 4 - a remote script or malformed TeX in $dir"
 fi

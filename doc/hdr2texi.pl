@@ -78,8 +78,11 @@
 #    parameter);
 #  - a blank line is a blank line; other lines are paragraph text.
 # Inline, in paragraph text:
-#    $...$            @math{...}; inside, {...} after ^ or _ is a TeX group,
-#                     other braces are literal, `x` is @code{x}
+#    $...$            @math{...} in the manual's plain notation, converted
+#                     by lib/TexinfoMath.pm (the Conventions chapter):
+#                     sqrt(x), 10^(-3), ^iE^+, Omega, <=; inside, {...}
+#                     after ^ or _ is a group, other braces are literal,
+#                     `x` is @code{x}
 #    `x`              @code{x}
 #    @NAME            @var{NAME}, NAME a parameter of the function
 #    chaplygin_x, CHAPLYGIN_X (an identifier with a prefix of --prefix)
@@ -95,6 +98,7 @@ use warnings;
 use FindBin;
 use lib "$FindBin::Bin/../lib";
 use TexinfoName qw(implements_macro);
+use TexinfoMath qw(convert_math);
 
 my @PREFIXES;
 my %RAW_ARG = map { $_ => 1 } qw(pxref ref xref samp file command option url);
@@ -433,7 +437,8 @@ sub inline {
   my $text = $mode eq 'text';
   while (pos($s) < length $s) {
     if ($text && $s =~ /\G\$([^\$]*)\$/gc) {
-      $o .= '@math{' . math($1, $cx) . '}';
+      my $m = math($1, $cx);
+      $o .= '@math{' . (eval { convert_math($m) } // err($cx->{off}, $@ =~ s/\n\z//r)) . '}';
     } elsif ($text && $s =~ /\G\$/gc) {
       err($cx->{off}, 'unterminated $: ' . substr($s, pos($s) - 1, 40));
     } elsif ($text && $s =~ /\G``/gc) {

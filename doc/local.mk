@@ -13,8 +13,18 @@ AM_MAKEINFOFLAGS = -I $(srcdir)/doc/figures
 # TeX find the figures (@image) there; no texinfo.tex is there, and TeX
 # takes the system's (Debian's texinfo).
 TEXINFO_TEX = doc/figures/texinfo.tex
-# The HTML pages: a figure (1200 pixels wide) shrinks to the window.
-AM_MAKEINFOHTMLFLAGS = $(AM_MAKEINFOFLAGS) \
+# Without TeX (configure), doc/no-tex.sh stands in for texi2dvi: `make
+# pdf' (and `make dvi') stop with one line naming the packages to install.
+if !HAVE_TEX
+doc/chaplygin.pdf doc/chaplygin.dvi: TEXI2DVI = $(SHELL) $(srcdir)/doc/no-tex.sh
+endif
+# The HTML pages: formulas typeset by the local MathJax 2 that configure
+# found (MATHJAX_SCRIPT, a file: no page loads a remote script); a figure
+# (1200 pixels wide) shrinks to the window.
+if HAVE_MATHJAX
+MATHJAX_HTMLFLAGS = -c HTML_MATH=mathjax -c 'MATHJAX_SCRIPT=$(MATHJAX_SCRIPT)'
+endif
+AM_MAKEINFOHTMLFLAGS = $(AM_MAKEINFOFLAGS) $(MATHJAX_HTMLFLAGS) \
 	-c 'EXTRA_HEAD=<style>img { max-width: 100%; height: auto; }</style>'
 
 # The figures of `make figures' (tools/local.mk) and the work-precision
@@ -26,7 +36,9 @@ MANUAL_FIGURES = doc/figures/fig2a.png doc/figures/fig2b.png \
 	doc/figures/atlas-omega.png doc/figures/atlas-bistable.png \
 	doc/figures/work-precision.png
 EXTRA_DIST += $(MANUAL_FIGURES) \
-	doc/man2texi.awk doc/check-html.pl doc/check-html.sh doc/hdr2texi.pl
+	doc/man2texi.awk doc/check-html.pl doc/check-html.sh doc/hdr2texi.pl \
+	doc/texi-math.pl doc/no-tex.sh lib/TexinfoMath.pm \
+	doc/check-math.pl
 # Generated from lib/labels.txt (below), installed and distributed.
 dist_doc_DATA = doc/concordance.tsv
 
@@ -41,9 +53,16 @@ dist_doc_DATA = doc/concordance.tsv
 # behind (lib/labels.pl -o renames a complete temporary file).
 GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/concordance-macros.texi doc/program.texi doc/api.texi \
-	doc/api-printed.texi doc/api-scene.texi
+	doc/api-printed.texi doc/api-scene.texi doc/math-macros.texi
 LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
-	$(srcdir)/lib/TexinfoName.pm
+	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm
+# The formulas' macros (plain notation in Info, TeX elsewhere), from the
+# converter's table (lib/TexinfoMath.pm); doc/texi-math.pl converts a
+# chapter's formulas into them.
+$(srcdir)/doc/math-macros.texi: $(srcdir)/lib/TexinfoMath.pm \
+		$(srcdir)/doc/texi-math.pl
+	$(AM_V_GEN)perl $(srcdir)/doc/texi-math.pl --macros > $@.tmp \
+	  && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 LABELS_GEN = $(PERL) $(srcdir)/lib/labels.pl
 CONCORDANCE_INPUTS = $(srcdir)/doc/accuracy.texi $(srcdir)/doc/errata.texi \
 	$(wildcard $(srcdir)/tests/*.c)
@@ -65,7 +84,7 @@ $(srcdir)/doc/concordance.tsv: $(LABELS_DEPS)
 HDR2TEXI = perl $(srcdir)/doc/hdr2texi.pl --name=lib/chaplygin.h \
 	--concordance=$(srcdir)/doc/concordance.tsv
 APIREF_INPUTS = $(srcdir)/lib/chaplygin.h $(srcdir)/doc/hdr2texi.pl \
-	$(srcdir)/lib/TexinfoName.pm \
+	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm \
 	$(srcdir)/doc/concordance.tsv
 $(srcdir)/doc/api.texi: $(APIREF_INPUTS)
 	$(AM_V_GEN)$(HDR2TEXI) --chapter='Library reference' \
@@ -73,7 +92,7 @@ $(srcdir)/doc/api.texi: $(APIREF_INPUTS)
 	  > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 # The chapter "Scene engine reference" from lib/scene/chaplygin-scene.h.
 $(srcdir)/doc/api-scene.texi: $(srcdir)/lib/scene/chaplygin-scene.h \
-		$(srcdir)/doc/hdr2texi.pl
+		$(srcdir)/doc/hdr2texi.pl $(srcdir)/lib/TexinfoMath.pm
 	$(AM_V_GEN)perl $(srcdir)/doc/hdr2texi.pl \
 	  --name=lib/scene/chaplygin-scene.h --chapter='Scene engine reference' \
 	  $(srcdir)/lib/scene/chaplygin-scene.h \

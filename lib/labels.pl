@@ -40,6 +40,7 @@ use File::Basename qw(basename dirname);
 use FindBin;
 use lib $FindBin::Bin;
 use TexinfoName qw(implements_macro);
+use TexinfoMath qw(tex_errors @GREEK);
 
 my $me = 'labels.pl';
 my $tmp;                        # the temporary output, removed on failure
@@ -122,13 +123,79 @@ sub read_registry {
       fail($where->() . ": field '$name' is one line ('$name: VALUE')")
         if exists $KIND{$name} && $KIND{$name} ne 'block';
       ($block, $blockname) = ('', $name);
+      $rec->{at}{$name} = $n;
     }
   }
   $end_block->();
   close $fh;
   fail("$file: no record") unless @recs;
   check_record($file, $_) for @recs;
+  check_tex($file, $_) for @recs;
   return @recs;
+}
+
+# The TeX forms of a record (tex.printed, tex.implemented: optional
+# blocks, one displayed formula a line): each line well-formed TeX
+# (lib/TexinfoMath.pm), no '@' and no \{ \} (Texinfo's own; \lbrace
+# \rbrace instead), and the same symbols as its plain form (Greek
+# letters, capitals, digits), so that a slip in either shows.
+sub check_tex {
+  my ($file, $r) = @_;
+  for my $kind (qw(printed implemented)) {
+    my $tex = $r->{fields}{"tex.$kind"};
+    next unless defined $tex;
+    my $n = $r->{at}{"tex.$kind"};
+    fail("$file:$n: ($r->{label}) tex.$kind without a $kind form other than 'as printed'")
+      if $r->{fields}{$kind} eq "as printed\n";
+    for my $line (split /\n/, $tex) {
+      $n++;
+      fail("$file:$n: ($r->{label}) tex.$kind: '\@', '\\{' or '\\}' (write \\lbrace, \\rbrace)")
+        if $line =~ /\@|\\[{}]/;
+      my @e = tex_errors($line);
+      fail("$file:$n: ($r->{label}) tex.$kind: @e") if @e;
+    }
+    my ($plain) = plain_and_note($r->{fields}{$kind});
+    my @p = symbols($plain, 'plain');
+    my @t = symbols($tex, 'tex');
+    fail("$file:$r->{at}{\"tex.$kind\"}: ($r->{label}) tex.$kind and $kind differ in their symbols: "
+         . "plain '@p', TeX '@t'") unless "@p" eq "@t";
+  }
+}
+
+# The formula lines of a plain form, and its closing note (the lines
+# from the first that opens with '(' and a word: "(garbled ...").
+sub plain_and_note {
+  my ($s) = @_;
+  my ($f, $note) = ($s, '');
+  ($f, $note) = ($1, $2) if $s =~ /\A(.*?)^(\((?:[a-z]{2,}|"|[a-z] ).*)\z/ms;
+  return ($f, $note);
+}
+
+# The symbols of formula S, sorted, each as often as it occurs: Greek
+# letters by name, capital letters, digits.
+sub symbols {
+  my ($s, $how) = @_;
+  my %greek = map { $_ => 1 } @GREEK;
+  my %seen;
+  # Prose: references to labels and errata, words in \hbox.
+  $s =~ s/\((?:[2-4AB])\.[0-9]+\)//g;
+  $s =~ s/\berrat(?:um|a) E[0-9]+(?:, E[0-9]+)*//g;
+  if ($how eq 'tex') {
+    $s =~ s/\\(?:hbox|text|mathrm|rm)\s*\{[^{}]*\}//g;
+    while ($s =~ /\\([A-Za-z]+)|([A-Z0-9])/g) {
+      $seen{$1}++ if defined $1 && $greek{$1};
+      $seen{$2}++ if defined $2;
+    }
+  } else {
+    while ($s =~ /([A-Za-z]+)|([0-9])/g) {
+      if (defined $2) { $seen{$2}++; next; }
+      my $w = $1;
+      if ($greek{$w}) { $seen{$w}++; }
+      elsif ($w =~ /^[A-Z]\z/) { $seen{$w}++; }
+      elsif ($w =~ /^([a-z]*)([A-Z])\z/ && $1 =~ /^(?:d|)$/) { $seen{$2}++; }
+    }
+  }
+  return map { ("$_") x $seen{$_} } sort keys %seen;
 }
 
 # A LIST field's names (an empty list for '-').
@@ -289,6 +356,22 @@ sub erratum_summary {
 
 sub example_block { return "\@example\n" . texi($_[0]) . "\@end example\n"; }
 
+# A form of the equation: in Info the plain block; with a TeX form, in
+# HTML and TeX each of its lines a centred display and the plain form's
+# closing note as text (texinfo.tex reads @center's line before @math
+# could read TeX: TeX takes @display).
+sub form_block {
+  my ($plain, $tex) = @_;
+  return example_block($plain) unless defined $tex;
+  my (undef, $note) = plain_and_note($plain);
+  my @l = map { "\@math{\\displaystyle $_}\n" } split /\n/, $tex;
+  my $s = "\@ifinfo\n" . example_block($plain) . "\@end ifinfo\n"
+    . "\@ifhtml\n" . join('', map { "\@center $_" } @l) . "\@end ifhtml\n"
+    . "\@iftex\n\@display\n" . join("\n", @l) . "\@end display\n\@end iftex\n";
+  $s .= "\@ifnotinfo\n\@noindent\n" . texi($note) . "\n\@end ifnotinfo\n" if $note ne '';
+  return $s;
+}
+
 sub entry {
   my ($r) = @_;
   my ($l, $f) = ($r->{label}, $r->{fields});
@@ -296,12 +379,12 @@ sub entry {
   $s .= "\@anchor{" . anchor($l) . "}\n";
   $s .= "\@subheading ($l) " . texi($f->{title}) . "\n";
   $s .= "\@cindex ($l)\n\n";
-  $s .= "\@noindent\n\@strong{Paper} (as transcribed):\n" . example_block($f->{printed});
+  $s .= "\@noindent\n\@strong{Paper} (as transcribed):\n" . form_block($f->{printed}, $f->{'tex.printed'});
   $s .= "\@noindent\n";
   if ($f->{implemented} eq "as printed\n") {
     $s .= "\@strong{Implemented}: as printed.\n";
   } else {
-    $s .= "\@strong{Implemented}:\n" . example_block($f->{implemented});
+    $s .= "\@strong{Implemented}:\n" . form_block($f->{implemented}, $f->{'tex.implemented'});
   }
   $s .= "\n\@noindent\n";
   $s .= "\@strong{Functions}: " . function_refs(names($f->{functions})) . ".\n";
