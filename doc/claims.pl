@@ -8,10 +8,10 @@
 #   texi     doc/claims.texi, the chapter "The paper's claims": a summary
 #            table, then one node "Claim ID" a claim;
 #   figures  doc/claims-figures.texi: for each figure node of
-#            doc/figures.texi a macro, @claimsFigureTwo{} ... (the number
-#            in words: texinfo.tex takes macro names of letters only),
-#            listing the claims about that figure, which the figure's
-#            section calls;
+#            doc/figures.texi a macro named by its first figure,
+#            @claimsFigureOne{} ... (the number in words: texinfo.tex
+#            takes macro names of letters only), listing the claims about
+#            its figures, which the node's section calls;
 #   list     tests/claims-list.h: the macro CLAIM_CHECKS, the checks'
 #            names as C strings in the registry's order, which
 #            tests/test_claims compares with the checks it registers;
@@ -30,6 +30,7 @@ use File::Basename qw(basename);
 use FindBin;
 use lib "$FindBin::Bin/../lib";
 use Registry qw(read_registry list_names);
+use TexinfoMath qw(convert_texinfo);
 
 my $me = 'claims.pl';
 my $tmp;
@@ -59,7 +60,6 @@ fail("usage: $me [-o OUT] texi|figures|list|check doc/claims.txt FILES...")
 # ---- the other sources -------------------------------------------------
 
 my (%label, %erratum, %figure_node, %check_file);
-my $words = qr/^(?:two|three|four|five|six|seven|eight|nine|ten)$/;
 for my $path (@files) {
   my $name = basename($path);
   open my $fh, '<', $path or fail("$path: $!");
@@ -75,9 +75,10 @@ for my $path (@files) {
       }
     } elsif ($name =~ /\.c\z/) {
       if ($line =~ /^START_TEST \((claim_[a-z0-9_]+)\)/) {
-        fail("$path:$.: $1 is also a test of $check_file{$1}")
-          if $check_file{$1};
-        $check_file{$1} = $path =~ s{^.*?(tests/[^/]+)\z}{$1}r;
+        my $check = $1;
+        fail("$path:$.: $check is also a test of $check_file{$check}")
+          if $check_file{$check};
+        $check_file{$check} = $path =~ s{^.*?(tests/[^/]+)\z}{$1}r;
       }
     } else {
       fail("$path: not lib/labels.txt, doc/errata.texi, doc/figures.texi or a C file");
@@ -138,7 +139,13 @@ for my $c (@claims) {
 
 sub texi { my $s = shift; $s =~ s/([\@{}])/\@$1/g; return $s; }
 sub claim_ref { "\@ref{Claim $_[0],,$_[0]}" }
-sub block { my $s = shift; $s =~ s/\[(C\d+)\]/claim_ref($1)/ge; return $s; }
+# A Texinfo block of the registry: claim references made links, formulas
+# in the manual's math macros (written in the plain notation there).
+sub block {
+  my $s = convert_texinfo(shift);
+  $s =~ s/\[(C\d+)\]/claim_ref($1)/ge;
+  return $s;
+}
 sub label_ref { my $l = shift; (my $a = $l) =~ s/\./-/; "\@ref{Equation $a,,($l)}" }
 
 sub entry {
@@ -154,12 +161,14 @@ sub entry {
   $s .= " (\@file{$check_file{$f->{check}}})" if $check_file{$f->{check}};
   $s .= ", run by \@file{tests/test_claims} in \@code{make check}\n";
   my @see;
-  push @see, 'equations ' . join(', ', map { label_ref($_) } list_names($f->{labels}))
-    if $f->{labels} ne '-';
-  push @see, 'errata ' . join(', ', map { "\@ref{Erratum $_,,$_}" } list_names($f->{errata}))
-    if $f->{errata} ne '-';
-  push @see, 'figures ' . join(', ', map { "\@ref{$figure_node{$_},,$_}" } list_names($f->{figures}))
-    if $f->{figures} ne '-';
+  my $see = sub {
+    my ($one, $many, @refs) = @_;
+    push @see, (@refs > 1 ? $many : $one) . ' ' . join(', ', @refs) if @refs;
+  };
+  $see->('equation', 'equations', map { label_ref($_) } list_names($f->{labels}));
+  $see->('erratum', 'errata', map { "\@ref{Erratum $_,,$_}" } list_names($f->{errata}));
+  $see->('figure', 'figures',
+         map { "\@ref{$figure_node{$_},,$_}" } list_names($f->{figures}));
   $s .= "\@item See\n" . join('; ', @see) . "\n" if @see;
   return $s . "\@end table\n\n";
 }
@@ -169,7 +178,7 @@ sub chapter {
   $count{$_->{fields}{verdict}}++ for @claims;
   my $n = @claims;
   my $counts = join ', ', map { ($count{$_} // 0) . " $_" } @VERDICTS;
-  my $s = <<"EOT";
+  my $s = convert_texinfo(<<"EOT");
 \@c Generated from doc/claims.txt by doc/claims.pl: do not edit.
 \@node The paper's claims
 \@chapter The paper's claims
@@ -227,13 +236,18 @@ my @NUMBER_WORD = qw(zero one two three four five six seven eight nine ten);
 
 sub figure_macros {
   my $s = "\@c Generated from doc/claims.txt by doc/claims.pl: do not edit.\n"
-    . "\@c The claims about each figure, for its section of figures.texi.\n";
-  for my $n (sort { $a <=> $b } keys %figure_node) {
-    fail("figure $n: no macro name for it") unless $n >= 2 && $n <= 10;
-    my @about = grep { grep { $_ eq $n } list_names($_->{fields}{figures}) } @claims;
-    $s .= "\n\@macro claimsFigure" . ucfirst($NUMBER_WORD[$n]) . "\n";
+    . "\@c The claims about the figures of each node of figures.texi.\n";
+  my %numbers;   # node -> its figures
+  push @{$numbers{$figure_node{$_}}}, $_ for sort { $a <=> $b } keys %figure_node;
+  for my $node (sort { $numbers{$a}[0] <=> $numbers{$b}[0] } keys %numbers) {
+    my @n = @{$numbers{$node}};
+    fail("$node: no macro name for it") unless $n[0] >= 1 && $n[0] <= 10;
+    my %in = map { $_ => 1 } @n;
+    my @about = grep { grep { $in{$_} } list_names($_->{fields}{figures}) } @claims;
+    my $what = @n > 1 ? 'Figures ' . join(' and ', @n) : "Figure $n[0]";
+    $s .= "\n\@macro claimsFigure" . ucfirst($NUMBER_WORD[$n[0]]) . "\n";
     if (@about) {
-      $s .= "\@noindent\nThe paper's claims about Figure $n "
+      $s .= "\@noindent\nThe paper's claims about $what "
         . "(\@pxref{The paper's claims}):\n\n\@itemize \@bullet\n";
       for my $c (@about) {
         $s .= "\@item\n" . claim_ref($c->{id}) . ", $c->{fields}{verdict}: "
@@ -241,7 +255,7 @@ sub figure_macros {
       }
       $s .= "\@end itemize\n";
     } else {
-      $s .= "\@noindent\nNo claim of the paper's text concerns Figure $n alone.\n";
+      $s .= "\@noindent\nNo claim of the registry is about $what.\n";
     }
     $s .= "\@end macro\n";
   }

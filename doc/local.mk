@@ -53,7 +53,8 @@ dist_doc_DATA = doc/concordance.tsv
 # behind (lib/labels.pl -o renames a complete temporary file).
 GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/concordance-macros.texi doc/program.texi doc/api.texi \
-	doc/api-printed.texi doc/api-scene.texi doc/math-macros.texi
+	doc/api-printed.texi doc/api-scene.texi doc/math-macros.texi \
+	doc/claims.texi doc/claims-figures.texi
 LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
 	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm
 # The formulas' macros (plain notation in Info, TeX elsewhere), from the
@@ -163,3 +164,24 @@ installcheck-examples:
 	  installcheck-examples.log
 .PHONY: installcheck-html installcheck-examples
 CLEANFILES += installcheck-html.log installcheck-examples.log
+
+# The chapter "The paper's claims", the claims listed under each figure
+# and the list of checks tests/test_claims compares with its own, from the
+# registry of claims (doc/claims.txt, by doc/claims.pl).
+CLAIMS_DEPS = $(srcdir)/doc/claims.txt $(srcdir)/doc/claims.pl \
+	$(srcdir)/lib/Registry.pm $(srcdir)/lib/TexinfoMath.pm
+CLAIMS_INPUTS = $(srcdir)/lib/labels.txt $(srcdir)/doc/errata.texi \
+	$(srcdir)/doc/figures.texi $(srcdir)/tests/test_claims.c \
+	$(srcdir)/tests/claims-motion.c
+CLAIMS_GEN = $(PERL) $(srcdir)/doc/claims.pl
+$(srcdir)/doc/claims.texi: $(CLAIMS_DEPS) $(CLAIMS_INPUTS)
+	$(AM_V_GEN)$(CLAIMS_GEN) -o $@ texi $(srcdir)/doc/claims.txt \
+	  $(CLAIMS_INPUTS)
+$(srcdir)/doc/claims-figures.texi: $(CLAIMS_DEPS) $(CLAIMS_INPUTS)
+	$(AM_V_GEN)$(CLAIMS_GEN) -o $@ figures $(srcdir)/doc/claims.txt \
+	  $(CLAIMS_INPUTS)
+$(srcdir)/tests/claims-list.h: $(CLAIMS_DEPS) $(CLAIMS_INPUTS)
+	$(AM_V_GEN)$(CLAIMS_GEN) -o $@ list $(srcdir)/doc/claims.txt \
+	  $(CLAIMS_INPUTS)
+BUILT_SOURCES += $(srcdir)/tests/claims-list.h
+EXTRA_DIST += doc/claims.txt doc/claims.pl lib/Registry.pm

@@ -33,6 +33,16 @@ UNIT_CHECKS = \
 check_PROGRAMS += $(UNIT_CHECKS)
 TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh tests/apiref.sh
 
+# The paper's claims beyond its equations (doc/claims.txt): every claim's
+# check, and the list of them generated from the registry
+# (tests/claims-list.h, doc/local.mk).
+check_PROGRAMS += tests/test_claims
+TESTS += tests/test_claims
+tests_test_claims_SOURCES = tests/test_claims.c tests/claims-motion.c \
+	tests/claims.h tests/claims-list.h
+tests_test_claims_CFLAGS = $(TEST_CFLAGS)
+tests_test_claims_LDADD = $(TEST_LDADD)
+
 # The scene engine (lib/scene/): its reader and numbers against its
 # internal structure, its public interface from outside.
 SCENE_TEST_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
