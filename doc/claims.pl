@@ -221,7 +221,10 @@ refers to it.
 EOT
   for my $c (@claims) {
     my $f = $c->{fields};
-    $s .= "\@item " . claim_ref($c->{id}) . " \@tab " . texi($f->{title})
+    # The identifier as text: a cross-reference in a table cell is a
+    # whole "Section 11.1 [C1], page 185" in the PDF; the menu below
+    # links every entry.
+    $s .= "\@item $c->{id} \@tab " . texi($f->{title})
       . " \@tab " . texi($f->{where}) . " \@tab $f->{verdict}\n";
   }
   $s .= "\@end multitable\n\n\@menu\n";
