@@ -37,7 +37,8 @@ TESTS += $(UNIT_CHECKS) tests/concordance.sh tests/layers.sh tests/apiref.sh
 # check, and the list of them generated from the registry
 # (tests/claims-list.h, doc/local.mk).
 check_PROGRAMS += tests/test_claims
-TESTS += tests/test_claims
+TESTS += tests/test_claims tests/claims.sh
+EXTRA_DIST += tests/claims.sh
 tests_test_claims_SOURCES = tests/test_claims.c tests/claims-motion.c \
 	tests/claims.h tests/claims-list.h
 tests_test_claims_CFLAGS = $(TEST_CFLAGS)
