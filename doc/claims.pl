@@ -29,15 +29,13 @@ use warnings;
 use File::Basename qw(basename);
 use FindBin;
 use lib "$FindBin::Bin/../lib";
-use Registry qw(read_registry list_names);
+use Registry qw(read_registry list_names write_output);
 use TexinfoMath qw(convert_texinfo);
 
 my $me = 'claims.pl';
-my $tmp;
 
 sub fail {
   my ($msg) = @_;
-  if (defined $tmp) { close STDOUT; unlink $tmp; }
   print STDERR "$me: $msg\n";
   exit 1;
 }
@@ -277,13 +275,4 @@ my $text = $mode eq 'texi' ? chapter()
   : $mode eq 'figures' ? figure_macros()
   : $mode eq 'list' ? check_list() : '';
 exit 0 if $mode eq 'check';
-if (defined $out) {
-  $tmp = "$out.tmp$$";
-  open STDOUT, '>', $tmp or fail("$tmp: $!");
-}
-print $text or fail("write: $!");
-if (defined $out) {
-  close STDOUT or fail("$tmp: $!");
-  rename $tmp, $out or fail("rename $tmp to $out: $!");
-  undef $tmp;
-}
+write_output($out, $text);

@@ -1,4 +1,5 @@
-# Registry.pm -- the reader of the project's registries: lib/labels.txt
+# Registry.pm -- the reader of the project's registries, and the writer
+# of what their generators make of them: lib/labels.txt
 # (the paper's equation labels, read by lib/labels.pl) and doc/claims.txt
 # (the paper's claims, read by doc/claims.pl).  Both have the same syntax,
 # documented in their headers: records that start with a line '@ ID', then
@@ -13,7 +14,8 @@ use strict;
 use warnings;
 
 use Exporter qw(import);
-our @EXPORT_OK = qw(read_registry list_names);
+use File::Basename qw(basename dirname);
+our @EXPORT_OK = qw(read_registry list_names write_output);
 
 # read_registry(FILE, %opt) -> list of records { KEY => ID, line => N,
 # fields => { NAME => VALUE } }, in the file's order.  Options:
@@ -90,6 +92,27 @@ sub list_names {
   my ($v) = @_;
   return () if $v eq '-';
   return split /, /, $v;
+}
+
+# write_output(OUT, TEXT): TEXT to the file OUT, or to standard output if
+# OUT is undef.  A file is written beside OUT under a temporary name and
+# renamed to OUT once complete, so that a failure (a full disk) leaves OUT
+# as it was and no temporary file; dies with the reason.
+sub write_output {
+  my ($out, $text) = @_;
+  if (!defined $out) {
+    print $text or die "standard output: $!\n";
+    close STDOUT or die "standard output: $!\n";
+    return;
+  }
+  my $tmp = dirname($out) . '/.' . basename($out) . ".tmp$$";
+  my $fh;
+  my $ok = open($fh, '>', $tmp) && (print {$fh} $text) && close($fh)
+    && rename($tmp, $out);
+  return if $ok;
+  my $why = $!;
+  unlink $tmp;
+  die "$out: $why\n";
 }
 
 1;
