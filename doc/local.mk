@@ -55,7 +55,8 @@ GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/concordance-macros.texi doc/program.texi doc/api.texi \
 	doc/api-printed.texi doc/api-scene.texi doc/math-macros.texi
 LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
-	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm
+	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm \
+	$(srcdir)/lib/Registry.pm
 # The formulas' macros (plain notation in Info, TeX elsewhere), from the
 # converter's table (lib/TexinfoMath.pm); doc/texi-math.pl converts a
 # chapter's formulas into them.

@@ -77,9 +77,10 @@ lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(ARB_LIBS) $(
 lib_libchaplygin_la_LDFLAGS = -version-info 2:0:0 -export-symbols-regex '^chaplygin_'
 include_HEADERS = lib/chaplygin.h
 
-# The registry of the paper's equation labels and its reader/generator
-# (doc/local.mk's generated files, tests/concordance.sh).
-EXTRA_DIST += lib/labels.txt lib/labels.pl lib/TexinfoName.pm
+# The registry of the paper's equation labels, its reader/generator and
+# the reader of every registry, lib/Registry.pm (doc/claims.pl's too):
+# doc/local.mk's generated files, tests/concordance.sh.
+EXTRA_DIST += lib/labels.txt lib/labels.pl lib/TexinfoName.pm lib/Registry.pm
 pkgconfig_DATA = chaplygin.pc
 
 
