@@ -360,16 +360,17 @@ sub normalize_displays {
   my $o = '';
   my $line = sub { 1 + (substr($t, 0, $_[0]) =~ tr/\n//) };
   while ($t =~ /\G(.*?)^(\@ifinfo\n\@example\n((?:(?!\@end example\n)[^\n]*\n)*?)\@end example\n\@end ifinfo\n\@ifnotinfo\n((?:\@displaymath\n[^\n]*\n\@end displaymath\n)+)(?:\@noindent\n(?:(?!\@end ifnotinfo\n)[^\n]*\n)*?)?\@end ifnotinfo\n)/gcms) {
-    my ($before, $at, $plain, $dm) = ($1, $-[2], texi_unescape($3), $4);
-    die "line " . $line->($-[1] + index($before, '@displaymath')) . ": a \@displaymath outside a displayed formula\n"
+    my ($before, $from, $at, $plain, $dm) = ($1, $-[1], $-[2], $3, $4);
+    die "line " . $line->($from + index($before, "\@displaymath\n")) . ": a \@displaymath outside a displayed formula\n"
       if $before =~ /^\@displaymath$/m;
+    $plain = texi_unescape($plain);
     my $tex = join '', map { "$_\n" } $dm =~ /^\@displaymath\n(.*)\n\@end displaymath$/mg;
     my @e = display_errors($plain, $tex);
     die "line " . $line->($at) . ": a displayed formula: $e[0]\n" if @e;
     $o .= $before . display_texi($plain, $tex);
   }
   my $rest = substr($t, pos($t) // 0);
-  die "line " . $line->((pos($t) // 0) + index($rest, '@displaymath')) . ": a \@displaymath outside a displayed formula\n"
+  die "line " . $line->((pos($t) // 0) + index($rest, "\@displaymath\n")) . ": a \@displaymath outside a displayed formula\n"
     if $rest =~ /^\@displaymath$/m;
   return $o . $rest;
 }

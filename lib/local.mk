@@ -111,10 +111,11 @@ lib_libchaplygin_scene_core_la_SOURCES = \
 # The table of labels and the evaluators that map inputs to one call,
 # generated from the registry (lib/labels.pl), written into the source
 # tree and distributed like the manual's generated parts.
-$(srcdir)/lib/scene/eq-table.c: $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl
+$(srcdir)/lib/scene/eq-table.c: $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
+		$(srcdir)/lib/Registry.pm
 	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ c $(srcdir)/lib/labels.txt
 $(srcdir)/lib/scene/eq-evaluators.h: $(srcdir)/lib/labels.txt \
-		$(srcdir)/lib/labels.pl
+		$(srcdir)/lib/labels.pl $(srcdir)/lib/Registry.pm
 	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ h $(srcdir)/lib/labels.txt
 BUILT_SOURCES += $(srcdir)/lib/scene/eq-evaluators.h
 lib_libchaplygin_scene_core_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
