@@ -1,7 +1,8 @@
 #!/usr/bin/perl
 # labels.pl -- read the registry of the paper's equation labels
-# (lib/labels.txt, whose header documents its format) and write what is
-# generated from it.
+# (lib/labels.txt, whose header documents its format; its syntax read by
+# lib/Registry.pm, as every registry's) and write what is generated from
+# it.
 #
 #   perl lib/labels.pl [-o OUT] MODE lib/labels.txt [FILES...]
 #
