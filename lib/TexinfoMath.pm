@@ -338,7 +338,7 @@ sub display_errors {
 }
 
 # A TeX line that continues the formula of the line before it.
-my $CONTINUED = qr/^(?:[=+<>-]|\\equiv|\{\}|\\left\.)/;
+my $CONTINUED = qr/^(?:[=+<>-]|\\equiv|\{\}\s*[-+=<>]|\\left\.)/;
 
 # The Texinfo of a displayed formula (PLAIN and TEX as for
 # display_errors, unescaped): Info shows the plain form as an @example;
@@ -351,7 +351,7 @@ sub display_texi {
   my $s = "\@ifinfo\n\@example\n" . texi_escape($plain) . "\@end example\n\@end ifinfo\n"
     . "\@ifnotinfo\n";
   # A line that starts with an operator or a relation (= + - < > \equiv,
-  # {} or \left. before one) continues the one before: the lines of one
+  # or {} or \left. then one) continues the one before: the lines of one
   # formula are one display, flush left and indented (plain TeX's and
   # MathJax's \eqalign).
   my @d;
