@@ -438,6 +438,9 @@ sub inline {
   while (pos($s) < length $s) {
     if ($text && $s =~ /\G\$([^\$]*)\$/gc) {
       my $m = math($1, $cx);
+      # TeX would reach Info as it is: the plain notation only.
+      err($cx->{off}, "a backslash in \$$m\$ (write the plain notation: (V^+)', not V^{+\\prime})")
+        if $m =~ /\\/;
       $o .= '@math{' . (eval { convert_math($m) } // err($cx->{off}, $@ =~ s/\n\z//r)) . '}';
     } elsif ($text && $s =~ /\G\$/gc) {
       err($cx->{off}, 'unterminated $: ' . substr($s, pos($s) - 1, 40));

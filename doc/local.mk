@@ -37,6 +37,7 @@ MANUAL_FIGURES = doc/figures/fig2a.png doc/figures/fig2b.png \
 	doc/figures/work-precision.png
 EXTRA_DIST += $(MANUAL_FIGURES) \
 	doc/man2texi.awk doc/check-html.pl doc/check-html.sh doc/hdr2texi.pl \
+	doc/check-texi-math.sh \
 	doc/texi-math.pl doc/no-tex.sh lib/TexinfoMath.pm \
 	doc/check-math.pl
 # Generated from lib/labels.txt (below), installed and distributed.
@@ -56,7 +57,8 @@ GENERATED_TEXINFOS = doc/concordance-entries.texi doc/audit-table.texi \
 	doc/api-printed.texi doc/api-scene.texi doc/math-macros.texi \
 	doc/claims.texi doc/claims-figures.texi
 LABELS_DEPS = $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
-	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm
+	$(srcdir)/lib/TexinfoName.pm $(srcdir)/lib/TexinfoMath.pm \
+	$(srcdir)/lib/Registry.pm
 # The formulas' macros (plain notation in Info, TeX elsewhere), from the
 # converter's table (lib/TexinfoMath.pm); doc/texi-math.pl converts a
 # chapter's formulas into them.
@@ -147,6 +149,9 @@ CLEANFILES += doc/one-page.html doc/html.stamp
 # `make installcheck' checks the installed one.
 check_DATA = doc/html.stamp
 TESTS += doc/check-html.sh
+# Every formula of the hand-written chapters is in the manual's form
+# (doc/texi-math.pl --check).
+TESTS += doc/check-texi-math.sh
 # `make installcheck' also runs the installed man page's EXAMPLES with the
 # installed program and scenes (tools/installcheck-examples.sh).
 installcheck-local: installcheck-html installcheck-examples

@@ -18,7 +18,8 @@ use File::Basename qw(basename dirname);
 our @EXPORT_OK = qw(read_registry list_names write_output);
 
 # read_registry(FILE, %opt) -> list of records { KEY => ID, line => N,
-# fields => { NAME => VALUE } }, in the file's order.  Options:
+# fields => { NAME => VALUE }, at => { NAME => its line } }, in the
+# file's order.  Options:
 #   key      the name of the record's identifier ('label', 'id');
 #   id       a regex an identifier must match;
 #   id_what  how to describe a good identifier in a message;
@@ -80,6 +81,7 @@ sub read_registry {
         if exists $kinds->{$name} && $kinds->{$name} ne 'block';
       ($block, $blockname) = ('', $name);
     }
+    $rec->{at}{$name} = $n;
   }
   $end_block->();
   close $fh;

@@ -985,7 +985,7 @@ int chaplygin_discrete_turning_points (double L0, double Delta, double E,
    $E'$ and $H'$ come from $E$ and $H$ at the end the peg leaves, so they
    depend on `V` only where the phase state decides that end otherwise than $E$
    and $H$ would (within their rounding of the boundary).  It passes
-   $V^{+\prime} = V^-$ on while $E'$ and $H'$ would not hold it ($g$ at the
+   $(V^+)' = V^-$ on while $E'$ and $H'$ would not hold it ($g$ at the
    collision below a quarter of its scale; otherwise it sets 0, and the next
    step may take the $(E, H)$ fast path).  A `V` of the wrong sign, or that
    differs from what $E$ and $H$ give by more than $2^(-20)$ of $1 + l^2 + h^2$

@@ -1,7 +1,8 @@
 #!/usr/bin/perl
 # labels.pl -- read the registry of the paper's equation labels
-# (lib/labels.txt, whose header documents its format) and write what is
-# generated from it.
+# (lib/labels.txt, whose header documents its format; its syntax read by
+# lib/Registry.pm, as every registry's) and write what is generated from
+# it.
 #
 #   perl lib/labels.pl [-o OUT] MODE lib/labels.txt [FILES...]
 #
@@ -40,7 +41,8 @@ use File::Basename qw(basename dirname);
 use FindBin;
 use lib $FindBin::Bin;
 use TexinfoName qw(implements_macro);
-use TexinfoMath qw(tex_errors @GREEK);
+use TexinfoMath qw(display_texi display_errors);
+use Registry qw(read_registry list_names);
 
 my $me = 'labels.pl';
 my $tmp;                        # the temporary output, removed on failure
@@ -64,146 +66,54 @@ my @FIELDS = (
   [ 'printed_function', 'text' ], [ 'eq.inputs', 'text' ],
   [ 'eq.outputs', 'text' ], [ 'eq.paper', 'text' ],
   [ 'eq.example', 'text' ], [ 'printed', 'block' ],
-  [ 'implemented', 'block' ],
+  [ 'implemented', 'block' ], [ 'tex.printed', 'block' ],
 );
-my %KIND = map { $_->[0] => $_->[1] } @FIELDS;
+# Required unless the implemented form is 'as printed'.
+my %KIND = ((map { $_->[0] => $_->[1] } @FIELDS), 'tex.implemented' => 'block');
 # Namespaces of fields other consumers read (see the registry's header).
 my $FOREIGN = qr/^(?:eq|tex)\.[a-z0-9_.]+$/;
 
-# Reads the registry FILE: a list of records {label, line, fields => {}},
-# in the file's order.  Every rule of the header is enforced here.
-sub read_registry {
+# Reads the registry FILE (lib/Registry.pm: the syntax) and checks its
+# records: a list of records {label, line, fields => {}, at => {}}, in
+# the file's order.  Every rule of the header is enforced here.
+sub read_labels {
   my ($file) = @_;
-  open my $fh, '<', $file or fail("$file: $!");
-  my (@recs, %seen, $rec, $block, $blockname);
-  my $n = 0;
-  my $where = sub { "$file:$n" };
-  my $end_block = sub {
-    if (defined $block) {
-      fail($where->() . ": field '$blockname' of ($rec->{label}) is an empty block")
-        if $block eq '';
-      $rec->{fields}{$blockname} = $block;
-      undef $block;
-    }
-  };
-  while (my $line = <$fh>) {
-    $n++;
-    fail($where->() . ": no newline at the end of the file") unless $line =~ s/\n\z//;
-    fail($where->() . ": a tab or carriage return") if $line =~ /[\t\r]/;
-    fail($where->() . ": trailing space") if $line =~ / \z/;
-    if (defined $block && $line =~ /^    (.*)\z/s) {
-      $block .= "$1\n";
-      next;
-    }
-    $end_block->();
-    next if $line =~ /^#/ || $line eq '';
-    if ($line =~ /^@ (.*)\z/) {
-      my $label = $1;
-      fail($where->() . ": '$label' is not a label such as 3.10 or B.2")
-        unless $label =~ /^(?:[1-9][0-9]*|[A-Z])\.[1-9][0-9]*\z/;
-      fail($where->() . ": label $label again (first at line $seen{$label})")
-        if $seen{$label};
-      $seen{$label} = $n;
-      $rec = { label => $label, line => $n, fields => {} };
-      push @recs, $rec;
-      next;
-    }
-    fail($where->() . ": a line outside a record: $line") unless $rec;
-    my ($name, $value) = $line =~ /^([a-z][a-z0-9_.]*):(?: (.*))?\z/
-      or fail($where->() . ": not a field (NAME: VALUE, or NAME: then a block): $line");
-    fail($where->() . ": unknown field '$name' in ($rec->{label}) (the fields are listed in the header)")
-      unless exists $KIND{$name} || $name =~ $FOREIGN;
-    fail($where->() . ": field '$name' again in ($rec->{label})")
-      if exists $rec->{fields}{$name};
-    if (defined $value) {
-      fail($where->() . ": field '$name' is a block (its lines indented by four spaces below '$name:')")
-        if ($KIND{$name} // '') eq 'block';
-      $rec->{fields}{$name} = $value;
-    } else {
-      fail($where->() . ": field '$name' is one line ('$name: VALUE')")
-        if exists $KIND{$name} && $KIND{$name} ne 'block';
-      ($block, $blockname) = ('', $name);
-      $rec->{at}{$name} = $n;
-    }
-  }
-  $end_block->();
-  close $fh;
-  fail("$file: no record") unless @recs;
+  # Registry.pm dies "FILE:LINE: message"; the __DIE__ handler fails so.
+  my @recs = read_registry($file, key => 'label',
+    id => qr/^(?:[1-9][0-9]*|[A-Z])\.[1-9][0-9]*\z/,
+    id_what => 'a label such as 3.10 or B.2', kinds => \%KIND,
+    foreign => $FOREIGN);
   check_record($file, $_) for @recs;
   check_tex($file, $_) for @recs;
   return @recs;
 }
 
-# The TeX forms of a record (tex.printed, tex.implemented: optional
-# blocks, one displayed formula a line): each line well-formed TeX
-# (lib/TexinfoMath.pm), no '@' and no \{ \} (Texinfo's own; \lbrace
-# \rbrace instead), and the same symbols as its plain form (Greek
-# letters, capitals, digits), so that a slip in either shows.
+# The TeX forms of a record (tex.printed, and tex.implemented unless the
+# implemented form is 'as printed'): lib/TexinfoMath.pm's
+# display_errors (well-formed, the plain form's symbols).
 sub check_tex {
   my ($file, $r) = @_;
-  for my $kind (qw(printed implemented)) {
-    my $tex = $r->{fields}{"tex.$kind"};
-    next unless defined $tex;
-    my $n = $r->{at}{"tex.$kind"};
-    fail("$file:$n: ($r->{label}) tex.$kind without a $kind form other than 'as printed'")
-      if $r->{fields}{$kind} eq "as printed\n";
-    for my $line (split /\n/, $tex) {
-      $n++;
-      fail("$file:$n: ($r->{label}) tex.$kind: '\@', '\\{' or '\\}' (write \\lbrace, \\rbrace)")
-        if $line =~ /\@|\\[{}]/;
-      my @e = tex_errors($line);
-      fail("$file:$n: ($r->{label}) tex.$kind: @e") if @e;
-    }
-    my ($plain) = plain_and_note($r->{fields}{$kind});
-    my @p = symbols($plain, 'plain');
-    my @t = symbols($tex, 'tex');
-    fail("$file:$r->{at}{\"tex.$kind\"}: ($r->{label}) tex.$kind and $kind differ in their symbols: "
-         . "plain '@p', TeX '@t'") unless "@p" eq "@t";
-  }
-}
-
-# The formula lines of a plain form, and its closing note (the lines
-# from the first that opens with '(' and a word: "(garbled ...").
-sub plain_and_note {
-  my ($s) = @_;
-  my ($f, $note) = ($s, '');
-  ($f, $note) = ($1, $2) if $s =~ /\A(.*?)^(\((?:[a-z]{2,}|"|[a-z] ).*)\z/ms;
-  return ($f, $note);
-}
-
-# The symbols of formula S, sorted, each as often as it occurs: Greek
-# letters by name, capital letters, digits.
-sub symbols {
-  my ($s, $how) = @_;
-  my %greek = map { $_ => 1 } @GREEK;
-  my %seen;
-  # Prose: references to labels and errata, words in \hbox.
-  $s =~ s/\((?:[2-4AB])\.[0-9]+\)//g;
-  $s =~ s/\berrat(?:um|a) E[0-9]+(?:, E[0-9]+)*//g;
-  if ($how eq 'tex') {
-    $s =~ s/\\(?:hbox|text|mathrm|rm)\s*\{[^{}]*\}//g;
-    while ($s =~ /\\([A-Za-z]+)|([A-Z0-9])/g) {
-      $seen{$1}++ if defined $1 && $greek{$1};
-      $seen{$2}++ if defined $2;
-    }
+  my $f = $r->{fields};
+  if ($f->{implemented} eq "as printed\n") {
+    fail("$file:$r->{at}{'tex.implemented'}: ($r->{label}) tex.implemented with an implemented form 'as printed'")
+      if defined $f->{'tex.implemented'};
   } else {
-    while ($s =~ /([A-Za-z]+)|([0-9])/g) {
-      if (defined $2) { $seen{$2}++; next; }
-      my $w = $1;
-      if ($greek{$w}) { $seen{$w}++; }
-      elsif ($w =~ /^[A-Z]\z/) { $seen{$w}++; }
-      elsif ($w =~ /^([a-z]*)([A-Z])\z/ && $1 =~ /^(?:d|)$/) { $seen{$2}++; }
+    fail("$file:$r->{line}: ($r->{label}) no field 'tex.implemented' (its implemented form is not 'as printed')")
+      unless defined $f->{'tex.implemented'};
+  }
+  for my $kind (qw(printed implemented)) {
+    my $tex = $f->{"tex.$kind"};
+    next unless defined $tex;
+    for (display_errors($f->{$kind}, $tex)) {
+      my $n = $r->{at}{"tex.$kind"};
+      $n += $1 if s/^line ([0-9]+): //;
+      fail("$file:$n: ($r->{label}) tex.$kind: " . (s/^symbols: /$kind and tex.$kind differ in their symbols: /r));
     }
   }
-  return map { ("$_") x $seen{$_} } sort keys %seen;
 }
 
 # A LIST field's names (an empty list for '-').
-sub names {
-  my ($v) = @_;
-  return () if $v eq '-';
-  return split /, /, $v;
-}
+sub names { return list_names($_[0]); }
 
 sub check_record {
   my ($file, $r) = @_;
@@ -354,23 +264,10 @@ sub erratum_summary {
   return $t;
 }
 
-sub example_block { return "\@example\n" . texi($_[0]) . "\@end example\n"; }
 
-# A form of the equation: in Info the plain block; with a TeX form, in
-# HTML and TeX each of its lines a centred display and the plain form's
-# closing note as text (texinfo.tex reads @center's line before @math
-# could read TeX: TeX takes @display).
-sub form_block {
-  my ($plain, $tex) = @_;
-  return example_block($plain) unless defined $tex;
-  my (undef, $note) = plain_and_note($plain);
-  my @l = map { "\@math{\\displaystyle $_}\n" } split /\n/, $tex;
-  my $s = "\@ifinfo\n" . example_block($plain) . "\@end ifinfo\n"
-    . "\@ifhtml\n" . join('', map { "\@center $_" } @l) . "\@end ifhtml\n"
-    . "\@iftex\n\@display\n" . join("\n", @l) . "\@end display\n\@end iftex\n";
-  $s .= "\@ifnotinfo\n\@noindent\n" . texi($note) . "\n\@end ifnotinfo\n" if $note ne '';
-  return $s;
-}
+# A form of the equation: its plain form, and its TeX form displayed
+# (lib/TexinfoMath.pm's display_texi).
+sub form_block { return display_texi($_[0], $_[1]); }
 
 sub entry {
   my ($r) = @_;
@@ -581,7 +478,7 @@ $field = shift @ARGV if $mode eq 'field';
 my $registry = shift @ARGV;
 fail("usage: $me [-o OUT] list|tsv|entries|audit|macros|c|h|check|field NAME REGISTRY [FILES...]")
   unless defined $registry && $mode =~ /^(?:list|tsv|entries|audit|macros|c|h|check|field)\z/;
-my @recs = read_registry($registry);
+my @recs = read_labels($registry);
 read_other($_) for @ARGV;
 if ($mode eq 'entries') {
   for (qw(accuracy errata tests)) { fail("entries: give doc/accuracy.texi, doc/errata.texi and tests/*.c") unless $have{$_}; }

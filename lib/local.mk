@@ -77,9 +77,10 @@ lib_libchaplygin_la_LIBADD = lib/libchaplygin-core.la $(GSL_LIBS) $(ARB_LIBS) $(
 lib_libchaplygin_la_LDFLAGS = -version-info 2:0:0 -export-symbols-regex '^chaplygin_'
 include_HEADERS = lib/chaplygin.h
 
-# The registry of the paper's equation labels and its reader/generator
-# (doc/local.mk's generated files, tests/concordance.sh).
-EXTRA_DIST += lib/labels.txt lib/labels.pl lib/TexinfoName.pm
+# The registry of the paper's equation labels, its reader/generator and
+# the reader of every registry, lib/Registry.pm (doc/claims.pl's too):
+# doc/local.mk's generated files, tests/concordance.sh.
+EXTRA_DIST += lib/labels.txt lib/labels.pl lib/TexinfoName.pm lib/Registry.pm
 pkgconfig_DATA = chaplygin.pc
 
 
@@ -110,10 +111,11 @@ lib_libchaplygin_scene_core_la_SOURCES = \
 # The table of labels and the evaluators that map inputs to one call,
 # generated from the registry (lib/labels.pl), written into the source
 # tree and distributed like the manual's generated parts.
-$(srcdir)/lib/scene/eq-table.c: $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl
+$(srcdir)/lib/scene/eq-table.c: $(srcdir)/lib/labels.txt $(srcdir)/lib/labels.pl \
+		$(srcdir)/lib/Registry.pm
 	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ c $(srcdir)/lib/labels.txt
 $(srcdir)/lib/scene/eq-evaluators.h: $(srcdir)/lib/labels.txt \
-		$(srcdir)/lib/labels.pl
+		$(srcdir)/lib/labels.pl $(srcdir)/lib/Registry.pm
 	$(AM_V_GEN)$(PERL) $(srcdir)/lib/labels.pl -o $@ h $(srcdir)/lib/labels.txt
 BUILT_SOURCES += $(srcdir)/lib/scene/eq-evaluators.h
 lib_libchaplygin_scene_core_la_CPPFLAGS = $(AM_CPPFLAGS) -I$(srcdir)/lib/scene
