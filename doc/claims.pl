@@ -136,6 +136,8 @@ for my $c (@claims) {
 # ---- output ------------------------------------------------------------
 
 sub texi { my $s = shift; $s =~ s/([\@{}])/\@$1/g; return $s; }
+# A title of the registry in the manual's form.
+sub title { return convert_texinfo(shift); }
 sub claim_ref { "\@ref{Claim $_[0],,$_[0]}" }
 # A Texinfo block of the registry: claim references made links, formulas
 # in the manual's math macros (written in the plain notation there).
@@ -149,7 +151,7 @@ sub label_ref { my $l = shift; (my $a = $l) =~ s/\./-/; "\@ref{Equation $a,,($l)
 sub entry {
   my ($c) = @_;
   my $f = $c->{fields};
-  my $s = "\@node Claim $c->{id}\n\@section $c->{id}: " . texi($f->{title})
+  my $s = "\@node Claim $c->{id}\n\@section $c->{id}: " . title($f->{title})
     . "\n\@cindex claim $c->{id}\n\n\@table \@asis\n";
   $s .= "\@item Where\n" . texi($f->{where}) . "\n";
   $s .= "\@item Claim\n" . block($f->{claim});
@@ -222,12 +224,12 @@ EOT
     # The identifier as text: a cross-reference in a table cell is a
     # whole "Section 11.1 [C1], page 185" in the PDF; the menu below
     # links every entry.
-    $s .= "\@item $c->{id} \@tab " . texi($f->{title})
+    $s .= "\@item $c->{id} \@tab " . title($f->{title})
       . " \@tab " . texi($f->{where}) . " \@tab $f->{verdict}\n";
   }
   $s .= "\@end multitable\n\n\@menu\n";
   $s .= "* Claim $_->{id}::" . (' ' x (10 - length $_->{id}))
-    . texi($_->{fields}{title}) . ".\n" for @claims;
+    . title($_->{fields}{title}) . ".\n" for @claims;
   $s .= "\@end menu\n\n";
   $s .= entry($_) for @claims;
   return $s;
@@ -252,7 +254,7 @@ sub figure_macros {
         . "(\@pxref{The paper's claims}):\n\n\@itemize \@bullet\n";
       for my $c (@about) {
         $s .= "\@item\n" . claim_ref($c->{id}) . ", $c->{fields}{verdict}: "
-          . texi($c->{fields}{title}) . ".\n";
+          . title($c->{fields}{title}) . ".\n";
       }
       $s .= "\@end itemize\n";
     } else {

@@ -189,4 +189,4 @@ $(srcdir)/tests/claims-list.h: $(CLAIMS_DEPS) $(CLAIMS_INPUTS)
 	$(AM_V_GEN)$(CLAIMS_GEN) -o $@ list $(srcdir)/doc/claims.txt \
 	  $(CLAIMS_INPUTS)
 BUILT_SOURCES += $(srcdir)/tests/claims-list.h
-EXTRA_DIST += doc/claims.txt doc/claims.pl lib/Registry.pm
+EXTRA_DIST += doc/claims.txt doc/claims.pl

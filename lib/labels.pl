@@ -37,19 +37,17 @@
 
 use strict;
 use warnings;
-use File::Basename qw(basename dirname);
+use File::Basename qw(basename);
 use FindBin;
 use lib $FindBin::Bin;
 use TexinfoName qw(implements_macro);
 use TexinfoMath qw(display_texi display_errors);
-use Registry qw(read_registry list_names);
+use Registry qw(read_registry list_names write_output);
 
 my $me = 'labels.pl';
-my $tmp;                        # the temporary output, removed on failure
 
 sub fail {
   my ($msg) = @_;
-  if (defined $tmp) { close STDOUT; unlink $tmp; }
   print STDERR "$me: $msg\n";
   exit 1;
 }
@@ -603,15 +601,5 @@ if ($mode eq 'list') {
   }
 }
 
-if (defined $out) {
-  $tmp = dirname($out) . '/.' . basename($out) . ".tmp$$";
-  open my $fh, '>', $tmp or fail("$tmp: $!");
-  print {$fh} $text or fail("$tmp: $!");
-  close $fh or fail("$tmp: $!");
-  rename $tmp, $out or fail("rename $tmp to $out: $!");
-  undef $tmp;
-} else {
-  print $text or fail("standard output: $!");
-  close STDOUT or fail("standard output: $!");
-}
+write_output($out, $text);
 exit 0;
