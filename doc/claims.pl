@@ -227,12 +227,29 @@ EOT
     $s .= "\@item $c->{id} \@tab " . title($f->{title})
       . " \@tab " . texi($f->{where}) . " \@tab $f->{verdict}\n";
   }
-  $s .= "\@end multitable\n\n\@menu\n";
+  $s .= "\@end multitable\n\n";
+  $s .= errata_table();
+  $s .= "\@menu\n";
   $s .= "* Claim $_->{id}::" . (' ' x (10 - length $_->{id}))
     . title($_->{fields}{title}) . ".\n" for @claims;
   $s .= "\@end menu\n\n";
   $s .= entry($_) for @claims;
   return $s;
+}
+
+# The errata the claims meet, each with its claims, in the errata's order.
+sub errata_table {
+  my %claims_of;
+  for my $c (@claims) {
+    push @{$claims_of{$_}}, $c->{id} for list_names($c->{fields}{errata});
+  }
+  my @e = sort { substr($a, 1) <=> substr($b, 1) } keys %claims_of;
+  return '' unless @e;
+  my $s = "\@noindent\nThe errata the claims meet, and their claims:\n\n"
+    . "\@multitable \@columnfractions .15 .85\n\@headitem Erratum \@tab Claims\n";
+  $s .= "\@item $_ \@tab " . join(', ', @{$claims_of{$_}}) . "\n"
+    for @e;
+  return $s . "\@end multitable\n\n";
 }
 
 my @NUMBER_WORD = qw(zero one two three four five six seven eight nine ten);
