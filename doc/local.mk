@@ -142,7 +142,10 @@ install-html-local: doc/html.stamp
 # `make install' installs the HTML manual too: it is the edition most
 # readers open (figures, links), not only the Info one.
 install-data-local: install-html
-CLEANFILES += doc/one-page.html doc/html.stamp
+# With MathJax, texi2any writes the pages' JavaScript licences beside its
+# output: doc/js_licenses.html beside one-page.html (the split manual's own
+# copy, which one-page.html links once copied, is in its directory).
+CLEANFILES += doc/one-page.html doc/html.stamp doc/js_licenses.html
 
 # `make check' builds the HTML manual and checks that every image and
 # every internal link of both editions resolves (doc/check-html.sh);
