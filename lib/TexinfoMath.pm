@@ -284,8 +284,9 @@ sub plain_and_note {
 }
 
 # The symbols of formula S ('plain' or 'tex'), sorted, each as often as
-# it occurs: Greek letters by name, capital letters, digits; prose (label
-# references, errata, words in \hbox) set aside.
+# it occurs: Greek letters by name, capital letters, digits and the bars
+# of absolute values; prose (label references, errata, words in \hbox)
+# set aside.
 sub symbols {
   my ($s, $how) = @_;
   my %greek = map { $_ => 1 } @GREEK;
@@ -294,13 +295,13 @@ sub symbols {
   $s =~ s/\berrat(?:um|a) E[0-9]+(?:, E[0-9]+)*//g;
   if ($how eq 'tex') {
     $s =~ s/\\(?:hbox|mbox|rm)\s*\{[^{}]*\}//g;
-    while ($s =~ /\\([A-Za-z]+)|([A-Z0-9])/g) {
+    while ($s =~ /\\([A-Za-z]+)|([A-Z0-9|])/g) {
       $seen{$1}++ if defined $1 && $greek{$1};
       $seen{$2}++ if defined $2;
     }
   } else {
     $s =~ s{\b(d[A-Za-z]+)/dtau\b}{$1}g;     # dX/dtau: TeX's \dot{X}
-    while ($s =~ /([A-Za-z]+)|([0-9])/g) {
+    while ($s =~ /([A-Za-z]+)|([0-9|])/g) {
       if (defined $2) { $seen{$2}++; next; }
       my $w = $1;
       if ($greek{$w}) { $seen{$w}++; }
