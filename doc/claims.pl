@@ -29,18 +29,12 @@ use warnings;
 use File::Basename qw(basename);
 use FindBin;
 use lib "$FindBin::Bin/../lib";
-use Registry qw(read_registry list_names write_output);
+use Registry qw(read_registry list_names write_output on_error);
 use TexinfoMath qw(convert_texinfo);
 
 my $me = 'claims.pl';
-
-sub fail {
-  my ($msg) = @_;
-  print STDERR "$me: $msg\n";
-  exit 1;
-}
-$SIG{__DIE__} = sub { fail($_[0] =~ s/\n\z//r) };
-$SIG{__WARN__} = sub { fail("warning: " . ($_[0] =~ s/\n\z//r)) };
+on_error($me);
+sub fail { die "$_[0]\n" }
 
 my %KIND = (
   title => 'text', where => 'text', verdict => 'text', check => 'text',

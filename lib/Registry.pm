@@ -15,7 +15,7 @@ use warnings;
 
 use Exporter qw(import);
 use File::Basename qw(basename dirname);
-our @EXPORT_OK = qw(read_registry list_names write_output);
+our @EXPORT_OK = qw(read_registry list_names write_output on_error);
 
 # read_registry(FILE, %opt) -> list of records { KEY => ID, line => N,
 # fields => { NAME => VALUE }, at => { NAME => its line } }, in the
@@ -115,6 +115,16 @@ sub write_output {
   my $why = $!;
   unlink $tmp;
   die "$out: $why\n";
+}
+
+# on_error(NAME): every error of the generator NAME (a die outside an
+# eval, or a warning) printed as "NAME: message" on standard error, then
+# exit status 1: a generator's one way to fail.
+sub on_error {
+  my ($me) = @_;
+  my $say = sub { print STDERR "$me: $_[0]" . ($_[1] =~ s/\n\z//r) . "\n"; exit 1; };
+  $SIG{__DIE__} = sub { return if $^S; $say->('', $_[0]) };
+  $SIG{__WARN__} = sub { $say->('warning: ', $_[0]) };
 }
 
 1;

@@ -42,17 +42,11 @@ use FindBin;
 use lib $FindBin::Bin;
 use TexinfoName qw(implements_macro);
 use TexinfoMath qw(display_texi display_errors);
-use Registry qw(read_registry list_names write_output);
+use Registry qw(read_registry list_names write_output on_error);
 
 my $me = 'labels.pl';
-
-sub fail {
-  my ($msg) = @_;
-  print STDERR "$me: $msg\n";
-  exit 1;
-}
-$SIG{__DIE__} = sub { fail($_[0] =~ s/\n\z//r) };
-$SIG{__WARN__} = sub { fail("warning: " . ($_[0] =~ s/\n\z//r)) };
+on_error($me);
+sub fail { die "$_[0]\n" }
 
 # ---- the registry --------------------------------------------------------
 
