@@ -11,7 +11,8 @@
 #            doc/figures.texi a macro named by its first figure,
 #            @claimsFigureOne{} ... (the number in words: texinfo.tex
 #            takes macro names of letters only), listing the claims about
-#            its figures, which the node's section calls;
+#            its figures, which the node's section calls (every mode
+#            checks that each node of doc/figures.texi does);
 #   list     tests/claims-list.h: the macro CLAIM_CHECKS, the checks'
 #            names as C strings in the registry's order, which
 #            tests/test_claims compares with the checks it registers;
@@ -51,7 +52,17 @@ fail("usage: $me [-o OUT] texi|figures|list|check doc/claims.txt FILES...")
 
 # ---- the other sources -------------------------------------------------
 
-my (%label, %erratum, %figure_node, %check_file);
+# The macro of the figure node whose first figure is N (the number in
+# words: texinfo.tex takes macro names of letters only).
+my @NUMBER_WORD = qw(zero one two three four five six seven eight nine ten);
+sub figure_macro {
+  my ($n) = @_;
+  fail("figure $n: no macro name for it") unless $n >= 1 && $n <= 10;
+  return 'claimsFigure' . ucfirst($NUMBER_WORD[$n]);
+}
+
+my (%label, %erratum, %figure_node, %node_first, %macro_called, %check_file);
+my $figures_texi;
 for my $path (@files) {
   my $name = basename($path);
   open my $fh, '<', $path or fail("$path: $!");
@@ -61,10 +72,13 @@ for my $path (@files) {
     } elsif ($name eq 'errata.texi') {
       $erratum{$1} = 1 if $line =~ /^\@node Erratum (E\d+)\s*$/;
     } elsif ($name eq 'figures.texi') {
+      $figures_texi = $path;
       if ($line =~ /^\@node (Figures? (\d+)(?: and (\d+))?)\s*$/) {
         $figure_node{$2} = $1;
         $figure_node{$3} = $1 if defined $3;
+        $node_first{$1} = $2;
       }
+      $macro_called{$1} = 1 if $line =~ /^\@(claimsFigure[A-Za-z]+)\{\}\s*$/;
     } elsif ($name =~ /\.c\z/) {
       if ($line =~ /^START_TEST \((claim_[a-z0-9_]+)\)/) {
         my $check = $1;
@@ -81,6 +95,11 @@ for my $path (@files) {
 fail("no lib/labels.txt among the files") unless %label;
 fail("no doc/errata.texi among the files") unless %erratum;
 fail("no doc/figures.texi among the files") unless %figure_node;
+for my $node (sort keys %node_first) {
+  my $m = figure_macro($node_first{$node});
+  fail("$figures_texi: $node does not list its claims (\@$m\{\})")
+    unless $macro_called{$m};
+}
 
 # ---- the registry ------------------------------------------------------
 
@@ -246,8 +265,6 @@ sub errata_table {
   return $s . "\@end multitable\n\n";
 }
 
-my @NUMBER_WORD = qw(zero one two three four five six seven eight nine ten);
-
 sub figure_macros {
   my $s = "\@c Generated from doc/claims.txt by doc/claims.pl: do not edit.\n"
     . "\@c The claims about the figures of each node of figures.texi.\n";
@@ -255,11 +272,10 @@ sub figure_macros {
   push @{$numbers{$figure_node{$_}}}, $_ for sort { $a <=> $b } keys %figure_node;
   for my $node (sort { $numbers{$a}[0] <=> $numbers{$b}[0] } keys %numbers) {
     my @n = @{$numbers{$node}};
-    fail("$node: no macro name for it") unless $n[0] >= 1 && $n[0] <= 10;
     my %in = map { $_ => 1 } @n;
     my @about = grep { grep { $in{$_} } list_names($_->{fields}{figures}) } @claims;
     my $what = @n > 1 ? 'Figures ' . join(' and ', @n) : "Figure $n[0]";
-    $s .= "\n\@macro claimsFigure" . ucfirst($NUMBER_WORD[$n[0]]) . "\n";
+    $s .= "\n\@macro " . figure_macro($n[0]) . "\n";
     if (@about) {
       $s .= "\@noindent\nThe paper's claims about $what "
         . "(\@pxref{The paper's claims}):\n\n\@itemize \@bullet\n";
